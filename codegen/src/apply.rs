@@ -1,0 +1,316 @@
+//! Applies the corrections of `src/schema/overrides.rs` to the tables read from one UOM, and
+//! refuses any entry that no longer matches what the UOM says, so that an entry whose node
+//! or field was renamed or dropped fails the build instead of silently doing nothing.
+
+use crate::overrides::{Change, FieldOverride, NewField, NodeOverride};
+use crate::overrides::{FIELD_OVERRIDES, NODE_OVERRIDES};
+use crate::types::ComponentLevel;
+use crate::uom::{self, Component, Field, Schema};
+
+/// What applying the overrides did, over all versions, for the stderr summary.
+#[derive(Default)]
+pub struct Applied {
+    /// Node or field entries of the tables that an override changed.
+    pub changes: usize,
+    /// `version node.field (clause)` of entries that matched but changed nothing: the UOM
+    /// already says what the clause says (kept on purpose, to pin the value).
+    pub no_ops: Vec<String>,
+}
+
+pub fn apply(schema: &mut Schema, applied: &mut Applied) -> Result<(), String> {
+    let version = schema.version;
+    for entry in FIELD_OVERRIDES
+        .iter()
+        .filter(|o| o.versions.contains(&version))
+    {
+        apply_field(schema, entry, applied).map_err(|e| {
+            format!(
+                "src/schema/overrides.rs: {version} {}.{} ({}): {e}",
+                entry.node, entry.field, entry.clause
+            )
+        })?;
+    }
+    for entry in NODE_OVERRIDES
+        .iter()
+        .filter(|o| o.versions.contains(&version))
+    {
+        apply_node(schema, entry, applied).map_err(|e| {
+            format!(
+                "src/schema/overrides.rs: {version} {} ({}): {e}",
+                entry.node, entry.clause
+            )
+        })?;
+    }
+    // Levels may have moved: the highest level of each component is taken afresh.
+    schema.components = uom::component_levels(&schema.nodes);
+    Ok(())
+}
+
+fn apply_field(
+    schema: &mut Schema,
+    entry: &FieldOverride,
+    applied: &mut Applied,
+) -> Result<(), String> {
+    let version = schema.version;
+    let targets: Vec<usize> = (0..schema.nodes.len())
+        .filter(|&i| {
+            let node = &schema.nodes[i];
+            node.name == entry.node || node.ancestors.iter().any(|a| a == entry.node)
+        })
+        .collect();
+    if targets.is_empty() {
+        return Err(format!(
+            "no node of this version is or inherits {}",
+            entry.node
+        ));
+    }
+    if let Change::Add(new) = &entry.change {
+        for &i in &targets {
+            let node = &mut schema.nodes[i];
+            if node.fields.iter().any(|f| f.name == entry.field) {
+                return Err(format!(
+                    "{} already has this field in the UOM: drop or change the override",
+                    node.name
+                ));
+            }
+            node.fields.push(new_field(entry.field, new));
+            node.fields.sort_by(|a, b| a.name.cmp(&b.name));
+            applied.changes += 1;
+        }
+        return Ok(());
+    }
+
+    let mut found = 0;
+    let mut changed = 0;
+    for &i in &targets {
+        let node = &mut schema.nodes[i];
+        let Some(position) = node.fields.iter().position(|f| f.name == entry.field) else {
+            continue;
+        };
+        found += 1;
+        if modify(&mut node.fields, position, &entry.change) {
+            changed += 1;
+        }
+    }
+    if found == 0 {
+        return Err(format!(
+            "no node that is or inherits {} has this field",
+            entry.node
+        ));
+    }
+    if changed == 0 {
+        applied.no_ops.push(format!(
+            "{version} {}.{} ({})",
+            entry.node, entry.field, entry.clause
+        ));
+    }
+    applied.changes += changed;
+    Ok(())
+}
+
+/// Applies `change` to `fields[position]`; true when that changed anything.
+fn modify(fields: &mut Vec<Field>, position: usize, change: &Change) -> bool {
+    let field = &mut fields[position];
+    match change {
+        Change::Acceptable(types) => {
+            let types: Vec<String> = types.iter().map(|t| t.to_string()).collect();
+            replace(&mut field.acceptable, types)
+        }
+        Change::Min(bound) => replace(&mut field.min, *bound),
+        Change::Max(bound) => replace(&mut field.max, *bound),
+        Change::Default(default) => replace(&mut field.default, default.to_string()),
+        Change::Component(level) => {
+            let new = level.map(component);
+            let same = match (&field.component, &new) {
+                (None, None) => true,
+                (Some(a), Some(b)) => a.name == b.name && a.level == b.level,
+                _ => false,
+            };
+            field.component = new;
+            !same
+        }
+        Change::Remove => {
+            fields.remove(position);
+            true
+        }
+        Change::Add(_) => unreachable!("handled by apply_field"),
+    }
+}
+
+fn replace<T: PartialEq>(slot: &mut T, value: T) -> bool {
+    let changed = *slot != value;
+    *slot = value;
+    changed
+}
+
+fn apply_node(
+    schema: &mut Schema,
+    entry: &NodeOverride,
+    applied: &mut Applied,
+) -> Result<(), String> {
+    let node = schema
+        .nodes
+        .iter_mut()
+        .find(|n| n.name == entry.node)
+        .ok_or("no such concrete node in this version")?;
+    let new = component(entry.component);
+    if node.component.name == new.name && node.component.level == new.level {
+        applied
+            .no_ops
+            .push(format!("{} {} ({})", schema.version, entry.node, entry.clause));
+    } else {
+        node.component = new;
+        applied.changes += 1;
+    }
+    Ok(())
+}
+
+fn component(level: ComponentLevel) -> Component {
+    Component {
+        name: level.component.to_owned(),
+        level: level.level,
+    }
+}
+
+fn new_field(name: &str, new: &NewField) -> Field {
+    let strings = |items: &[&str]| items.iter().map(|s| s.to_string()).collect();
+    Field {
+        name: name.to_owned(),
+        ty: new.ty,
+        access: new.access,
+        default: new.default.to_owned(),
+        min: new.min,
+        max: new.max,
+        enumeration: strings(new.enumeration),
+        enumeration_strict: new.enumeration_strict,
+        acceptable: strings(new.acceptable),
+        component: None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::collections::BTreeMap;
+
+    use super::*;
+    use crate::types::{AccessType, Bound, FieldType, Version};
+    use crate::uom::Node;
+
+    fn schema() -> Schema {
+        let field = |name: &str| Field {
+            name: name.to_owned(),
+            ty: FieldType::SFFloat,
+            access: AccessType::InputOutput,
+            default: "1".to_owned(),
+            min: None,
+            max: None,
+            enumeration: Vec::new(),
+            enumeration_strict: false,
+            acceptable: Vec::new(),
+            component: None,
+        };
+        Schema {
+            version: Version::V4_0,
+            nodes: vec![Node {
+                name: "SpotLight".to_owned(),
+                component: Component {
+                    name: "Lighting".to_owned(),
+                    level: 2,
+                },
+                container_field: "children".to_owned(),
+                ancestors: vec!["X3DLightNode".to_owned()],
+                fields: vec![field("beamWidth"), field("intensity")],
+            }],
+            components: BTreeMap::new(),
+        }
+    }
+
+    fn entry(node: &'static str, field: &'static str, change: Change) -> FieldOverride {
+        FieldOverride {
+            versions: &[Version::V4_0],
+            node,
+            field,
+            change,
+            clause: "test",
+            why: "test",
+        }
+    }
+
+    const HALF_PI: Option<Bound> = Some(Bound {
+        value: std::f64::consts::FRAC_PI_2,
+        inclusive: true,
+    });
+
+    #[test]
+    fn applies_through_an_abstract_type() {
+        let mut schema = schema();
+        let mut applied = Applied::default();
+        let max = entry("X3DLightNode", "beamWidth", Change::Max(HALF_PI));
+        apply_field(&mut schema, &max, &mut applied).unwrap();
+        assert_eq!(schema.nodes[0].fields[0].max, HALF_PI);
+        assert_eq!(applied.changes, 1);
+        // The same again changes nothing and is reported as such.
+        apply_field(&mut schema, &max, &mut applied).unwrap();
+        assert_eq!(applied.no_ops.len(), 1);
+    }
+
+    #[test]
+    fn refuses_entries_that_match_nothing() {
+        let mut applied = Applied::default();
+        let unknown_node = entry("SpotLite", "beamWidth", Change::Remove);
+        assert!(apply_field(&mut schema(), &unknown_node, &mut applied).is_err());
+        let unknown_field = entry("SpotLight", "beamwidth", Change::Remove);
+        assert!(apply_field(&mut schema(), &unknown_field, &mut applied).is_err());
+        let added_twice = entry(
+            "SpotLight",
+            "intensity",
+            Change::Add(NewField {
+                ty: FieldType::SFFloat,
+                access: AccessType::InputOutput,
+                default: "1",
+                min: None,
+                max: None,
+                enumeration: &[],
+                enumeration_strict: false,
+                acceptable: &[],
+            }),
+        );
+        assert!(apply_field(&mut schema(), &added_twice, &mut applied).is_err());
+        let node = NodeOverride {
+            versions: &[Version::V4_0],
+            node: "X3DLightNode",
+            component: ComponentLevel {
+                component: "Lighting",
+                level: 1,
+            },
+            clause: "test",
+            why: "test",
+        };
+        assert!(apply_node(&mut schema(), &node, &mut applied).is_err());
+    }
+
+    #[test]
+    fn removes_and_adds_keeping_fields_sorted() {
+        let mut schema = schema();
+        let mut applied = Applied::default();
+        let remove = entry("SpotLight", "beamWidth", Change::Remove);
+        apply_field(&mut schema, &remove, &mut applied).unwrap();
+        let add = entry(
+            "SpotLight",
+            "attenuation",
+            Change::Add(NewField {
+                ty: FieldType::SFVec3f,
+                access: AccessType::InputOutput,
+                default: "1 0 0",
+                min: None,
+                max: None,
+                enumeration: &[],
+                enumeration_strict: false,
+                acceptable: &[],
+            }),
+        );
+        apply_field(&mut schema, &add, &mut applied).unwrap();
+        let names: Vec<&str> = schema.nodes[0].fields.iter().map(|f| f.name.as_str()).collect();
+        assert_eq!(names, ["attenuation", "intensity"]);
+    }
+}

@@ -1,0 +1,101 @@
+//! Generates `src/schema/generated.rs`, the checker's node and field tables, from the X3D
+//! Unified Object Model files in `../shared/oracle`.
+
+mod apply;
+mod emit;
+mod uom;
+mod xml;
+
+// The generator parses field and access types with the checker's own definitions. They are
+// included by path rather than through a dependency on the `x3dcheck` crate, which cannot
+// build while `generated.rs` is stale or broken, exactly when the generator is needed.
+#[allow(dead_code)] // the checker's lookup helpers in types.rs have no use here
+#[path = "../../src/schema/types.rs"]
+mod types;
+
+// The corrections the spec clauses make to the UOM: data kept next to the tables it changes,
+// included by path for the same reason as types.rs. The checker does not compile it.
+#[allow(dead_code)] // `why` documents each entry; the generator reports only the clause
+#[path = "../../src/schema/overrides.rs"]
+mod overrides;
+
+use std::fs;
+use std::path::{Path, PathBuf};
+
+use types::Version;
+use uom::Notes;
+
+/// The workspace root, where `src/schema/generated.rs` lives.
+pub fn workspace_root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+/// Where the UOM files are: `<workspace root>/../shared/oracle`.
+pub fn default_oracle_dir() -> PathBuf {
+    workspace_root().join("../shared/oracle")
+}
+
+/// The generated file, relative to the workspace root.
+pub const OUTPUT: &str = "src/schema/generated.rs";
+
+/// Reads `X3dUnifiedObjectModel-<version>.xml` for every version from `oracle_dir`, applies
+/// the corrections of `src/schema/overrides.rs` and returns the text of `generated.rs`.
+/// Prints to stderr what it left out of the tables and what the corrections did.
+pub fn generate(oracle_dir: &Path) -> Result<String, String> {
+    let mut notes = Notes::default();
+    let mut applied = apply::Applied::default();
+    let mut schemas = Vec::new();
+    for version in Version::ALL {
+        let path = oracle_dir.join(format!("X3dUnifiedObjectModel-{version}.xml"));
+        let in_file = |e: String| format!("{}: {e}", path.display());
+        let text = fs::read_to_string(&path).map_err(|e| in_file(e.to_string()))?;
+        let root = xml::parse(&text).map_err(in_file)?;
+        let mut schema = uom::read(version, &root, &mut notes).map_err(in_file)?;
+        apply::apply(&mut schema, &mut applied)?;
+        schemas.push(schema);
+    }
+    print_notes(&notes);
+    eprintln!(
+        "codegen: src/schema/overrides.rs changed {} table entries",
+        applied.changes
+    );
+    print_list(
+        "overrides the UOM already agrees with (kept to pin the value)",
+        &applied.no_ops,
+    );
+    Ok(emit::render(&schemas))
+}
+
+fn print_notes(notes: &Notes) {
+    let pseudo: Vec<String> = notes
+        .pseudo_fields
+        .iter()
+        .map(|(name, count)| format!("{name} x{count}"))
+        .collect();
+    let total: usize = notes.pseudo_fields.values().sum();
+    eprintln!(
+        "codegen: skipped {total} pseudo-field entries (XML encoding, not X3D fields): {}",
+        pseudo.join(", ")
+    );
+    print_list(
+        "skipped fields whose type is no X3D field type",
+        &notes.untyped_fields,
+    );
+    print_list("read xs:NMTOKEN as SFString", &notes.nmtoken_fields);
+    print_list("unparsable bounds, left unbounded", &notes.bad_bounds);
+    for (version, fields) in &notes.strict_enumerations {
+        print_list(&format!("{version} strict enumerations"), fields);
+    }
+}
+
+fn print_list(what: &str, items: &[String]) {
+    eprintln!(
+        "codegen: {what} ({}): {}",
+        items.len(),
+        if items.is_empty() {
+            "none".to_owned()
+        } else {
+            items.join(", ")
+        }
+    );
+}

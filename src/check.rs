@@ -1,0 +1,45 @@
+//! Checking one input: detect the encoding, read it into the model, run the rules, and
+//! resolve what is reported (line, column, path) while the source is at hand.
+
+use crate::config::CheckConfig;
+use crate::model::{Document, Encoding};
+use crate::parse;
+use crate::report::{resolve, FileReport, Stats};
+use crate::validate;
+
+/// Checks one input. `path` is only used to name the file in the report.
+pub fn check_source(path: &str, source: &[u8], config: &CheckConfig) -> FileReport {
+    let parsed = parse::read(source);
+    let mut diagnostics = parsed.diagnostics;
+    if let Some(doc) = &parsed.document {
+        diagnostics.extend(validate::check(doc, source, config));
+    }
+    diagnostics.retain(|d| config.enabled(d.rule.code) && d.rule.level <= config.level);
+    for d in &mut diagnostics {
+        d.severity = config.severity_of(d.rule.code, d.severity);
+    }
+    diagnostics.sort_by(|a, b| (a.span.start, a.rule.code).cmp(&(b.span.start, b.rule.code)));
+    let truncated = config
+        .max_diagnostics
+        .is_some_and(|max| diagnostics.len() > max);
+    if let Some(max) = config.max_diagnostics {
+        diagnostics.truncate(max);
+    }
+    let doc: Option<&Document> = parsed.document.as_ref();
+    FileReport {
+        path: path.to_string(),
+        encoding: parsed.encoding,
+        x3d_version: doc.and_then(|d| d.version_text.as_ref().map(|v| v.text.clone())),
+        profile: doc.and_then(|d| d.profile.as_ref().map(|p| p.text.clone())),
+        diagnostics: resolve(&diagnostics, source, doc),
+        truncated,
+        stats: doc.map(Stats::of).unwrap_or_default(),
+    }
+}
+
+/// The result of reading an input, whatever its encoding.
+pub struct Parsed {
+    pub encoding: Option<Encoding>,
+    pub document: Option<Document>,
+    pub diagnostics: Vec<crate::report::Diagnostic>,
+}

@@ -1,0 +1,46 @@
+//! What to check and how to weigh it: the level, which codes run, severity overrides and
+//! the fail level. Built from the command line (and, later, `x3dcheck.toml`).
+
+use std::collections::{HashMap, HashSet};
+
+use crate::validate::{Level, Rule, Severity};
+
+#[derive(Clone, Debug)]
+pub struct CheckConfig {
+    pub level: Level,
+    /// When not empty, only these codes are reported.
+    pub select: HashSet<String>,
+    pub ignore: HashSet<String>,
+    pub severity: HashMap<String, Severity>,
+    /// Per file: further diagnostics are dropped and the report says it truncated.
+    pub max_diagnostics: Option<usize>,
+}
+
+impl Default for CheckConfig {
+    fn default() -> CheckConfig {
+        CheckConfig {
+            level: Level::Standard,
+            select: HashSet::new(),
+            ignore: HashSet::new(),
+            severity: HashMap::new(),
+            max_diagnostics: None,
+        }
+    }
+}
+
+impl CheckConfig {
+    /// Whether diagnostics of this code are reported at all.
+    pub fn enabled(&self, code: &str) -> bool {
+        (self.select.is_empty() || self.select.contains(code)) && !self.ignore.contains(code)
+    }
+
+    /// Whether a rule's check runs: enabled, and at or below the configured level.
+    pub fn runs(&self, rule: &Rule) -> bool {
+        rule.level <= self.level && self.enabled(rule.code)
+    }
+
+    /// The severity a diagnostic is reported with: the user's override, else its own.
+    pub fn severity_of(&self, code: &str, own: Severity) -> Severity {
+        self.severity.get(code).copied().unwrap_or(own)
+    }
+}

@@ -1,0 +1,14 @@
+//! x3dcheck: checks X3D scene documents (XML and JSON encodings) against ISO/IEC 19775-1
+//! and reports like a compiler.
+//!
+//! bytes ─parse→ [`model::Document`] ─validate→ [`report::Diagnostic`]s ─report→ formats
+
+pub mod check;
+pub mod config;
+pub mod model;
+pub mod parse;
+pub mod report;
+pub mod schema;
+pub mod validate;
+
+pub use check::check_source;

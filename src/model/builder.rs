@@ -1,0 +1,423 @@
+//! Builds a [`Document`] from reader events. Both readers (XML and JSON) drive it, so DEF
+//! names and their scopes, USE resolution, node-type and field lookup across versions, and
+//! the diagnostics of those steps exist once.
+
+use super::*;
+use crate::report::Diagnostic;
+use crate::schema::{self, Version};
+use crate::validate::document::{
+    def_duplicate::DEF_DUPLICATE, field_duplicate::FIELD_DUPLICATE, use_cycle::USE_CYCLE, use_type_mismatch::USE_TYPE_MISMATCH,
+    use_undefined::USE_UNDEFINED,
+};
+
+/// Where a node being added goes.
+#[derive(Copy, Clone, Debug)]
+pub enum Parent<'a> {
+    /// The Scene, or the ProtoBody being read (the builder knows which by its scope).
+    TopLevel,
+    /// The initial value of a ProtoInterface field of node type.
+    ProtoField { proto: usize, field: &'a str },
+    /// A node field of an open node, by name (the containerField or JSON `-name`).
+    Field {
+        node: NodeId,
+        field: &'a str,
+        field_span: Span,
+        origin: Origin,
+    },
+}
+
+pub struct Builder {
+    doc: Document,
+    diagnostics: Vec<Diagnostic>,
+    /// The scope new nodes and DEFs go in: the scene, or the innermost open ProtoBody.
+    scopes: Vec<Scope>,
+    /// Nodes whose element is still open, innermost last: a USE of one of them is a cycle.
+    open: Vec<NodeId>,
+}
+
+impl Builder {
+    pub fn new(encoding: Encoding) -> Builder {
+        Builder {
+            doc: Document::new(encoding),
+            diagnostics: Vec::new(),
+            scopes: vec![Scope::Scene],
+            open: Vec::new(),
+        }
+    }
+
+    pub fn doc(&self) -> &Document {
+        &self.doc
+    }
+
+    pub fn doc_mut(&mut self) -> &mut Document {
+        &mut self.doc
+    }
+
+    pub fn report(&mut self, diagnostic: Diagnostic) {
+        self.diagnostics.push(diagnostic);
+    }
+
+    /// The version whose schema applies (set the document's version first).
+    pub fn version(&self) -> Version {
+        self.doc.schema_version()
+    }
+
+    fn scope(&self) -> Scope {
+        *self.scopes.last().expect("the scene scope is never popped")
+    }
+
+    /// What a node type name means: the document version's type, another version's, or none.
+    pub fn node_kind(&self, name: &str) -> NodeKind {
+        let version = self.version();
+        if let Some(def) = schema::schema(version).node(name) {
+            return NodeKind::Known { def, version };
+        }
+        // Newest first, so that a 3.x document using a 4.x node gets the 4.x definition.
+        for other in Version::ALL.into_iter().rev() {
+            if let Some(def) = schema::schema(other).node(name) {
+                return NodeKind::Known {
+                    def,
+                    version: other,
+                };
+            }
+        }
+        NodeKind::Unknown {
+            name: name.to_string(),
+        }
+    }
+
+    /// What a field name means on a node: a field the node declares itself (Script,
+    /// shaders), its type's field in the document's version, the same type's field in
+    /// another version, a field declared by its ProtoDeclare, or none.
+    pub fn field_ref(&self, node: NodeId, name: &str) -> FieldRef {
+        let declared = &self.doc.node(node).declared;
+        if let Some(decl) = declared.iter().find(|d| d.name.text == name) {
+            return FieldRef::Declared {
+                name: name.to_string(),
+                ty: decl.ty,
+            };
+        }
+        match &self.doc.node(node).kind {
+            NodeKind::Known { def, .. } => {
+                let version = self.version();
+                let in_version = schema::schema(version).node(def.name);
+                if let Some(field) = in_version.and_then(|d| d.field(name)) {
+                    return FieldRef::Schema {
+                        def: field,
+                        version,
+                    };
+                }
+                for other in Version::ALL.into_iter().rev() {
+                    let node_def = schema::schema(other).node(def.name);
+                    if let Some(field) = node_def.and_then(|d| d.field(name)) {
+                        return FieldRef::Schema {
+                            def: field,
+                            version: other,
+                        };
+                    }
+                }
+            }
+            NodeKind::ProtoInstance { proto, .. } => {
+                let declared = proto
+                    .and_then(|p| self.doc.protos[p].interface.iter().find(|f| f.name.text == name));
+                return FieldRef::Declared {
+                    name: name.to_string(),
+                    ty: declared.and_then(|f| f.ty),
+                };
+            }
+            NodeKind::Unknown { .. } => {}
+        }
+        FieldRef::Unknown {
+            name: name.to_string(),
+        }
+    }
+
+    /// The ProtoDeclare or ExternProtoDeclare of that name visible here, if any.
+    pub fn find_proto(&self, name: &str) -> Option<usize> {
+        self.doc.protos.iter().rposition(|p| p.name.text == name)
+    }
+
+    /// Adds a new node under `parent` and opens it; close it with [`Builder::end_node`].
+    pub fn begin_node(&mut self, kind: NodeKind, name_span: Span, parent: Parent) -> NodeId {
+        let id = NodeId(self.doc.nodes.len() as u32);
+        let span = Span {
+            start: name_span.start,
+            end: name_span.end,
+        };
+        let place = self.attach(
+            parent,
+            ChildRef {
+                node: id,
+                span,
+                is_use: false,
+            },
+        );
+        self.doc.nodes.push(Node {
+            kind,
+            span,
+            name_span,
+            def_name: None,
+            place,
+            scope: self.scope(),
+            fields: Vec::new(),
+            declared: Vec::new(),
+            connects: Vec::new(),
+            source_code: None,
+        });
+        self.open.push(id);
+        id
+    }
+
+    /// Closes the innermost open node; `span` is its whole element or object.
+    pub fn end_node(&mut self, id: NodeId, span: Span) {
+        debug_assert_eq!(self.open.last(), Some(&id));
+        self.open.pop();
+        let node = &mut self.doc.nodes[id.index()];
+        node.span = span;
+        // The reference in the parent was made at the start tag; give it the whole span.
+        let siblings: &mut [ChildRef] = match node.place {
+            Place::Scene => &mut self.doc.scene,
+            Place::ProtoBody { proto } => &mut self.doc.protos[proto].body,
+            Place::ProtoField { proto, field } => {
+                match &mut self.doc.protos[proto].interface[field as usize].value {
+                    Some((Value::Nodes(children), _)) => children,
+                    _ => &mut [],
+                }
+            }
+            Place::Field { parent, entry } => {
+                match &mut self.doc.nodes[parent.index()].fields[entry as usize].value {
+                    Value::Nodes(children) => children,
+                    _ => &mut [],
+                }
+            }
+        };
+        if let Some(child) = siblings.iter_mut().rev().find(|c| c.node == id && !c.is_use) {
+            child.span = span;
+        }
+    }
+
+    /// Records `DEF` on a node. A name already defined in this scope keeps its first node.
+    pub fn define(&mut self, id: NodeId, name: Named) {
+        let key = (self.scope(), name.text.clone());
+        if let Some(&first) = self.doc.defs.get(&key) {
+            let first_span = self.doc.node(first).def_name.as_ref().map(|d| d.span);
+            let mut diagnostic = Diagnostic::new(
+                &DEF_DUPLICATE,
+                name.span,
+                format!("DEF name `{}` is already defined in this scope", name.text),
+            )
+            .node(id)
+            .value(name.text.clone());
+            if let Some(first_span) = first_span {
+                diagnostic = diagnostic.related(first_span, "first defined here");
+            }
+            self.report(diagnostic);
+        } else {
+            self.doc.defs.insert(key, id);
+        }
+        self.doc.nodes[id.index()].def_name = Some(name);
+    }
+
+    /// Adds a `USE` of a DEF'd node under `parent`. `element_type` is the node type the
+    /// document names at the USE site (XML element name; JSON object key), if any.
+    pub fn use_node(
+        &mut self,
+        name: &Named,
+        element_type: Option<&str>,
+        site: Span,
+        parent: Parent,
+    ) -> Option<NodeId> {
+        let Some(&target) = self.doc.defs.get(&(self.scope(), name.text.clone())) else {
+            let in_other_scope = self.doc.defs.keys().any(|(_, n)| *n == name.text);
+            let diagnostic = Diagnostic::new(
+                &USE_UNDEFINED,
+                name.span,
+                format!("USE `{}` names no DEF defined before it", name.text),
+            )
+            .value(name.text.clone())
+            .help_opt(in_other_scope.then(|| {
+                "a node of that name is DEF'd in another scope (scene or ProtoBody) or after this USE"
+                    .to_string()
+            }));
+            self.report(diagnostic);
+            return None;
+        };
+        if self.open.contains(&target) {
+            self.report(
+                Diagnostic::new(
+                    &USE_CYCLE,
+                    name.span,
+                    format!("USE `{}` stands inside the node it names: the scene graph would be cyclic", name.text),
+                )
+                .node(target)
+                .value(name.text.clone()),
+            );
+            return None;
+        }
+        let target_type = self.doc.node(target).type_name().to_string();
+        if let Some(element_type) = element_type {
+            if element_type != target_type {
+                self.report(
+                    Diagnostic::new(
+                        &USE_TYPE_MISMATCH,
+                        name.span,
+                        format!(
+                            "`{element_type}` USE `{}` refers to a {target_type}",
+                            name.text
+                        ),
+                    )
+                    .node(target)
+                    .value(name.text.clone()),
+                );
+            }
+        }
+        self.attach(
+            parent,
+            ChildRef {
+                node: target,
+                span: site,
+                is_use: true,
+            },
+        );
+        Some(target)
+    }
+
+    /// Puts a child reference into its parent and says where it went.
+    fn attach(&mut self, parent: Parent, child: ChildRef) -> Place {
+        match parent {
+            Parent::TopLevel => match self.scope() {
+                Scope::Scene => {
+                    self.doc.scene.push(child);
+                    Place::Scene
+                }
+                Scope::Proto(proto) => {
+                    self.doc.protos[proto].body.push(child);
+                    Place::ProtoBody { proto }
+                }
+            },
+            Parent::ProtoField { proto, field } => {
+                let interface = &mut self.doc.protos[proto].interface;
+                let index = match interface.iter().rposition(|f| f.name.text == field) {
+                    Some(index) => index,
+                    None => return Place::Scene,
+                };
+                let (value, _) = interface[index]
+                    .value
+                    .get_or_insert((Value::Nodes(Vec::new()), child.span));
+                if !matches!(value, Value::Nodes(_)) {
+                    *value = Value::Nodes(Vec::new());
+                }
+                if let Value::Nodes(children) = value {
+                    children.push(child);
+                }
+                Place::ProtoField {
+                    proto,
+                    field: index as u32,
+                }
+            }
+            Parent::Field {
+                node,
+                field,
+                field_span,
+                origin,
+            } => {
+                let entry = self.node_field_entry(node, field, field_span, origin, child.span);
+                if let Value::Nodes(children) = &mut self.doc.nodes[node.index()].fields[entry].value {
+                    children.push(child);
+                }
+                Place::Field {
+                    parent: node,
+                    entry: entry as u32,
+                }
+            }
+        }
+    }
+
+    /// The entry of a node field that children accumulate in, made on first use.
+    fn node_field_entry(
+        &mut self,
+        node: NodeId,
+        field: &str,
+        field_span: Span,
+        origin: Origin,
+        first_child: Span,
+    ) -> usize {
+        let fields = &self.doc.nodes[node.index()].fields;
+        if let Some(i) = fields
+            .iter()
+            .position(|e| e.name() == field && matches!(e.value, Value::Nodes(_)) && e.origin == origin)
+        {
+            return i;
+        }
+        if let Some(first) = fields.iter().find(|e| e.name() == field) {
+            let diagnostic = Diagnostic::new(
+                &FIELD_DUPLICATE,
+                field_span,
+                format!("field `{field}` is given twice"),
+            )
+            .node(node)
+            .related(first.name_span, "first given here");
+            self.report(diagnostic);
+        }
+        let field_ref = self.field_ref(node, field);
+        let fields = &mut self.doc.nodes[node.index()].fields;
+        fields.push(FieldEntry {
+            field: field_ref,
+            name_span: field_span,
+            span: first_child,
+            origin,
+            value: Value::Nodes(Vec::new()),
+        });
+        fields.len() - 1
+    }
+
+    /// Sets a field from a value the reader parsed. A field already set keeps its first
+    /// value and the repeat is reported.
+    pub fn add_field(&mut self, node: NodeId, entry: FieldEntry) {
+        let fields = &self.doc.nodes[node.index()].fields;
+        if let Some(first) = fields.iter().find(|f| f.name() == entry.name()) {
+            let diagnostic = Diagnostic::new(
+                &FIELD_DUPLICATE,
+                entry.name_span,
+                format!("field `{}` is given twice; the first value is kept", entry.name()),
+            )
+            .node(node)
+            .related(first.name_span, "first given here");
+            self.report(diagnostic);
+            return;
+        }
+        self.doc.nodes[node.index()].fields.push(entry);
+    }
+
+    /// Starts a ProtoDeclare or ExternProtoDeclare; its index names it.
+    pub fn declare_proto(&mut self, proto: ProtoDecl) -> usize {
+        self.doc.protos.push(proto);
+        self.doc.protos.len() - 1
+    }
+
+    /// Opens a ProtoBody: a DEF name scope of its own.
+    pub fn begin_proto_body(&mut self, proto: usize) {
+        self.scopes.push(Scope::Proto(proto));
+    }
+
+    pub fn end_proto_body(&mut self) {
+        if self.scopes.len() > 1 {
+            self.scopes.pop();
+        }
+    }
+
+    /// Adds a ROUTE in the current scope.
+    pub fn add_route(&mut self, mut route: Route) {
+        route.scope = self.scope();
+        self.doc.routes.push(route);
+    }
+
+    /// The nodes still open, innermost last (for readers that stop early on bad input).
+    pub fn open_nodes(&self) -> &[NodeId] {
+        &self.open
+    }
+
+    pub fn finish(self) -> (Document, Vec<Diagnostic>) {
+        (self.doc, self.diagnostics)
+    }
+}

@@ -1,0 +1,344 @@
+//! The typed scene graph both readers produce: an arena of nodes addressed by [`NodeId`],
+//! each with its type, the fields the document set (typed values with their spans) and its
+//! children per node field. `USE` is a second [`ChildRef`] to the DEF'd node, never a copy.
+//! Defaults are not stored: they come from the schema when asked for.
+
+pub mod builder;
+mod value;
+
+pub use builder::Builder;
+pub use value::{ChildRef, Image, Value};
+
+use std::collections::HashMap;
+
+use crate::schema::{AccessType, FieldDef, FieldType, NodeDef, Version};
+
+/// A byte range in the input. Line and column are computed only for reported diagnostics.
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct Span {
+    pub start: u32,
+    pub end: u32,
+}
+
+impl Span {
+    pub fn new(start: usize, end: usize) -> Span {
+        Span {
+            start: start as u32,
+            end: end as u32,
+        }
+    }
+
+    pub fn range(self) -> std::ops::Range<usize> {
+        self.start as usize..self.end as usize
+    }
+}
+
+/// Inputs are addressed with u32 offsets; larger files are refused with a diagnostic.
+pub const MAX_INPUT_BYTES: usize = u32::MAX as usize;
+
+/// A node's place in the arena.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct NodeId(pub u32);
+
+impl NodeId {
+    pub fn index(self) -> usize {
+        self.0 as usize
+    }
+}
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Encoding {
+    Xml,
+    Json,
+}
+
+/// A name or other text as written, with its place.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Named {
+    pub text: String,
+    pub span: Span,
+}
+
+/// What a node is.
+#[derive(Clone, Debug)]
+pub enum NodeKind {
+    /// A node type of the schema. `version` is the version whose table defined it: the
+    /// document's own, or (for a node that only exists in another version) that one.
+    Known {
+        def: &'static NodeDef,
+        version: Version,
+    },
+    /// `ProtoInstance name='…'`; `proto` is its declaration in the same scope, if any.
+    ProtoInstance { name: String, proto: Option<usize> },
+    /// A name no version of the schema knows.
+    Unknown { name: String },
+}
+
+/// Where a node was defined: the Scene, a ProtoBody, a ProtoInterface field's initial
+/// value, or a node field of its parent.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum Place {
+    Scene,
+    ProtoBody { proto: usize },
+    ProtoField { proto: usize, field: u32 },
+    Field { parent: NodeId, entry: u32 },
+}
+
+/// The DEF name scope a node lives in: the scene, or one ProtoBody (19775-1 4.4.7).
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash)]
+pub enum Scope {
+    Scene,
+    Proto(usize),
+}
+
+#[derive(Clone, Debug)]
+pub struct Node {
+    pub kind: NodeKind,
+    /// The whole element (XML) or object (JSON) that defines the node.
+    pub span: Span,
+    /// The element name or JSON key naming the node type.
+    pub name_span: Span,
+    pub def_name: Option<Named>,
+    pub place: Place,
+    pub scope: Scope,
+    /// The fields the document set, in document order.
+    pub fields: Vec<FieldEntry>,
+    /// Fields declared by the node itself (Script, shaders): `<field>` children.
+    pub declared: Vec<FieldDecl>,
+    /// `IS`/`connect` statements inside a ProtoBody.
+    pub connects: Vec<IsConnect>,
+    /// Source text (Script, ShaderPart CDATA or `#sourceCode`); not checked.
+    pub source_code: Option<Span>,
+}
+
+impl Node {
+    pub fn def(&self) -> Option<&'static NodeDef> {
+        match self.kind {
+            NodeKind::Known { def, .. } => Some(def),
+            _ => None,
+        }
+    }
+
+    /// The type name as the document wrote it.
+    pub fn type_name(&self) -> &str {
+        match &self.kind {
+            NodeKind::Known { def, .. } => def.name,
+            NodeKind::ProtoInstance { .. } => "ProtoInstance",
+            NodeKind::Unknown { name } => name,
+        }
+    }
+
+    /// Whether this node is of type `type_name` or inherits it (`X3DMaterialNode`).
+    pub fn is_a(&self, type_name: &str) -> bool {
+        self.def().is_some_and(|d| d.is_a(type_name))
+    }
+
+    pub fn entry(&self, name: &str) -> Option<&FieldEntry> {
+        self.fields.iter().find(|f| f.name() == name)
+    }
+
+    /// The value the document set for `name`, if it set one that parsed.
+    pub fn value(&self, name: &str) -> Option<&Value> {
+        self.entry(name)
+            .map(|e| &e.value)
+            .filter(|v| !matches!(v, Value::Unparsed(_)))
+    }
+
+    /// The nodes of a node field (empty when unset or NULL).
+    pub fn children(&self, name: &str) -> &[ChildRef] {
+        self.value(name).and_then(Value::as_nodes).unwrap_or(&[])
+    }
+
+    /// The first node of an SFNode field.
+    pub fn child(&self, name: &str) -> Option<NodeId> {
+        self.children(name).first().map(|c| c.node)
+    }
+}
+
+/// How a field got its value.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum Origin {
+    /// An XML attribute.
+    Attribute,
+    /// Child elements, placed by `containerField` or the type's default.
+    Children,
+    /// A `fieldValue` statement of a ProtoInstance.
+    FieldValue,
+    /// A JSON member (`@name` or `-name`).
+    Member,
+}
+
+/// Which field an entry sets.
+#[derive(Clone, Debug)]
+pub enum FieldRef {
+    /// A field of the schema. `version` is the version whose table defined it.
+    Schema {
+        def: &'static FieldDef,
+        version: Version,
+    },
+    /// A field declared by the document: a ProtoInstance's fieldValue, typed by the
+    /// ProtoDeclare when known.
+    Declared {
+        name: String,
+        ty: Option<FieldType>,
+    },
+    /// A name the node's type does not have in any version.
+    Unknown { name: String },
+}
+
+#[derive(Clone, Debug)]
+pub struct FieldEntry {
+    pub field: FieldRef,
+    /// The attribute name, JSON key, `fieldValue` element or first child element.
+    pub name_span: Span,
+    /// The value: attribute value, JSON value, or the first child element.
+    pub span: Span,
+    pub origin: Origin,
+    pub value: Value,
+}
+
+impl FieldEntry {
+    pub fn name(&self) -> &str {
+        match &self.field {
+            FieldRef::Schema { def, .. } => def.name,
+            FieldRef::Declared { name, .. } | FieldRef::Unknown { name } => name,
+        }
+    }
+
+    pub fn schema_def(&self) -> Option<&'static FieldDef> {
+        match self.field {
+            FieldRef::Schema { def, .. } => Some(def),
+            _ => None,
+        }
+    }
+
+    pub fn field_type(&self) -> Option<FieldType> {
+        match &self.field {
+            FieldRef::Schema { def, .. } => Some(def.ty),
+            FieldRef::Declared { ty, .. } => *ty,
+            FieldRef::Unknown { .. } => None,
+        }
+    }
+}
+
+/// A `field` declaration: in ProtoInterface, ExternProtoDeclare, Script or a shader node.
+#[derive(Clone, Debug)]
+pub struct FieldDecl {
+    pub name: Named,
+    pub ty: Option<FieldType>,
+    pub access: Option<AccessType>,
+    pub span: Span,
+    /// The initial value, where one was given.
+    pub value: Option<(Value, Span)>,
+}
+
+#[derive(Clone, Debug)]
+pub struct IsConnect {
+    pub node_field: Named,
+    pub proto_field: Named,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug)]
+pub struct ProtoDecl {
+    pub name: Named,
+    pub span: Span,
+    pub external: bool,
+    pub interface: Vec<FieldDecl>,
+    /// The ProtoBody's top-level nodes (empty for ExternProtoDeclare).
+    pub body: Vec<ChildRef>,
+    pub url: Vec<String>,
+}
+
+#[derive(Clone, Debug)]
+pub struct Route {
+    pub from_node: Named,
+    pub from_field: Named,
+    pub to_node: Named,
+    pub to_field: Named,
+    pub span: Span,
+    pub scope: Scope,
+}
+
+#[derive(Clone, Debug)]
+pub struct ComponentStatement {
+    pub name: Named,
+    pub level: Option<(i32, Span)>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, Default)]
+pub struct Head {
+    pub components: Vec<ComponentStatement>,
+    pub units: usize,
+    pub metas: usize,
+}
+
+/// One parsed document.
+#[derive(Clone, Debug)]
+pub struct Document {
+    pub encoding: Encoding,
+    /// The `version` attribute as written.
+    pub version_text: Option<Named>,
+    /// The version it names, when it names a known one.
+    pub version: Option<Version>,
+    pub profile: Option<Named>,
+    pub head: Head,
+    /// The root element or `"X3D"` object.
+    pub root_span: Span,
+    pub scene_span: Option<Span>,
+    pub nodes: Vec<Node>,
+    /// The Scene's top-level nodes.
+    pub scene: Vec<ChildRef>,
+    pub routes: Vec<Route>,
+    pub protos: Vec<ProtoDecl>,
+    /// IMPORT/EXPORT statements: counted, not checked.
+    pub imports_exports: Vec<Span>,
+    /// DEF names per scope, each with the first node that took it.
+    pub defs: HashMap<(Scope, String), NodeId>,
+}
+
+impl Document {
+    pub fn new(encoding: Encoding) -> Document {
+        Document {
+            encoding,
+            version_text: None,
+            version: None,
+            profile: None,
+            head: Head::default(),
+            root_span: Span::default(),
+            scene_span: None,
+            nodes: Vec::new(),
+            scene: Vec::new(),
+            routes: Vec::new(),
+            protos: Vec::new(),
+            imports_exports: Vec::new(),
+            defs: HashMap::new(),
+        }
+    }
+
+    /// The version whose schema applies: the document's, or the latest when it names none.
+    pub fn schema_version(&self) -> Version {
+        self.version.unwrap_or(Version::LATEST)
+    }
+
+    pub fn node(&self, id: NodeId) -> &Node {
+        &self.nodes[id.index()]
+    }
+
+    /// Every node with its id, in document order.
+    pub fn iter(&self) -> impl Iterator<Item = (NodeId, &Node)> {
+        self.nodes.iter().enumerate().map(|(i, n)| (NodeId(i as u32), n))
+    }
+
+    pub fn node_ids(&self) -> impl Iterator<Item = NodeId> {
+        (0..self.nodes.len() as u32).map(NodeId)
+    }
+
+    /// Nodes of a given concrete type, in document order.
+    pub fn nodes_of_type<'a>(&'a self, type_name: &'a str) -> impl Iterator<Item = NodeId> + 'a {
+        self.node_ids()
+            .filter(move |id| self.node(*id).def().is_some_and(|d| d.name == type_name))
+    }
+}

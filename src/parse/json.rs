@@ -1,0 +1,953 @@
+//! The JSON encoding (ISO/IEC 19776-5) read into the same scene model as the XML reader.
+//!
+//! The input is scanned once by [`tree`] into a flat tree with the span of every key and
+//! value, then walked with an explicit stack (no recursion: nesting is bounded only by the
+//! scanner's depth cap) while driving the [`Builder`] exactly as the XML reader does, so
+//! that both encodings of one scene give equal documents.
+//!
+//! The shapes read (as the Web3D X3dToJson stylesheet writes them):
+//! - `{ "X3D": { "@version", "@profile", "head": { "component": […], "meta": […],
+//!   "unit": […] }, "Scene": { "-children": […] } } }`;
+//! - a node is an object with one member named after its type, whose value holds its
+//!   fields: `@name` members are field values, `-name` members node fields (one node
+//!   object for SFNode, an array of them for MFNode; the key *is* the field, so no
+//!   containerField is needed and `@containerField` is ignored), `@DEF`, `@USE`, `IS` with
+//!   `connect` arrays, `field` declarations (Script, shaders), `fieldValue` (ProtoInstance),
+//!   `#sourceCode` (a string or an array of lines) and `#comment`;
+//! - statements in the same arrays as nodes: `ROUTE`, `ProtoDeclare` (`ProtoInterface`
+//!   with `field` arrays, `ProtoBody` with `-children`), `ExternProtoDeclare`, `IMPORT`,
+//!   `EXPORT`, `#comment`.
+//!
+//! A node object's `@` members are read before its other members, as an XML element's
+//! attributes come before its children, whatever the member order.
+
+#[path = "json_tree.rs"]
+pub mod tree;
+#[path = "json_value.rs"]
+pub mod value;
+
+use std::borrow::Cow;
+use std::collections::HashSet;
+
+use tree::{Kind, Tree};
+
+use crate::check::Parsed;
+use crate::model::builder::Parent;
+use crate::model::*;
+use crate::report::Diagnostic;
+use crate::schema::{AccessType, FieldType, Scalar, Version};
+use crate::validate::document::{
+    field_duplicate::FIELD_DUPLICATE, field_value_syntax::FIELD_VALUE_SYNTAX,
+    json_malformed::JSON_MALFORMED, root_not_x3d::ROOT_NOT_X3D, use_with_fields::USE_WITH_FIELDS,
+};
+
+/// Reads an X3D JSON document.
+pub fn read(source: &[u8]) -> Parsed {
+    let failed = |diagnostic: Diagnostic| Parsed {
+        encoding: Some(Encoding::Json),
+        document: None,
+        diagnostics: vec![diagnostic],
+    };
+    if source.len() > MAX_INPUT_BYTES {
+        return failed(malformed(0, 0, "the input is larger than 4 GiB"));
+    }
+    let text = match std::str::from_utf8(source) {
+        Ok(text) => text,
+        Err(error) => {
+            let at = error.valid_up_to();
+            let len = error.error_len().unwrap_or(source.len() - at);
+            return failed(malformed(at, len, &format!("invalid UTF-8 at byte {at}: JSON text is UTF-8")));
+        }
+    };
+    let tree = match tree::parse(text) {
+        Ok(tree) => tree,
+        Err(error) => return failed(malformed(error.at, error.len, &error.message)),
+    };
+    let x3d = match root(&tree) {
+        Ok(x3d) => x3d,
+        Err(diagnostic) => return failed(diagnostic),
+    };
+    let mut reader = JsonReader {
+        t: &tree,
+        builder: Builder::new(Encoding::Json),
+        stack: Vec::new(),
+    };
+    reader.x3d(x3d);
+    reader.run();
+    let (document, diagnostics) = reader.builder.finish();
+    Parsed {
+        encoding: Some(Encoding::Json),
+        document: Some(document),
+        diagnostics,
+    }
+}
+
+fn malformed(at: usize, len: usize, message: &str) -> Diagnostic {
+    Diagnostic::new(&JSON_MALFORMED, Span::new(at, at + len), format!("not valid JSON: {message}"))
+}
+
+/// The `"X3D"` member of the top-level object: its key and value.
+fn root(t: &Tree) -> Result<(usize, usize), Diagnostic> {
+    let top = 0;
+    let not_x3d = |message: String| Err(Diagnostic::new(&ROOT_NOT_X3D, span(t.full_span(top)), message));
+    if t.kind(top) != Kind::Object {
+        return not_x3d(format!(
+            "the top-level JSON value is {}, not an object with an `X3D` member",
+            value::describe(t, top)
+        ));
+    }
+    let Some((key, value)) = t.get(top, "X3D") else {
+        let keys: Vec<String> = t.members(top).take(3).map(|(k, _)| format!("`{}`", t.str(k))).collect();
+        let found = if keys.is_empty() { "no member".to_string() } else { format!("{}", keys.join(", ")) };
+        return not_x3d(format!("the top-level object has no `X3D` member (found {found})"));
+    };
+    if t.kind(value) != Kind::Object {
+        return Err(Diagnostic::new(
+            &ROOT_NOT_X3D,
+            span(t.full_span(value)),
+            format!("`X3D` must be an object, found {}", value::describe(t, value)),
+        ));
+    }
+    Ok((key, value))
+}
+
+fn span((start, end): (usize, usize)) -> Span {
+    Span::new(start, end)
+}
+
+/// Where nodes read in a context go.
+#[derive(Clone)]
+enum Ctx<'s> {
+    /// The Scene or the open ProtoBody (the builder knows which by its scope).
+    TopLevel,
+    /// A node field of a node: `-name`, a `field` declaration's or a `fieldValue`'s nodes.
+    Field {
+        node: NodeId,
+        field: Cow<'s, str>,
+        field_span: Span,
+        origin: Origin,
+    },
+    /// The initial value of a ProtoInterface field.
+    ProtoField { proto: usize, field: Cow<'s, str> },
+}
+
+impl<'s> Ctx<'s> {
+    fn parent(&self) -> Parent<'_> {
+        match self {
+            Ctx::TopLevel => Parent::TopLevel,
+            Ctx::Field {
+                node,
+                field,
+                field_span,
+                origin,
+            } => Parent::Field {
+                node: *node,
+                field,
+                field_span: *field_span,
+                origin: *origin,
+            },
+            Ctx::ProtoField { proto, field } => Parent::ProtoField { proto: *proto, field },
+        }
+    }
+
+    /// How the place is called in messages.
+    fn describe(&self) -> String {
+        match self {
+            Ctx::TopLevel => "`-children`".to_string(),
+            Ctx::Field { field, origin: Origin::Member, .. } => format!("`-{field}`"),
+            Ctx::Field { field, .. } | Ctx::ProtoField { field, .. } => format!("the nodes of `{field}`"),
+        }
+    }
+}
+
+#[derive(Copy, Clone)]
+enum DeclOwner {
+    Node(NodeId),
+    Proto(usize),
+}
+
+/// What the items under a frame's cursor are and what to do with them.
+#[derive(Clone)]
+enum Task<'s> {
+    /// Elements of an array of statement objects (`-children`, `-name`, …).
+    List(Ctx<'s>),
+    /// Members of one statement object: nodes, ROUTE, protos, comments.
+    Statements(Ctx<'s>),
+    /// A node object's members other than its fields (`-name`, `field`, `IS`, …); the
+    /// node is closed when they are done.
+    Node { id: NodeId, span: Span },
+    /// Members of a ProtoDeclare or ExternProtoDeclare.
+    Proto { proto: usize, external: bool },
+    /// Members of a ProtoInterface.
+    ProtoInterface { proto: usize },
+    /// Members of a ProtoBody; its scope is closed when they are done.
+    ProtoBody,
+    /// Elements of a `field` array.
+    Decls(DeclOwner),
+    /// Elements of a `fieldValue` array.
+    FieldValues(NodeId),
+}
+
+struct Frame<'s> {
+    task: Task<'s>,
+    /// The next item: an element (arrays) or a key (objects).
+    cursor: usize,
+    end: usize,
+}
+
+struct JsonReader<'t, 's> {
+    t: &'t Tree<'s>,
+    builder: Builder,
+    stack: Vec<Frame<'s>>,
+}
+
+/// Node object members that are not node fields: read by the reader itself, so their
+/// repeats are reported here (repeated fields are reported by the builder).
+fn is_node_statement_key(key: &str) -> bool {
+    matches!(
+        key,
+        "@DEF" | "@USE" | "@containerField" | "@class" | "@id" | "@style" | "IS" | "field" | "fieldValue" | "#sourceCode"
+    )
+}
+
+impl<'t, 's> JsonReader<'t, 's> {
+    fn report(&mut self, diagnostic: Diagnostic) {
+        self.builder.report(diagnostic);
+    }
+
+    fn syntax(&mut self, at: (usize, usize), message: String) {
+        self.report(Diagnostic::new(&FIELD_VALUE_SYNTAX, span(at), message));
+    }
+
+    /// The span of a member: its key (with quotes) through its value.
+    fn member_span(&self, key: usize, value: usize) -> Span {
+        Span::new(self.t.full_span(key).0, self.t.full_span(value).1)
+    }
+
+    /// The span a value is reported at: a string's content (as an XML attribute value's),
+    /// any other value's whole token.
+    fn value_span(&self, value: usize) -> Span {
+        if self.t.kind(value) == Kind::String {
+            span(self.t.span(value))
+        } else {
+            span(self.t.full_span(value))
+        }
+    }
+
+    fn push(&mut self, task: Task<'s>, container: usize) {
+        self.stack.push(Frame {
+            task,
+            cursor: container + 1,
+            end: self.t.next(container),
+        });
+    }
+
+    /// Pushes the nodes of a node-valued member: one node object, or an array of them.
+    fn push_nodes(&mut self, ctx: Ctx<'s>, value: usize, what: &str) {
+        match self.t.kind(value) {
+            Kind::Object => self.push(Task::Statements(ctx), value),
+            Kind::Array => self.push(Task::List(ctx), value),
+            _ => {
+                let found = value::describe(self.t, value);
+                self.syntax(
+                    self.t.full_span(value),
+                    format!("{what} takes a node object or an array of node objects, found {found}"),
+                );
+            }
+        }
+    }
+
+    /// Reports the repeated keys of object `object` that `filter` selects.
+    fn duplicate_keys(&mut self, object: usize, filter: impl Fn(&str) -> bool) {
+        let t = self.t;
+        if t.item(object).len < 2 {
+            return;
+        }
+        let mut seen: HashSet<Cow<'s, str>> = HashSet::new();
+        let mut first: Vec<(Cow<'s, str>, Span)> = Vec::new();
+        for (key, _) in t.members(object) {
+            let name = t.str(key);
+            if name.starts_with("#comment") || !filter(&name) {
+                continue;
+            }
+            let key_span = span(t.span(key));
+            if seen.contains(&name) {
+                let related = first.iter().find(|(n, _)| *n == name).map(|(_, s)| *s);
+                let mut diagnostic = Diagnostic::new(
+                    &FIELD_DUPLICATE,
+                    key_span,
+                    format!("`{name}` is given twice in one object; JSON parsers keep only one of them"),
+                )
+                .value(name.to_string());
+                if let Some(related) = related {
+                    diagnostic = diagnostic.related(related, "first given here");
+                }
+                self.report(diagnostic);
+            } else {
+                first.push((name.clone(), key_span));
+                seen.insert(name);
+            }
+        }
+    }
+
+    /// A string member's text and place, or a report that it is not a string.
+    fn string_member(&mut self, key: usize, value: usize) -> Option<Named> {
+        if self.t.kind(value) == Kind::String {
+            return Some(Named {
+                text: self.t.str(value).into_owned(),
+                span: span(self.t.span(value)),
+            });
+        }
+        let found = value::describe(self.t, value);
+        let key_name = self.t.str(key);
+        self.syntax(self.t.full_span(value), format!("`{key_name}` takes a string, found {found}"));
+        None
+    }
+
+    /// The first member `name` of object `object`, as a string.
+    fn named(&mut self, object: usize, name: &str) -> Option<Named> {
+        let (key, value) = self.t.get(object, name)?;
+        self.string_member(key, value)
+    }
+
+    // ----- the document -----
+
+    fn x3d(&mut self, (key, x3d): (usize, usize)) {
+        let t = self.t;
+        self.builder.doc_mut().root_span = self.member_span(key, x3d);
+        self.duplicate_keys(x3d, |_| true);
+        // Version and profile first: node and field lookup depend on the version.
+        for (key, value) in t.members(x3d) {
+            let text = || match t.kind(value) {
+                Kind::String => Some(Named {
+                    text: t.str(value).into_owned(),
+                    span: span(t.span(value)),
+                }),
+                Kind::Number => Some(Named {
+                    text: t.raw(value).to_string(),
+                    span: span(t.span(value)),
+                }),
+                _ => None,
+            };
+            if t.key_is(key, "@version") && self.builder.doc().version_text.is_none() {
+                match text() {
+                    Some(named) => {
+                        let doc = self.builder.doc_mut();
+                        doc.version = Version::parse(named.text.trim());
+                        doc.version_text = Some(named);
+                    }
+                    None => {
+                        self.string_member(key, value);
+                    }
+                }
+            } else if t.key_is(key, "@profile") && self.builder.doc().profile.is_none() {
+                match text() {
+                    Some(named) => self.builder.doc_mut().profile = Some(named),
+                    None => {
+                        self.string_member(key, value);
+                    }
+                }
+            }
+        }
+        for (key, value) in t.members(x3d) {
+            if t.key_is(key, "head") && t.kind(value) == Kind::Object {
+                self.head(value);
+            }
+        }
+        // The Scene last, on the stack; a repeated Scene is reported and read too.
+        let scenes: Vec<(usize, usize)> = t.members(x3d).filter(|&(k, _)| t.key_is(k, "Scene")).collect();
+        for &(_, scene) in scenes.iter().rev() {
+            if t.kind(scene) != Kind::Object {
+                let found = value::describe(t, scene);
+                self.syntax(t.full_span(scene), format!("`Scene` must be an object, found {found}"));
+                continue;
+            }
+            self.duplicate_keys(scene, |_| true);
+            if let Some((_, children)) = t.get(scene, "-children") {
+                self.push_nodes(Ctx::TopLevel, children, "`-children`");
+            }
+        }
+        if let Some(&(key, scene)) = scenes.first() {
+            let scene_span = self.member_span(key, scene);
+            self.builder.doc_mut().scene_span = Some(scene_span);
+        }
+    }
+
+    fn head(&mut self, head: usize) {
+        let t = self.t;
+        self.duplicate_keys(head, |_| true);
+        for (key, value) in t.members(head) {
+            let objects: Vec<usize> = match t.kind(value) {
+                Kind::Array => t.elements(value).filter(|&e| t.kind(e) == Kind::Object).collect(),
+                Kind::Object => vec![value],
+                _ => Vec::new(),
+            };
+            match t.str(key).as_ref() {
+                "component" => {
+                    for object in objects {
+                        self.component(object);
+                    }
+                }
+                "unit" => self.builder.doc_mut().head.units += objects.len(),
+                "meta" => self.builder.doc_mut().head.metas += objects.len(),
+                _ => {}
+            }
+        }
+    }
+
+    fn component(&mut self, object: usize) {
+        let t = self.t;
+        self.duplicate_keys(object, |_| true);
+        let object_span = span(t.full_span(object));
+        let name = self.named(object, "@name").unwrap_or(Named {
+            text: String::new(),
+            span: object_span,
+        });
+        let level = t.get(object, "@level").and_then(|(_, v)| {
+            let text = match t.kind(v) {
+                Kind::Number | Kind::String => t.raw(v).trim(),
+                _ => return None,
+            };
+            text.parse::<i32>().ok().map(|l| (l, span(t.span(v))))
+        });
+        self.builder.doc_mut().head.components.push(ComponentStatement {
+            name,
+            level,
+            span: object_span,
+        });
+    }
+
+    // ----- the walk -----
+
+    fn run(&mut self) {
+        while let Some(frame) = self.stack.last_mut() {
+            if frame.cursor >= frame.end {
+                let frame = self.stack.pop().expect("a frame is on the stack");
+                self.finish(frame.task);
+                continue;
+            }
+            let at = frame.cursor;
+            frame.cursor = self.t.next(at);
+            let task = frame.task.clone();
+            match task {
+                Task::List(ctx) => self.list_element(ctx, at),
+                Task::Statements(ctx) => self.statement(&ctx, at, at + 1),
+                Task::Node { id, .. } => self.node_member(id, at, at + 1),
+                Task::Proto { proto, external } => self.proto_member(proto, external, at, at + 1),
+                Task::ProtoInterface { proto } => {
+                    if self.t.key_is(at, "field") {
+                        self.push_decls(DeclOwner::Proto(proto), at, at + 1);
+                    }
+                }
+                Task::ProtoBody => {
+                    if self.t.key_is(at, "-children") {
+                        self.push_nodes(Ctx::TopLevel, at + 1, "`-children`");
+                    }
+                }
+                Task::Decls(owner) => self.field_decl(owner, at),
+                Task::FieldValues(node) => self.field_value(node, at),
+            }
+        }
+    }
+
+    fn finish(&mut self, task: Task) {
+        match task {
+            Task::Node { id, span } => self.builder.end_node(id, span),
+            Task::ProtoBody => self.builder.end_proto_body(),
+            _ => {}
+        }
+    }
+
+    /// An element of a node array: an object holding one node (or statement, or comment).
+    fn list_element(&mut self, ctx: Ctx<'s>, element: usize) {
+        if self.t.kind(element) == Kind::Object {
+            self.duplicate_keys(element, |_| true);
+            self.push(Task::Statements(ctx), element);
+        } else {
+            let found = value::describe(self.t, element);
+            let place = ctx.describe();
+            self.syntax(
+                self.t.full_span(element),
+                format!("{place} holds objects naming a node, like {{\"Transform\": {{…}}}}, found {found}"),
+            );
+        }
+    }
+
+    /// One member of a statement object: a node, ROUTE, a proto declaration, a comment.
+    fn statement(&mut self, ctx: &Ctx<'s>, key: usize, value: usize) {
+        let t = self.t;
+        let name = t.str(key);
+        match name.as_ref() {
+            "ROUTE" => self.route(key, value),
+            "ProtoDeclare" => self.proto_declare(key, value, false),
+            "ExternProtoDeclare" => self.proto_declare(key, value, true),
+            "IMPORT" | "EXPORT" => {
+                let member = self.member_span(key, value);
+                self.builder.doc_mut().imports_exports.push(member);
+            }
+            n if n.starts_with('#') => {}
+            n if n.starts_with('@') || n.starts_with('-') => {
+                let place = ctx.describe();
+                self.syntax(
+                    t.span(key),
+                    format!("`{n}` is a field, not a node: {place} holds objects naming a node, like {{\"Transform\": {{…}}}}"),
+                );
+            }
+            _ => self.node(ctx, key, value),
+        }
+    }
+
+    fn route(&mut self, key: usize, value: usize) {
+        let route_span = self.member_span(key, value);
+        if self.t.kind(value) != Kind::Object {
+            let found = value::describe(self.t, value);
+            self.syntax(self.t.full_span(value), format!("`ROUTE` takes an object, found {found}"));
+            return;
+        }
+        self.duplicate_keys(value, |_| true);
+        let mut get = |name: &str| {
+            self.named(value, name).unwrap_or(Named {
+                text: String::new(),
+                span: route_span,
+            })
+        };
+        let route = Route {
+            from_node: get("@fromNode"),
+            from_field: get("@fromField"),
+            to_node: get("@toNode"),
+            to_field: get("@toField"),
+            span: route_span,
+            scope: Scope::Scene,
+        };
+        self.builder.add_route(route);
+    }
+
+    fn proto_declare(&mut self, key: usize, value: usize, external: bool) {
+        let t = self.t;
+        let proto_span = self.member_span(key, value);
+        if t.kind(value) != Kind::Object {
+            let found = value::describe(t, value);
+            let name = t.str(key);
+            self.syntax(t.full_span(value), format!("`{name}` takes an object, found {found}"));
+            return;
+        }
+        self.duplicate_keys(value, |_| true);
+        let name = self.named(value, "@name").unwrap_or(Named {
+            text: String::new(),
+            span: proto_span,
+        });
+        let url = t
+            .get(value, "@url")
+            .and_then(|(_, v)| value::convert(t, v, FieldType::MFString).ok())
+            .and_then(|v| match v {
+                Value::Strings(s) => Some(s),
+                _ => None,
+            })
+            .unwrap_or_default();
+        let proto = self.builder.declare_proto(ProtoDecl {
+            name,
+            span: proto_span,
+            external,
+            interface: Vec::new(),
+            body: Vec::new(),
+            url,
+        });
+        self.push(Task::Proto { proto, external }, value);
+    }
+
+    fn proto_member(&mut self, proto: usize, external: bool, key: usize, value: usize) {
+        let t = self.t;
+        let name = t.str(key);
+        match (name.as_ref(), external) {
+            ("ProtoInterface", false) if t.kind(value) == Kind::Object => {
+                self.duplicate_keys(value, |_| true);
+                self.push(Task::ProtoInterface { proto }, value);
+            }
+            ("ProtoBody", false) if t.kind(value) == Kind::Object => {
+                self.duplicate_keys(value, |_| true);
+                self.builder.begin_proto_body(proto);
+                self.push(Task::ProtoBody, value);
+            }
+            ("field", true) => self.push_decls(DeclOwner::Proto(proto), key, value),
+            _ => {}
+        }
+    }
+
+    fn push_decls(&mut self, owner: DeclOwner, key: usize, value: usize) {
+        match self.t.kind(value) {
+            Kind::Array => self.push(Task::Decls(owner), value),
+            _ => {
+                let found = value::describe(self.t, value);
+                let name = self.t.str(key);
+                self.syntax(
+                    self.t.full_span(value),
+                    format!("`{name}` takes an array of field declarations, found {found}"),
+                );
+            }
+        }
+    }
+
+    // ----- nodes -----
+
+    /// A node: `key` names its type, `value` holds its fields.
+    fn node(&mut self, ctx: &Ctx<'s>, key: usize, value: usize) {
+        let t = self.t;
+        let name = t.str(key);
+        let name_span = span(t.span(key));
+        let node_span = self.member_span(key, value);
+        if t.kind(value) != Kind::Object {
+            let found = value::describe(t, value);
+            self.syntax(
+                t.full_span(value),
+                format!("`{name}` takes an object of its fields (`{{}}` for none), found {found}"),
+            );
+            return;
+        }
+        self.duplicate_keys(value, |k| !k.starts_with('@') || is_node_statement_key(k));
+        let is_proto_instance = name == "ProtoInstance";
+        let kind = if is_proto_instance {
+            let proto_name = t
+                .get(value, "@name")
+                .filter(|&(_, v)| t.kind(v) == Kind::String)
+                .map(|(_, v)| t.str(v).into_owned())
+                .unwrap_or_default();
+            NodeKind::ProtoInstance {
+                proto: self.builder.find_proto(&proto_name),
+                name: proto_name,
+            }
+        } else {
+            self.builder.node_kind(&name)
+        };
+
+        if let Some((use_key, use_value)) = t.get(value, "@USE") {
+            let Some(use_name) = self.string_member(use_key, use_value) else {
+                return;
+            };
+            for (k, v) in t.members(value) {
+                if k == use_key {
+                    continue;
+                }
+                let member = t.str(k);
+                let allowed = matches!(member.as_ref(), "@containerField" | "@class" | "@id" | "@style")
+                    || member.starts_with('#')
+                    || (member == "-children" && !self.holds_nodes(v));
+                if !allowed {
+                    self.report(Diagnostic::new(
+                        &USE_WITH_FIELDS,
+                        span(t.span(k)),
+                        format!("USE `{}` also sets `{member}`: a USE takes no fields", use_name.text),
+                    ));
+                }
+            }
+            let element_type = (!is_proto_instance).then_some(name.as_ref());
+            self.builder.use_node(&use_name, element_type, node_span, ctx.parent());
+            return;
+        }
+
+        let id = self.builder.begin_node(kind, name_span, ctx.parent());
+        let mut defined = false;
+        for (k, v) in t.members(value) {
+            let member = t.str(k);
+            match member.as_ref() {
+                "@DEF" => {
+                    if !defined {
+                        defined = true;
+                        if let Some(def) = self.string_member(k, v) {
+                            self.builder.define(id, def);
+                        }
+                    }
+                }
+                "@containerField" | "@class" | "@id" | "@style" => {}
+                "@name" if is_proto_instance => {
+                    self.string_member(k, v);
+                }
+                m if m.starts_with('@') => self.field_member(id, k, v, &m[1..]),
+                _ => {}
+            }
+        }
+        self.stack.push(Frame {
+            task: Task::Node { id, span: node_span },
+            cursor: value + 1,
+            end: t.next(value),
+        });
+    }
+
+    /// Whether a `-children` value holds anything but comments.
+    fn holds_nodes(&self, value: usize) -> bool {
+        let t = self.t;
+        let object_has_nodes = |o: usize| t.members(o).any(|(k, _)| !t.str(k).starts_with('#'));
+        match t.kind(value) {
+            Kind::Array => t
+                .elements(value)
+                .any(|e| t.kind(e) != Kind::Object || object_has_nodes(e)),
+            Kind::Object => object_has_nodes(value),
+            _ => true,
+        }
+    }
+
+    /// A node object's member other than its `@` fields, in document order.
+    fn node_member(&mut self, id: NodeId, key: usize, value: usize) {
+        let t = self.t;
+        let member = t.str(key);
+        match member.as_ref() {
+            m if m.starts_with('@') => {}
+            m if m.starts_with('-') && m.len() > 1 => {
+                let field = match &member {
+                    Cow::Borrowed(b) => Cow::Borrowed(&b[1..]),
+                    Cow::Owned(o) => Cow::Owned(o[1..].to_string()),
+                };
+                let ctx = Ctx::Field {
+                    node: id,
+                    field,
+                    field_span: span(t.span(key)),
+                    origin: Origin::Member,
+                };
+                let what = format!("`{m}`");
+                self.push_nodes(ctx, value, &what);
+            }
+            "field" => self.push_decls(DeclOwner::Node(id), key, value),
+            "fieldValue" => match t.kind(value) {
+                Kind::Array => self.push(Task::FieldValues(id), value),
+                _ => {
+                    let found = value::describe(t, value);
+                    self.syntax(t.full_span(value), format!("`fieldValue` takes an array, found {found}"));
+                }
+            },
+            "IS" => self.is(id, value),
+            // `#sourceText` is an older exporter's name for it.
+            "#sourceCode" | "#sourceText" => {
+                let is_text = match t.kind(value) {
+                    Kind::String => true,
+                    Kind::Array => t.elements(value).all(|e| t.kind(e) == Kind::String),
+                    _ => false,
+                };
+                if is_text {
+                    let code = span(t.full_span(value));
+                    self.builder.doc_mut().nodes[id.index()].source_code = Some(code);
+                } else {
+                    let found = value::describe(t, value);
+                    self.syntax(
+                        t.full_span(value),
+                        format!("`{member}` takes a string or an array of strings, found {found}"),
+                    );
+                }
+            }
+            m if m.starts_with('#') => {}
+            m => {
+                let help = format!("`@{m}` for a value, `-{m}` for nodes");
+                self.report(
+                    Diagnostic::new(
+                        &FIELD_VALUE_SYNTAX,
+                        span(t.span(key)),
+                        format!("`{m}` is not a member a node can have: field names start with `@` (values) or `-` (nodes)"),
+                    )
+                    .help(help),
+                );
+            }
+        }
+    }
+
+    /// An `@name` member of a node: a field value.
+    fn field_member(&mut self, id: NodeId, key: usize, value: usize, name: &str) {
+        let field = self.builder.field_ref(id, name);
+        let label = format!("`@{name}`");
+        let parsed = match &field {
+            FieldRef::Schema { def, .. } => self.convert(def.ty, value, &label, Some(name)),
+            FieldRef::Declared { ty: Some(ty), .. } => self.convert(*ty, value, &label, Some(name)),
+            _ => Value::Unparsed(self.t.raw_full(value).to_string()),
+        };
+        let entry = FieldEntry {
+            field,
+            name_span: span(self.t.span(key)),
+            span: self.value_span(value),
+            origin: Origin::Member,
+            value: parsed,
+        };
+        self.builder.add_field(id, entry);
+    }
+
+    /// Converts a value, reporting a syntax error at its place (then it is kept unparsed).
+    /// `node_field` names the `-name` form for node-typed fields.
+    fn convert(&mut self, ty: FieldType, value: usize, label: &str, node_field: Option<&str>) -> Value {
+        let t = self.t;
+        if ty.scalar() == Scalar::Node {
+            let hint = match node_field {
+                Some(name) => format!("give its nodes as `-{name}`"),
+                None => "give its nodes in `-children`".to_string(),
+            };
+            self.syntax(t.full_span(value), format!("{label} is an {ty} field: {hint}, not as a value"));
+            return Value::Unparsed(t.raw_full(value).to_string());
+        }
+        match value::convert(t, value, ty) {
+            Ok(parsed) => parsed,
+            Err(error) => {
+                let mut diagnostic =
+                    Diagnostic::new(&FIELD_VALUE_SYNTAX, span(error.span), format!("{label}: {}", error.message))
+                        .value(truncate(t.raw_full(value), 80))
+                        .help_opt(error.help);
+                if let Some(index) = error.index {
+                    diagnostic = diagnostic.index(index);
+                }
+                self.report(diagnostic);
+                Value::Unparsed(t.raw_full(value).to_string())
+            }
+        }
+    }
+
+    /// A `field` declaration (ProtoInterface, ExternProtoDeclare, Script, shaders).
+    fn field_decl(&mut self, owner: DeclOwner, object: usize) {
+        let t = self.t;
+        if t.kind(object) != Kind::Object {
+            let found = value::describe(t, object);
+            self.syntax(t.full_span(object), format!("a `field` declaration is an object, found {found}"));
+            return;
+        }
+        self.duplicate_keys(object, |_| true);
+        let decl_span = span(t.full_span(object));
+        let name = self.named(object, "@name").unwrap_or(Named {
+            text: String::new(),
+            span: decl_span,
+        });
+        let mut ty = None;
+        if let Some((key, value)) = t.get(object, "@type") {
+            if let Some(text) = self.string_member(key, value) {
+                ty = FieldType::parse(text.text.trim());
+                if ty.is_none() {
+                    self.syntax(t.span(value), format!("`{}` is not an X3D field type", text.text));
+                }
+            }
+        }
+        let access = t
+            .get(object, "@accessType")
+            .filter(|&(_, v)| t.kind(v) == Kind::String)
+            .and_then(|(_, v)| AccessType::parse(t.str(v).trim()));
+        let value = t.get(object, "@value").map(|(_, v)| {
+            let parsed = match ty {
+                Some(ty) => self.convert(ty, v, &format!("`@value` of field `{}`", name.text), None),
+                None => Value::Unparsed(t.raw_full(v).to_string()),
+            };
+            (parsed, self.value_span(v))
+        });
+        let field = name.text.clone();
+        let decl = FieldDecl {
+            name,
+            ty,
+            access,
+            span: decl_span,
+            value,
+        };
+        match owner {
+            DeclOwner::Node(node) => self.builder.doc_mut().nodes[node.index()].declared.push(decl),
+            DeclOwner::Proto(proto) => self.builder.doc_mut().protos[proto].interface.push(decl),
+        }
+        if let Some((key, children)) = t.get(object, "-children") {
+            let ctx = match owner {
+                DeclOwner::Node(node) => Ctx::Field {
+                    node,
+                    field: Cow::Owned(field),
+                    field_span: span(t.span(key)),
+                    origin: Origin::Member,
+                },
+                DeclOwner::Proto(proto) => Ctx::ProtoField {
+                    proto,
+                    field: Cow::Owned(field),
+                },
+            };
+            self.push_nodes(ctx, children, "`-children`");
+        }
+    }
+
+    /// A ProtoInstance's `fieldValue`: typed by the ProtoDeclare when it is known.
+    fn field_value(&mut self, node: NodeId, object: usize) {
+        let t = self.t;
+        if t.kind(object) != Kind::Object {
+            let found = value::describe(t, object);
+            self.syntax(t.full_span(object), format!("a `fieldValue` is an object, found {found}"));
+            return;
+        }
+        self.duplicate_keys(object, |_| true);
+        let Some(name) = self.named(object, "@name") else {
+            return;
+        };
+        if let Some((_, value)) = t.get(object, "@value") {
+            let field = self.builder.field_ref(node, &name.text);
+            let parsed = match &field {
+                FieldRef::Declared { ty: Some(ty), .. } => {
+                    self.convert(*ty, value, &format!("`@value` of fieldValue `{}`", name.text), None)
+                }
+                _ => Value::Unparsed(t.raw_full(value).to_string()),
+            };
+            let entry = FieldEntry {
+                field,
+                name_span: name.span,
+                span: self.value_span(value),
+                origin: Origin::FieldValue,
+                value: parsed,
+            };
+            self.builder.add_field(node, entry);
+        }
+        if let Some((_, children)) = t.get(object, "-children") {
+            let ctx = Ctx::Field {
+                node,
+                field: Cow::Owned(name.text),
+                field_span: name.span,
+                origin: Origin::FieldValue,
+            };
+            self.push_nodes(ctx, children, "`-children`");
+        }
+    }
+
+    /// `"IS": { "connect": [ { "@nodeField", "@protoField" }, … ] }`.
+    fn is(&mut self, node: NodeId, object: usize) {
+        let t = self.t;
+        if t.kind(object) != Kind::Object {
+            let found = value::describe(t, object);
+            self.syntax(t.full_span(object), format!("`IS` takes an object with a `connect` array, found {found}"));
+            return;
+        }
+        self.duplicate_keys(object, |_| true);
+        // A repeated `connect` key is reported above; both are read.
+        for (key, value) in t.members(object) {
+            if !t.key_is(key, "connect") {
+                continue;
+            }
+            let connects: Vec<usize> = match t.kind(value) {
+                Kind::Array => t.elements(value).collect(),
+                Kind::Object => vec![value],
+                _ => {
+                    let found = value::describe(t, value);
+                    self.syntax(t.full_span(value), format!("`connect` takes an array, found {found}"));
+                    continue;
+                }
+            };
+            for connect in connects {
+                let connect_span = span(t.full_span(connect));
+                if t.kind(connect) != Kind::Object {
+                    let found = value::describe(t, connect);
+                    self.syntax(t.full_span(connect), format!("a `connect` is an object, found {found}"));
+                    continue;
+                }
+                self.duplicate_keys(connect, |_| true);
+                let mut get = |name: &str| {
+                    self.named(connect, name).unwrap_or(Named {
+                        text: String::new(),
+                        span: connect_span,
+                    })
+                };
+                let connect = IsConnect {
+                    node_field: get("@nodeField"),
+                    proto_field: get("@protoField"),
+                    span: connect_span,
+                };
+                self.builder.doc_mut().nodes[node.index()].connects.push(connect);
+            }
+        }
+    }
+}
+
+fn truncate(text: &str, max: usize) -> String {
+    match text.char_indices().nth(max) {
+        Some((cut, _)) => format!("{}…", &text[..cut]),
+        None => text.to_string(),
+    }
+}

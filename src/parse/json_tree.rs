@@ -1,0 +1,897 @@
+//! A strict (RFC 8259) single-pass JSON scanner that keeps positions.
+//!
+//! `serde_json::Value` forgets where things were; the checker must point at the key or
+//! value at fault. [`parse`] reads the text once, left to right, with an explicit stack
+//! (no recursion, so deep input cannot overflow the thread's stack; nesting deeper than
+//! [`MAX_DEPTH`] is an error) into a flat, pre-order [`Tree`] of [`Item`]s: every value
+//! and every object key with its byte span. Strings and numbers are not converted here:
+//! a string borrows the input unless it has escapes, and a number is read from its text
+//! by whoever knows its type (so an SFFloat is rounded once, straight to `f32`).
+//!
+//! Duplicate keys are not an error in the grammar: both members stay in the tree, in
+//! document order, for the reader to report.
+
+use std::borrow::Cow;
+
+/// Nesting deeper than this (arrays and objects) is refused.
+pub const MAX_DEPTH: usize = 10_000;
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum Kind {
+    Null,
+    True,
+    False,
+    Number,
+    String,
+    Array,
+    Object,
+    /// An object member's key; the member's value is the next item.
+    Key,
+}
+
+/// The string had at least one backslash escape.
+pub const ESCAPED: u8 = 1;
+/// The number has a fraction or an exponent.
+pub const NOT_INTEGER: u8 = 2;
+
+/// One value or key. Strings and keys span their content without the quotes; numbers
+/// and literals their token; arrays and objects everything from the bracket to its mate.
+#[derive(Copy, Clone, Debug)]
+pub struct Item {
+    pub kind: Kind,
+    pub flags: u8,
+    pub start: u32,
+    pub end: u32,
+    /// The index just past this item's subtree: its next sibling, for a value in an array
+    /// or an object member's key. For a key, the item after its value's subtree.
+    pub next: u32,
+    /// Elements of an array, members of an object.
+    pub len: u32,
+}
+
+/// The scanned document: items in pre-order. An object is followed by, for each member,
+/// its key and then its value's subtree; an array by its elements' subtrees.
+pub struct Tree<'s> {
+    pub src: &'s str,
+    pub items: Vec<Item>,
+}
+
+/// A syntax error at a byte offset.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Error {
+    pub at: usize,
+    /// Bytes the error covers (0 at the end of the input).
+    pub len: usize,
+    pub message: String,
+}
+
+impl<'s> Tree<'s> {
+    pub fn item(&self, i: usize) -> &Item {
+        &self.items[i]
+    }
+
+    pub fn kind(&self, i: usize) -> Kind {
+        self.items[i].kind
+    }
+
+    /// The index past item `i`'s subtree.
+    pub fn next(&self, i: usize) -> usize {
+        self.items[i].next as usize
+    }
+
+    /// The item's span: for strings and keys, the content without the quotes.
+    pub fn span(&self, i: usize) -> (usize, usize) {
+        let it = &self.items[i];
+        (it.start as usize, it.end as usize)
+    }
+
+    /// The item's whole token: strings and keys with their quotes.
+    pub fn full_span(&self, i: usize) -> (usize, usize) {
+        let it = &self.items[i];
+        match it.kind {
+            Kind::String | Kind::Key => (it.start as usize - 1, it.end as usize + 1),
+            _ => (it.start as usize, it.end as usize),
+        }
+    }
+
+    /// The item's text as written (for strings and keys: between the quotes, escapes kept).
+    pub fn raw(&self, i: usize) -> &'s str {
+        let (s, e) = self.span(i);
+        &self.src[s..e]
+    }
+
+    /// The whole token's text as written, quotes included: the JSON text of the value.
+    pub fn raw_full(&self, i: usize) -> &'s str {
+        let (s, e) = self.full_span(i);
+        &self.src[s..e]
+    }
+
+    /// A string's or key's text, unescaped. Borrowed when it has no escapes.
+    pub fn str(&self, i: usize) -> Cow<'s, str> {
+        let it = &self.items[i];
+        let raw = self.raw(i);
+        if it.flags & ESCAPED == 0 {
+            Cow::Borrowed(raw)
+        } else {
+            // The scanner checked the escapes (surrogates paired), so this cannot fail;
+            // keep the raw text if it ever did.
+            let quoted = self.raw_full(i);
+            Cow::Owned(serde_json::from_str::<String>(quoted).unwrap_or_else(|_| raw.to_string()))
+        }
+    }
+
+    /// The members of object `i` as (key, value) index pairs, in document order.
+    pub fn members(&self, i: usize) -> Members<'_, 's> {
+        debug_assert_eq!(self.items[i].kind, Kind::Object);
+        Members {
+            tree: self,
+            cursor: i + 1,
+            end: self.next(i),
+        }
+    }
+
+    /// The elements of array `i`, in order.
+    pub fn elements(&self, i: usize) -> Elements<'_, 's> {
+        debug_assert_eq!(self.items[i].kind, Kind::Array);
+        Elements {
+            tree: self,
+            cursor: i + 1,
+            end: self.next(i),
+        }
+    }
+
+    /// The value of the first member of object `i` whose key is `key` (keys compared as
+    /// written: X3D keys have no escapes).
+    pub fn get(&self, i: usize, key: &str) -> Option<(usize, usize)> {
+        self.members(i).find(|&(k, _)| self.key_is(k, key))
+    }
+
+    /// Whether key (or string) `k` is `text`.
+    pub fn key_is(&self, k: usize, text: &str) -> bool {
+        if self.items[k].flags & ESCAPED == 0 {
+            self.raw(k) == text
+        } else {
+            self.str(k) == text
+        }
+    }
+}
+
+pub struct Members<'t, 's> {
+    tree: &'t Tree<'s>,
+    cursor: usize,
+    end: usize,
+}
+
+impl Iterator for Members<'_, '_> {
+    type Item = (usize, usize);
+
+    fn next(&mut self) -> Option<(usize, usize)> {
+        if self.cursor >= self.end {
+            return None;
+        }
+        let key = self.cursor;
+        let value = key + 1;
+        self.cursor = self.tree.next(value);
+        Some((key, value))
+    }
+}
+
+pub struct Elements<'t, 's> {
+    tree: &'t Tree<'s>,
+    cursor: usize,
+    end: usize,
+}
+
+impl Iterator for Elements<'_, '_> {
+    type Item = usize;
+
+    fn next(&mut self) -> Option<usize> {
+        if self.cursor >= self.end {
+            return None;
+        }
+        let i = self.cursor;
+        self.cursor = self.tree.next(i);
+        Some(i)
+    }
+}
+
+/// What the scanner expects next.
+#[derive(Copy, Clone, PartialEq, Eq)]
+enum State {
+    /// A value (at the top, after `[`, `,` in an array or `:`).
+    Value,
+    /// The first key of an object or its `}` (after `{`).
+    FirstKey,
+    /// A key (after `,` in an object).
+    Key,
+    /// `,` or the closing bracket of the innermost container, or the end at the top.
+    AfterValue,
+}
+
+/// Reads `src` as one JSON text. A leading UTF-8 byte order mark is skipped.
+pub fn parse(src: &str) -> Result<Tree<'_>, Error> {
+    let mut scanner = Scanner {
+        s: src.as_bytes(),
+        src,
+        i: 0,
+        items: Vec::with_capacity(src.len() / 6 + 16),
+        stack: Vec::new(),
+    };
+    if scanner.s.starts_with(b"\xEF\xBB\xBF") {
+        scanner.i = 3;
+    }
+    scanner.run()?;
+    Ok(Tree {
+        src,
+        items: scanner.items,
+    })
+}
+
+struct Scanner<'s> {
+    s: &'s [u8],
+    src: &'s str,
+    i: usize,
+    items: Vec<Item>,
+    /// Open containers, innermost last.
+    stack: Vec<u32>,
+}
+
+impl<'s> Scanner<'s> {
+    fn run(&mut self) -> Result<(), Error> {
+        let mut state = State::Value;
+        loop {
+            self.skip_ws();
+            match state {
+                State::Value => {
+                    let Some(&b) = self.s.get(self.i) else {
+                        return Err(self.eof_error());
+                    };
+                    self.count_in_parent(true);
+                    state = match b {
+                        b'{' => {
+                            self.open(Kind::Object)?;
+                            State::FirstKey
+                        }
+                        b'[' => {
+                            self.open(Kind::Array)?;
+                            self.skip_ws();
+                            if self.s.get(self.i) == Some(&b']') {
+                                self.i += 1;
+                                self.close();
+                            } else {
+                                // Stay expecting a value; an empty array was handled above.
+                                continue;
+                            }
+                            State::AfterValue
+                        }
+                        b'"' => {
+                            self.string(Kind::String)?;
+                            State::AfterValue
+                        }
+                        b'-' | b'0'..=b'9' => {
+                            self.number()?;
+                            State::AfterValue
+                        }
+                        b't' => {
+                            self.literal(b"true", Kind::True)?;
+                            State::AfterValue
+                        }
+                        b'f' => {
+                            self.literal(b"false", Kind::False)?;
+                            State::AfterValue
+                        }
+                        b'n' => {
+                            self.literal(b"null", Kind::Null)?;
+                            State::AfterValue
+                        }
+                        _ => return Err(self.unexpected_value()),
+                    };
+                }
+                State::FirstKey | State::Key => {
+                    let Some(&b) = self.s.get(self.i) else {
+                        return Err(self.eof_error());
+                    };
+                    match b {
+                        b'}' if state == State::FirstKey => {
+                            self.i += 1;
+                            self.close();
+                            state = State::AfterValue;
+                        }
+                        b'}' => return Err(self.error_here("a trailing comma before `}` is not allowed in JSON")),
+                        b'"' => {
+                            self.count_in_parent(false);
+                            self.string(Kind::Key)?;
+                            self.skip_ws();
+                            match self.s.get(self.i) {
+                                Some(b':') => self.i += 1,
+                                Some(_) => return Err(self.error_here("expected `:` after the object key")),
+                                None => return Err(self.eof_error()),
+                            }
+                            state = State::Value;
+                        }
+                        b'\'' => return Err(self.error_here("an object key must be in double quotes, not single quotes")),
+                        _ => return Err(self.error_here("expected a string in double quotes as the object key")),
+                    }
+                }
+                State::AfterValue => {
+                    let Some(&top) = self.stack.last() else {
+                        // The top-level value is complete: only whitespace may follow.
+                        if self.i < self.s.len() {
+                            return Err(self.error_here("unexpected text after the end of the JSON value"));
+                        }
+                        return Ok(());
+                    };
+                    let in_object = self.items[top as usize].kind == Kind::Object;
+                    let Some(&b) = self.s.get(self.i) else {
+                        return Err(self.eof_error());
+                    };
+                    match (b, in_object) {
+                        (b',', true) => {
+                            self.i += 1;
+                            state = State::Key;
+                        }
+                        (b',', false) => {
+                            self.i += 1;
+                            self.skip_ws();
+                            if self.s.get(self.i) == Some(&b']') {
+                                return Err(self.error_here("a trailing comma before `]` is not allowed in JSON"));
+                            }
+                            state = State::Value;
+                        }
+                        (b'}', true) | (b']', false) => {
+                            self.i += 1;
+                            self.close();
+                        }
+                        (b'}' | b']', _) => {
+                            let open = if in_object { "an object (`{`)" } else { "an array (`[`)" };
+                            let at = self.items[top as usize].start as usize;
+                            let (line, column) = line_column(self.src, at);
+                            return Err(self.error_here(&format!(
+                                "`{}` does not close {open} opened at line {line}, column {column}",
+                                b as char
+                            )));
+                        }
+                        (b'"', true) => return Err(self.error_here("expected `,` or `}` between object members")),
+                        (_, true) => return Err(self.error_here("expected `,` or `}` after the object member")),
+                        (_, false) => return Err(self.error_here("expected `,` or `]` after the array element")),
+                    }
+                }
+            }
+        }
+    }
+
+    #[inline(always)]
+    fn skip_ws(&mut self) {
+        while let Some(&b) = self.s.get(self.i) {
+            if matches!(b, b' ' | b'\n' | b'\r' | b'\t') {
+                self.i += 1;
+            } else {
+                break;
+            }
+        }
+    }
+
+    /// Counts one more element (`array`) or member (`!array`) in the innermost container
+    /// when it is of that kind. A member is counted at its key, not again at its value.
+    #[inline(always)]
+    fn count_in_parent(&mut self, array: bool) {
+        if let Some(&top) = self.stack.last() {
+            let item = &mut self.items[top as usize];
+            if (item.kind == Kind::Array) == array {
+                item.len += 1;
+            }
+        }
+    }
+
+    fn push(&mut self, kind: Kind, flags: u8, start: usize, end: usize) {
+        let index = self.items.len() as u32;
+        self.items.push(Item {
+            kind,
+            flags,
+            start: start as u32,
+            end: end as u32,
+            next: index + 1,
+            len: 0,
+        });
+        self.after_value_pushed(index);
+    }
+
+    /// Gives a member's key its `next` once its value is complete (leaf values: now;
+    /// containers: when they close).
+    fn after_value_pushed(&mut self, value: u32) {
+        if let Some(k) = value.checked_sub(1) {
+            let key = &mut self.items[k as usize];
+            if key.kind == Kind::Key && key.next == 0 {
+                let next = self.items[value as usize].next;
+                self.items[k as usize].next = next;
+            }
+        }
+    }
+
+    fn open(&mut self, kind: Kind) -> Result<(), Error> {
+        if self.stack.len() >= MAX_DEPTH {
+            return Err(Error {
+                at: self.i,
+                len: 1,
+                message: format!("nested too deeply: more than {MAX_DEPTH} levels of arrays and objects"),
+            });
+        }
+        let index = self.items.len() as u32;
+        self.items.push(Item {
+            kind,
+            flags: 0,
+            start: self.i as u32,
+            end: 0,
+            next: 0,
+            len: 0,
+        });
+        self.stack.push(index);
+        self.i += 1;
+        Ok(())
+    }
+
+    fn close(&mut self) {
+        let index = self.stack.pop().expect("close with an open container") as usize;
+        let next = self.items.len() as u32;
+        let item = &mut self.items[index];
+        item.end = self.i as u32;
+        item.next = next;
+        self.after_value_pushed(index as u32);
+    }
+
+    /// A string or key starting at the `"` under the cursor.
+    fn string(&mut self, kind: Kind) -> Result<(), Error> {
+        let open = self.i;
+        let s = self.s;
+        let mut i = open + 1;
+        let mut flags = 0;
+        loop {
+            // Fast scan over plain bytes.
+            while i < s.len() && !matches!(s[i], b'"' | b'\\' | 0..=0x1f) {
+                i += 1;
+            }
+            let Some(&b) = s.get(i) else {
+                return Err(Error {
+                    at: open,
+                    len: 1,
+                    message: "unterminated string: no closing `\"`".to_string(),
+                });
+            };
+            match b {
+                b'"' => break,
+                b'\\' => {
+                    flags |= ESCAPED;
+                    i = self.escape(i)?;
+                }
+                _ => {
+                    let what = match b {
+                        b'\n' => "a line break".to_string(),
+                        b'\t' => "a tab".to_string(),
+                        b'\r' => "a carriage return".to_string(),
+                        _ => format!("the control character U+{b:04X}"),
+                    };
+                    let escape = match b {
+                        b'\n' => "\\n".to_string(),
+                        b'\t' => "\\t".to_string(),
+                        b'\r' => "\\r".to_string(),
+                        _ => format!("\\u{b:04x}"),
+                    };
+                    return Err(Error {
+                        at: i,
+                        len: 1,
+                        message: format!("{what} inside a string: write it as `{escape}`"),
+                    });
+                }
+            }
+        }
+        self.i = i + 1;
+        let index = self.items.len() as u32;
+        self.items.push(Item {
+            kind,
+            flags,
+            start: (open + 1) as u32,
+            end: i as u32,
+            // A key's `next` is set once its value is complete.
+            next: if kind == Kind::Key { 0 } else { index + 1 },
+            len: 0,
+        });
+        if kind != Kind::Key {
+            self.after_value_pushed(index);
+        }
+        Ok(())
+    }
+
+    /// Checks the escape at the backslash `at`; returns the offset after it.
+    fn escape(&self, at: usize) -> Result<usize, Error> {
+        let s = self.s;
+        match s.get(at + 1) {
+            Some(b'"' | b'\\' | b'/' | b'b' | b'f' | b'n' | b'r' | b't') => Ok(at + 2),
+            Some(b'u') => {
+                let unit = self.hex4(at)?;
+                if (0xDC00..0xE000).contains(&unit) {
+                    return Err(Error {
+                        at,
+                        len: 6,
+                        message: format!("`\\u{unit:04X}` is a lone low surrogate: it must follow a high surrogate (\\uD800–\\uDBFF)"),
+                    });
+                }
+                if (0xD800..0xDC00).contains(&unit) {
+                    let next = at + 6;
+                    let low = if s.get(next) == Some(&b'\\') && s.get(next + 1) == Some(&b'u') {
+                        Some(self.hex4(next)?)
+                    } else {
+                        None
+                    };
+                    return match low {
+                        Some(low) if (0xDC00..0xE000).contains(&low) => Ok(next + 6),
+                        _ => Err(Error {
+                            at,
+                            len: 6,
+                            message: format!(
+                                "`\\u{unit:04X}` is a lone high surrogate: it must be followed by a low surrogate (\\uDC00–\\uDFFF)"
+                            ),
+                        }),
+                    };
+                }
+                Ok(at + 6)
+            }
+            Some(_) => {
+                let ch = self.src[at + 1..].chars().next().unwrap_or('?');
+                Err(Error {
+                    at,
+                    len: 1 + ch.len_utf8(),
+                    message: format!(
+                        "`\\{ch}` is not a JSON escape (use \\\" \\\\ \\/ \\b \\f \\n \\r \\t or \\uXXXX)"
+                    ),
+                })
+            }
+            None => Err(Error {
+                at,
+                len: 1,
+                message: "unterminated string: no closing `\"`".to_string(),
+            }),
+        }
+    }
+
+    /// The four hex digits of the `\u` escape at the backslash `at`.
+    fn hex4(&self, at: usize) -> Result<u32, Error> {
+        let digits = self.s.get(at + 2..at + 6).filter(|d| d.iter().all(u8::is_ascii_hexdigit));
+        match digits {
+            Some(d) => Ok(d.iter().fold(0, |acc, &b| acc * 16 + (b as char).to_digit(16).unwrap_or(0))),
+            None => Err(Error {
+                at,
+                len: 2,
+                message: "`\\u` must be followed by four hexadecimal digits".to_string(),
+            }),
+        }
+    }
+
+    /// `-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?` starting at the cursor.
+    fn number(&mut self) -> Result<(), Error> {
+        let s = self.s;
+        let start = self.i;
+        let mut i = start;
+        let mut flags = 0;
+        if s[i] == b'-' {
+            i += 1;
+        }
+        let int_start = i;
+        match s.get(i) {
+            Some(b'0') => {
+                i += 1;
+                if s.get(i).is_some_and(u8::is_ascii_digit) {
+                    return Err(self.bad_number(start, "a number may not have leading zeros"));
+                }
+            }
+            Some(b'1'..=b'9') => {
+                while s.get(i).is_some_and(u8::is_ascii_digit) {
+                    i += 1;
+                }
+            }
+            _ => {
+                let message = if s[int_start..].starts_with(b"Infinity") {
+                    "infinity is not a JSON number"
+                } else {
+                    "`-` must be followed by a digit"
+                };
+                return Err(self.bad_number(start, message));
+            }
+        }
+        if s.get(i) == Some(&b'.') {
+            i += 1;
+            flags |= NOT_INTEGER;
+            if !s.get(i).is_some_and(u8::is_ascii_digit) {
+                return Err(self.bad_number(start, "a decimal point must be followed by a digit"));
+            }
+            while s.get(i).is_some_and(u8::is_ascii_digit) {
+                i += 1;
+            }
+        }
+        if matches!(s.get(i), Some(b'e' | b'E')) {
+            i += 1;
+            flags |= NOT_INTEGER;
+            if matches!(s.get(i), Some(b'+' | b'-')) {
+                i += 1;
+            }
+            if !s.get(i).is_some_and(u8::is_ascii_digit) {
+                return Err(self.bad_number(start, "an exponent must have digits"));
+            }
+            while s.get(i).is_some_and(u8::is_ascii_digit) {
+                i += 1;
+            }
+        }
+        // A number glued to letters or more digits (`1.2.3`, `0x1F`, `1f`) is one bad token.
+        if s.get(i).is_some_and(|b| b.is_ascii_alphanumeric() || *b == b'.') {
+            return Err(self.bad_number(start, "not a valid JSON number"));
+        }
+        self.i = i;
+        self.push(Kind::Number, flags, start, i);
+        Ok(())
+    }
+
+    #[cold]
+    fn bad_number(&self, start: usize, why: &str) -> Error {
+        let s = self.s;
+        let mut end = start + 1;
+        while end < s.len() && (s[end].is_ascii_alphanumeric() || matches!(s[end], b'.' | b'+' | b'-')) {
+            end += 1;
+        }
+        Error {
+            at: start,
+            len: end - start,
+            message: format!("`{}`: {why}", &self.src[start..end]),
+        }
+    }
+
+    fn literal(&mut self, word: &'static [u8], kind: Kind) -> Result<(), Error> {
+        let start = self.i;
+        let end = start + word.len();
+        let glued = self.s.get(end).is_some_and(u8::is_ascii_alphanumeric);
+        if self.s.get(start..end) != Some(word) || glued {
+            return Err(self.unexpected_value());
+        }
+        self.i = end;
+        self.push(kind, 0, start, end);
+        Ok(())
+    }
+
+    #[cold]
+    fn unexpected_value(&self) -> Error {
+        let s = self.s;
+        let start = self.i;
+        let b = s[start];
+        let word_end = {
+            let mut e = start;
+            while e < s.len() && (s[e].is_ascii_alphanumeric() || s[e] == b'_') {
+                e += 1;
+            }
+            e
+        };
+        let word = &self.src[start..word_end];
+        let message = match b {
+            b']' | b'}' => {
+                // After `[` or `,` (a trailing comma in an array is caught earlier).
+                format!("expected a value, found `{}`", b as char)
+            }
+            b',' => "expected a value before `,`".to_string(),
+            b'\'' => "strings must be in double quotes, not single quotes".to_string(),
+            b'/' => "comments are not allowed in JSON".to_string(),
+            b'+' => "a number may not start with `+`".to_string(),
+            b'.' => "a number must have a digit before the decimal point".to_string(),
+            _ if matches!(word, "NaN" | "Infinity" | "nan" | "inf" | "infinity") => {
+                format!("`{word}` is not a JSON number")
+            }
+            _ if matches!(word, "True" | "TRUE" | "False" | "FALSE" | "Null" | "NULL" | "None") => {
+                format!("`{word}` is not a JSON literal: write `{}`", word.to_ascii_lowercase().replace("none", "null"))
+            }
+            _ if !word.is_empty() => format!("expected a value, found `{word}`"),
+            _ => {
+                let ch = self.src[start..].chars().next().unwrap_or('?');
+                format!("expected a value, found `{ch}`")
+            }
+        };
+        let len = word_end.saturating_sub(start).max(1);
+        Error { at: start, len, message }
+    }
+
+    #[cold]
+    fn error_here(&self, message: &str) -> Error {
+        let len = self.src[self.i.min(self.src.len())..]
+            .chars()
+            .next()
+            .map_or(0, char::len_utf8);
+        Error {
+            at: self.i,
+            len,
+            message: message.to_string(),
+        }
+    }
+
+    #[cold]
+    fn eof_error(&self) -> Error {
+        let message = match self.stack.last() {
+            None => "the input ends before a JSON value".to_string(),
+            Some(&top) => {
+                let item = &self.items[top as usize];
+                let what = if item.kind == Kind::Object { "an object (`{`)" } else { "an array (`[`)" };
+                let (line, column) = line_column(self.src, item.start as usize);
+                format!("the input ends inside {what} opened at line {line}, column {column}")
+            }
+        };
+        Error {
+            at: self.s.len(),
+            len: 0,
+            message,
+        }
+    }
+}
+
+/// 1-based line and column (in characters) of a byte offset, for messages.
+fn line_column(src: &str, at: usize) -> (usize, usize) {
+    let before = &src.as_bytes()[..at.min(src.len())];
+    let line = before.iter().filter(|&&b| b == b'\n').count() + 1;
+    let line_start = before.iter().rposition(|&b| b == b'\n').map_or(0, |p| p + 1);
+    let column = src[line_start..at.min(src.len())].chars().count() + 1;
+    (line, column)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn kinds(t: &Tree) -> Vec<Kind> {
+        t.items.iter().map(|i| i.kind).collect()
+    }
+
+    fn err(src: &str) -> Error {
+        match parse(src) {
+            Ok(_) => panic!("`{src}` parsed"),
+            Err(e) => e,
+        }
+    }
+
+    #[test]
+    fn spans_of_keys_and_values() {
+        let src = r#"{ "a": [1, -2.5e3, true], "b": {"c": null}, "s": "x\ny" }"#;
+        let src = src.replace("\\n", "\\n");
+        let t = parse(&src).unwrap();
+        assert_eq!(
+            kinds(&t),
+            vec![
+                Kind::Object,
+                Kind::Key,
+                Kind::Array,
+                Kind::Number,
+                Kind::Number,
+                Kind::True,
+                Kind::Key,
+                Kind::Object,
+                Kind::Key,
+                Kind::Null,
+                Kind::Key,
+                Kind::String,
+            ]
+        );
+        assert_eq!(t.item(0).len, 3);
+        assert_eq!(t.item(2).len, 3);
+        assert_eq!(t.full_span(0), (0, src.len()));
+        let members: Vec<_> = t.members(0).map(|(k, v)| (t.str(k).into_owned(), v)).collect();
+        assert_eq!(members, vec![("a".into(), 2), ("b".into(), 7), ("s".into(), 11)]);
+        assert_eq!(t.raw(1), "a");
+        assert_eq!(&src[t.full_span(1).0..t.full_span(1).1], "\"a\"");
+        assert_eq!(t.raw(2), "[1, -2.5e3, true]");
+        assert_eq!(t.raw(4), "-2.5e3");
+        assert_eq!(t.item(4).flags & NOT_INTEGER, NOT_INTEGER);
+        assert_eq!(t.item(3).flags & NOT_INTEGER, 0);
+        assert_eq!(t.elements(2).collect::<Vec<_>>(), vec![3, 4, 5]);
+        assert_eq!(t.raw(7), r#"{"c": null}"#);
+        assert_eq!(t.next(1), 6, "a key's next skips its value");
+        assert_eq!(t.next(7), 10);
+        assert_eq!(t.str(11), "x\ny");
+        assert!(matches!(t.str(1), Cow::Borrowed(_)));
+    }
+
+    #[test]
+    fn escapes_are_unescaped() {
+        let t = parse(r#"["a\"b\\c\/d\b\f\n\r\t", "\u00e9\ud83d\ude00", "plain é"]"#).unwrap();
+        assert_eq!(t.str(1), "a\"b\\c/d\u{8}\u{c}\n\r\t");
+        assert_eq!(t.str(2), "é😀");
+        assert_eq!(t.str(3), "plain é");
+        assert!(t.item(2).flags & ESCAPED != 0);
+        assert!(t.item(3).flags & ESCAPED == 0);
+    }
+
+    #[test]
+    fn duplicate_keys_are_kept() {
+        let t = parse(r#"{"a": 1, "a": 2}"#).unwrap();
+        let values: Vec<_> = t.members(0).map(|(_, v)| t.raw(v)).collect();
+        assert_eq!(values, vec!["1", "2"]);
+        assert_eq!(t.item(0).len, 2);
+    }
+
+    #[test]
+    fn empty_containers_and_nesting() {
+        let t = parse(r#"{"a": [], "b": {}, "c": [[], [{}]]}"#).unwrap();
+        assert_eq!(t.item(0).len, 3);
+        let (_, c) = t.get(0, "c").unwrap();
+        assert_eq!(t.item(c).len, 2);
+        let inner: Vec<_> = t.elements(c).map(|e| t.item(e).len).collect();
+        assert_eq!(inner, vec![0, 1]);
+        assert_eq!(t.next(0), t.items.len());
+        let (_, a) = t.get(0, "a").unwrap();
+        assert_eq!(t.item(a).len, 0);
+        assert_eq!(t.elements(a).count(), 0);
+    }
+
+    #[test]
+    fn scalars_at_the_top() {
+        for (src, kind) in [("1", Kind::Number), ("\"x\"", Kind::String), (" null ", Kind::Null), ("[]", Kind::Array)] {
+            assert_eq!(parse(src).unwrap().kind(0), kind);
+        }
+        assert_eq!(parse("\u{feff}{}").unwrap().span(0), (3, 5));
+    }
+
+    #[test]
+    fn errors_have_positions() {
+        let cases: &[(&str, usize, &str)] = &[
+            ("", 0, "ends before a JSON value"),
+            ("{\"a\": 1,}", 8, "trailing comma before `}`"),
+            ("[1, 2,]", 6, "trailing comma before `]`"),
+            ("{\"a\" 1}", 5, "expected `:`"),
+            ("{\"a\": 1 \"b\": 2}", 8, "expected `,` or `}` between"),
+            ("[1 2]", 3, "expected `,` or `]`"),
+            ("{'a': 1}", 1, "double quotes"),
+            ("[01]", 1, "leading zeros"),
+            ("[1.]", 1, "decimal point"),
+            ("[.5]", 1, "digit before the decimal point"),
+            ("[+1]", 1, "`+`"),
+            ("[1e]", 1, "exponent"),
+            ("[NaN]", 1, "not a JSON number"),
+            ("[-Infinity]", 1, "infinity"),
+            ("[True]", 1, "write `true`"),
+            ("[tru]", 1, "expected a value"),
+            ("[\"a\nb\"]", 3, "line break"),
+            ("[\"a\\qb\"]", 3, "not a JSON escape"),
+            ("[\"\\ud800\"]", 2, "lone high surrogate"),
+            ("[\"\\udc00\"]", 2, "lone low surrogate"),
+            ("[\"\\u12\"]", 2, "four hexadecimal"),
+            ("[\"abc", 1, "unterminated string"),
+            ("{\"a\": [1, 2}", 11, "does not close an array"),
+            ("{\"a\": 1", 7, "ends inside an object (`{`) opened at line 1, column 1"),
+            ("{} x", 3, "after the end"),
+            ("{} {}", 3, "after the end"),
+            ("[1, // c\n 2]", 4, "comments"),
+            ("{,}", 1, "object key"),
+            ("[,1]", 1, "before `,`"),
+        ];
+        for &(src, at, needle) in cases {
+            let e = err(src);
+            assert_eq!(e.at, at, "position for {src:?}: {e:?}");
+            assert!(e.message.contains(needle), "message for {src:?}: {:?}", e.message);
+        }
+    }
+
+    #[test]
+    fn depth_is_capped_without_recursion() {
+        let deep = "[".repeat(MAX_DEPTH) + &"]".repeat(MAX_DEPTH);
+        assert!(parse(&deep).is_ok());
+        let too_deep = "[".repeat(MAX_DEPTH + 1) + &"]".repeat(MAX_DEPTH + 1);
+        let e = err(&too_deep);
+        assert_eq!(e.at, MAX_DEPTH);
+        assert!(e.message.contains("nested too deeply"));
+        // Far deeper input fails fast at the same place, without overflowing the stack.
+        let e = err(&"{\"a\":".repeat(1_000_000));
+        assert!(e.message.contains("nested too deeply"));
+    }
+
+    #[test]
+    fn truncated_inputs_never_panic() {
+        let src = r#"{"X3D": {"@v": "4.0", "a": [1, -2.5e-3, true, false, null, "s\u00e9\"", {"b": []}]}}"#;
+        for cut in 0..src.len() {
+            if src.is_char_boundary(cut) {
+                let _ = parse(&src[..cut]);
+            }
+        }
+        assert!(parse(src).is_ok());
+    }
+}

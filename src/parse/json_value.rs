@@ -1,0 +1,581 @@
+//! Field values in the JSON encoding (ISO/IEC 19776-5): a JSON value of the scanned
+//! [`Tree`] turned into a typed [`Value`] for the field's type.
+//!
+//! SFBool is `true`/`false`; SFInt32, SFFloat, SFDouble and SFTime are numbers; vectors,
+//! colours, rotations and matrices are arrays of numbers, MF types one flat array
+//! (`[0,0,0, 1,0,0]`) whose length is a multiple of the arity; SFString is a string and
+//! MFString an array of strings (a lone string is taken as a list of one, as some
+//! exporters write it); SFImage is `[width, height, components, pixel…]` and MFImage
+//! those concatenated. Numbers are read from their text straight into the field's
+//! precision (an SFFloat `1e39` is +∞ for a rule to report, not an error here), into one
+//! vector per field.
+
+use super::tree::{Kind, Tree, NOT_INTEGER};
+use crate::parse::number::{parse_f32, parse_f64};
+use crate::model::{Image, Value};
+use crate::schema::{FieldType, Scalar};
+
+/// A value that does not fit its field's type. `span` is a byte range in the input: the
+/// offending element, or the whole value.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ValueError {
+    pub span: (usize, usize),
+    /// The MF element at fault, where one is.
+    pub index: Option<usize>,
+    pub message: String,
+    pub help: Option<String>,
+}
+
+impl ValueError {
+    fn new(span: (usize, usize), message: impl Into<String>) -> ValueError {
+        ValueError {
+            span,
+            index: None,
+            message: message.into(),
+            help: None,
+        }
+    }
+
+    fn index(mut self, index: usize) -> ValueError {
+        self.index = Some(index);
+        self
+    }
+
+    fn help(mut self, help: impl Into<String>) -> ValueError {
+        self.help = Some(help.into());
+        self
+    }
+}
+
+/// Converts the JSON value at item `i` to a value of type `ty`. Node types are not values
+/// (their nodes are `-name` members); asking for one is an error.
+pub fn convert(tree: &Tree, i: usize, ty: FieldType) -> Result<Value, ValueError> {
+    match ty.scalar() {
+        Scalar::Bool => bools(tree, i, ty).map(Value::Bools),
+        Scalar::Int32 => numbers(tree, i, ty, int32).map(Value::Int32s),
+        Scalar::Float => numbers(tree, i, ty, float32).map(Value::Floats),
+        Scalar::Double => numbers(tree, i, ty, float64).map(Value::Doubles),
+        Scalar::String => strings(tree, i, ty).map(Value::Strings),
+        Scalar::Image => images(tree, i, ty).map(Value::Images),
+        Scalar::Node => Err(ValueError::new(
+            tree.full_span(i),
+            format!("{ty} fields take nodes, not a value"),
+        )),
+    }
+}
+
+/// What a JSON value is, for messages: `a string ("1")`, `an array`, `null`.
+pub fn describe(tree: &Tree, i: usize) -> String {
+    match tree.kind(i) {
+        Kind::Null => "null".to_string(),
+        Kind::True => "`true`".to_string(),
+        Kind::False => "`false`".to_string(),
+        Kind::Number => format!("the number {}", short(tree.raw(i))),
+        Kind::String | Kind::Key => format!("the string \"{}\"", short(tree.raw(i))),
+        Kind::Array if tree.item(i).len == 0 => "an empty array".to_string(),
+        Kind::Array => "an array".to_string(),
+        Kind::Object => "an object".to_string(),
+    }
+}
+
+fn short(text: &str) -> String {
+    const MAX: usize = 40;
+    match text.char_indices().nth(MAX) {
+        Some((cut, _)) => format!("{}…", &text[..cut]),
+        None => text.to_string(),
+    }
+}
+
+/// What one element of the type is, for messages.
+fn element_noun(ty: FieldType) -> (&'static str, &'static str) {
+    match ty.scalar() {
+        Scalar::Bool => ("boolean", "booleans"),
+        Scalar::Int32 => ("whole number", "whole numbers"),
+        Scalar::String => ("string", "strings"),
+        _ => ("number", "numbers"),
+    }
+}
+
+fn plural(n: usize, (one, many): (&str, &str)) -> String {
+    if n == 1 {
+        format!("1 {one}")
+    } else {
+        format!("{n} {many}")
+    }
+}
+
+/// What the whole value should look like.
+fn expected(ty: FieldType) -> String {
+    let noun = element_noun(ty);
+    let article = if noun.0.starts_with(['a', 'e', 'i', 'o', 'u']) { "an" } else { "a" };
+    if ty == FieldType::SFImage {
+        "an array [width, height, components, pixel…]".to_string()
+    } else if ty == FieldType::MFImage {
+        "an array of images, each width, height, components, pixel…".to_string()
+    } else if ty.is_mf() && ty.arity() > 1 {
+        format!("an array of {}, a multiple of {}", noun.1, ty.arity())
+    } else if ty.is_mf() {
+        format!("an array of {}", noun.1)
+    } else if ty.arity() > 1 {
+        format!("an array of {}", plural(ty.arity(), noun))
+    } else {
+        format!("{article} {}", noun.0)
+    }
+}
+
+/// The error for a value of the wrong JSON kind, with a hint for the usual slips.
+#[cold]
+fn wrong_kind(tree: &Tree, i: usize, ty: FieldType) -> ValueError {
+    let error = ValueError::new(
+        tree.full_span(i),
+        format!("{ty} takes {}, found {}", expected(ty), describe(tree, i)),
+    );
+    match (tree.kind(i), ty.scalar()) {
+        (Kind::String, Scalar::Int32 | Scalar::Float | Scalar::Double) if looks_numeric(tree.raw(i)) => {
+            error.help("JSON numbers are written without quotes")
+        }
+        (Kind::String, Scalar::Bool) if matches!(tree.raw(i), "true" | "false" | "TRUE" | "FALSE") => {
+            error.help("JSON booleans are written `true` or `false`, without quotes")
+        }
+        (Kind::Number, Scalar::Bool) if matches!(tree.raw(i), "0" | "1") => {
+            error.help("write `true` or `false`")
+        }
+        (Kind::Array, _) if !ty.is_mf() && ty.arity() == 1 && tree.item(i).len == 1 => {
+            error.help(format!("{ty} is a single value: drop the brackets"))
+        }
+        (Kind::Number | Kind::True | Kind::False, _) if ty.is_mf() || ty.arity() > 1 => {
+            error.help("put the value in an array: `[…]`")
+        }
+        _ => error,
+    }
+}
+
+fn looks_numeric(text: &str) -> bool {
+    let mut any = false;
+    for token in text.split([' ', ',', '\t', '\n', '\r']).filter(|t| !t.is_empty()) {
+        if parse_f64(token.as_bytes()).is_none() {
+            return false;
+        }
+        any = true;
+    }
+    any
+}
+
+/// The count check: exactly the arity for SF types, a multiple of it for MF types.
+/// `elements` are the array's element items.
+fn check_count(tree: &Tree, array: usize, ty: FieldType, count: usize) -> Result<(), ValueError> {
+    let arity = ty.arity();
+    let noun = element_noun(ty);
+    if ty.is_mf() {
+        if count % arity == 0 {
+            return Ok(());
+        }
+        // Point at the incomplete last element.
+        let first = count - count % arity;
+        let elements: Vec<usize> = tree.elements(array).skip(first).collect();
+        let span = match (elements.first(), elements.last()) {
+            (Some(&a), Some(&b)) => (tree.full_span(a).0, tree.full_span(b).1),
+            _ => tree.full_span(array),
+        };
+        return Err(ValueError::new(
+            span,
+            format!("{ty} takes a multiple of {arity} {}, found {count}", noun.1),
+        )
+        .index(first / arity));
+    }
+    if count == arity {
+        return Ok(());
+    }
+    let found = if count == 0 { "none".to_string() } else { count.to_string() };
+    let span = if count > arity {
+        // Point at the surplus.
+        let surplus: Vec<usize> = tree.elements(array).skip(arity).collect();
+        match (surplus.first(), surplus.last()) {
+            (Some(&a), Some(&b)) => (tree.full_span(a).0, tree.full_span(b).1),
+            _ => tree.full_span(array),
+        }
+    } else {
+        tree.full_span(array)
+    };
+    Err(ValueError::new(span, format!("{ty} takes {}, found {found}", plural(arity, noun))))
+}
+
+fn bools(tree: &Tree, i: usize, ty: FieldType) -> Result<Vec<bool>, ValueError> {
+    let one = |e: usize| match tree.kind(e) {
+        Kind::True => Some(true),
+        Kind::False => Some(false),
+        _ => None,
+    };
+    if !ty.is_mf() {
+        return one(i).map(|b| vec![b]).ok_or_else(|| wrong_kind(tree, i, ty));
+    }
+    if tree.kind(i) != Kind::Array {
+        return Err(wrong_kind(tree, i, ty));
+    }
+    let mut values = Vec::with_capacity(tree.item(i).len as usize);
+    for (index, e) in tree.elements(i).enumerate() {
+        match one(e) {
+            Some(b) => values.push(b),
+            None => return Err(element_error(tree, e, ty, index)),
+        }
+    }
+    Ok(values)
+}
+
+/// An MF element (or a vector's component) of the wrong kind.
+#[cold]
+fn element_error(tree: &Tree, e: usize, ty: FieldType, index: usize) -> ValueError {
+    let noun = element_noun(ty);
+    let error = ValueError::new(
+        tree.full_span(e),
+        format!("{ty} takes {}, found {}", noun.1, describe(tree, e)),
+    );
+    let error = if ty.is_mf() { error.index(index / ty.arity()) } else { error };
+    match tree.kind(e) {
+        Kind::String if matches!(ty.scalar(), Scalar::Int32 | Scalar::Float | Scalar::Double) && looks_numeric(tree.raw(e)) => {
+            error.help("JSON numbers are written without quotes")
+        }
+        Kind::Array if ty.arity() > 1 => error.help(format!(
+            "{ty} is one flat array of numbers ([0,0,0, 1,0,0]), not an array of arrays"
+        )),
+        _ => error,
+    }
+}
+
+/// Reads the number item `e` as one scalar; `Err(message)` when it does not fit.
+type Scalarize<T> = fn(&str, bool) -> Result<T, String>;
+
+fn int32(text: &str, integer_syntax: bool) -> Result<i32, String> {
+    if integer_syntax {
+        // Up to 19 digits fit an i64; longer is out of range anyway.
+        return match text.parse::<i64>() {
+            Ok(v) if i32::try_from(v).is_ok() => Ok(v as i32),
+            _ => Err(format!("{text} is out of range (-2147483648 to 2147483647)")),
+        };
+    }
+    let v = parse_f64(text.as_bytes()).unwrap_or(f64::NAN);
+    if v.fract() != 0.0 || !v.is_finite() {
+        Err(format!("whole numbers only, found {text}"))
+    } else if v < i32::MIN as f64 || v > i32::MAX as f64 {
+        Err(format!("{text} is out of range (-2147483648 to 2147483647)"))
+    } else {
+        Ok(v as i32)
+    }
+}
+
+fn float32(text: &str, _: bool) -> Result<f32, String> {
+    // The scanner checked the JSON number syntax, which the number parser accepts.
+    Ok(parse_f32(text.as_bytes()).unwrap_or_else(|| text.parse().unwrap_or(f32::NAN)))
+}
+
+fn float64(text: &str, _: bool) -> Result<f64, String> {
+    Ok(parse_f64(text.as_bytes()).unwrap_or_else(|| text.parse().unwrap_or(f64::NAN)))
+}
+
+#[inline(always)]
+fn scalar<T>(tree: &Tree, e: usize, read: Scalarize<T>) -> Option<Result<T, String>> {
+    let item = tree.item(e);
+    (item.kind == Kind::Number).then(|| read(tree.raw(e), item.flags & NOT_INTEGER == 0))
+}
+
+fn numbers<T>(tree: &Tree, i: usize, ty: FieldType, read: Scalarize<T>) -> Result<Vec<T>, ValueError> {
+    let bad_number = |e: usize, message: String, index: Option<usize>| {
+        let error = ValueError::new(tree.full_span(e), format!("{ty} takes {}: {message}", element_noun(ty).1));
+        match index {
+            Some(index) if ty.is_mf() => error.index(index / ty.arity()),
+            _ => error,
+        }
+    };
+    if !ty.is_mf() && ty.arity() == 1 {
+        return match scalar(tree, i, read) {
+            Some(Ok(v)) => Ok(vec![v]),
+            Some(Err(message)) => Err(bad_number(i, message, None)),
+            None => Err(wrong_kind(tree, i, ty)),
+        };
+    }
+    if tree.kind(i) != Kind::Array {
+        return Err(wrong_kind(tree, i, ty));
+    }
+    let mut values = Vec::with_capacity(tree.item(i).len as usize);
+    // Elements of a flat array of numbers are consecutive leaf items.
+    for (index, e) in tree.elements(i).enumerate() {
+        match scalar(tree, e, read) {
+            Some(Ok(v)) => values.push(v),
+            Some(Err(message)) => return Err(bad_number(e, message, Some(index))),
+            None => return Err(element_error(tree, e, ty, index)),
+        }
+    }
+    check_count(tree, i, ty, values.len())?;
+    Ok(values)
+}
+
+fn strings(tree: &Tree, i: usize, ty: FieldType) -> Result<Vec<String>, ValueError> {
+    match tree.kind(i) {
+        // A lone string for an MFString is taken as a list of one.
+        Kind::String => Ok(vec![tree.str(i).into_owned()]),
+        Kind::Array if ty.is_mf() => {
+            let mut values = Vec::with_capacity(tree.item(i).len as usize);
+            for (index, e) in tree.elements(i).enumerate() {
+                if tree.kind(e) != Kind::String {
+                    return Err(element_error(tree, e, ty, index));
+                }
+                values.push(tree.str(e).into_owned());
+            }
+            Ok(values)
+        }
+        _ => Err(wrong_kind(tree, i, ty)),
+    }
+}
+
+fn images(tree: &Tree, i: usize, ty: FieldType) -> Result<Vec<Image>, ValueError> {
+    if tree.kind(i) != Kind::Array {
+        return Err(wrong_kind(tree, i, ty));
+    }
+    let elements: Vec<usize> = tree.elements(i).collect();
+    let mut images = Vec::new();
+    let mut k = 0;
+    while k < elements.len() {
+        let header_start = k;
+        let mut header = [0i32; 3];
+        for (h, slot) in header.iter_mut().enumerate() {
+            let Some(&e) = elements.get(k) else {
+                let what = ["width", "height", "components"][h];
+                let first = tree.full_span(elements[header_start]).0;
+                let last = tree.full_span(elements[elements.len() - 1]).1;
+                return Err(ValueError::new(
+                    (first, last),
+                    format!("{ty} needs width, height and components before its pixels; {what} is missing"),
+                ));
+            };
+            *slot = image_int(tree, e, ty, true, images.len())? as i32;
+            k += 1;
+        }
+        let [width, height, components] = header;
+        let remaining = elements.len() - k;
+        let take = if ty.is_mf() {
+            // The size says where the next image starts; take what is there if the data
+            // ends first.
+            let declared = (width.max(0) as u64).saturating_mul(height.max(0) as u64);
+            declared.min(remaining as u64) as usize
+        } else {
+            remaining
+        };
+        let mut pixels = Vec::with_capacity(take);
+        for &e in &elements[k..k + take] {
+            pixels.push(image_int(tree, e, ty, false, images.len())? as u32);
+        }
+        k += take;
+        images.push(Image {
+            width,
+            height,
+            components,
+            pixels,
+        });
+        if !ty.is_mf() {
+            break;
+        }
+    }
+    if images.is_empty() && !ty.is_mf() {
+        return Err(ValueError::new(
+            tree.full_span(i),
+            format!("{ty} takes [width, height, components, pixel…], e.g. [0, 0, 0]; found an empty array"),
+        ));
+    }
+    Ok(images)
+}
+
+/// An image size (`header`, an `i32`) or pixel (up to 0xFFFFFFFF; negative values down to
+/// −2^31 taken as their 32-bit pattern), as an `i64`.
+fn image_int(tree: &Tree, e: usize, ty: FieldType, header: bool, image: usize) -> Result<i64, ValueError> {
+    let what = if header { "size" } else { "pixel value" };
+    let error = |message: String| {
+        let error = ValueError::new(tree.full_span(e), message);
+        if ty.is_mf() {
+            error.index(image)
+        } else {
+            error
+        }
+    };
+    let item = tree.item(e);
+    if item.kind != Kind::Number {
+        return Err(error(format!("{ty} takes whole numbers, found {} as a {what}", describe(tree, e))));
+    }
+    let text = tree.raw(e);
+    let v = if item.flags & NOT_INTEGER == 0 {
+        text.parse::<i64>().ok()
+    } else {
+        parse_f64(text.as_bytes())
+            .filter(|v| v.fract() == 0.0 && v.abs() < 1e18)
+            .map(|v| v as i64)
+    };
+    let Some(v) = v else {
+        if item.flags & NOT_INTEGER != 0 && parse_f64(text.as_bytes()).is_some_and(|v| v.fract() != 0.0) {
+            return Err(error(format!("{ty} takes whole numbers, found {text} as a {what}")));
+        }
+        return Err(error(format!("{text} is out of range for an {ty} {what}")));
+    };
+    let (min, max) = if header {
+        (i32::MIN as i64, i32::MAX as i64)
+    } else {
+        (i32::MIN as i64, u32::MAX as i64)
+    };
+    if v < min || v > max {
+        let limit = if header { "at most 2147483647" } else { "at most 4294967295 (0xFFFFFFFF)" };
+        return Err(error(format!("{text} is out of range for an {ty} {what} ({limit})")));
+    }
+    Ok(if !header && v < 0 { (v as i32 as u32) as i64 } else { v })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::tree::parse;
+    use super::*;
+
+    fn conv(json: &str, ty: FieldType) -> Result<Value, ValueError> {
+        let tree = parse(json).unwrap();
+        convert(&tree, 0, ty)
+    }
+
+    fn err(json: &str, ty: FieldType) -> ValueError {
+        conv(json, ty).expect_err(json)
+    }
+
+    #[test]
+    fn booleans() {
+        assert_eq!(conv("true", FieldType::SFBool), Ok(Value::Bools(vec![true])));
+        assert_eq!(conv("[true, false]", FieldType::MFBool), Ok(Value::Bools(vec![true, false])));
+        let e = err("\"true\"", FieldType::SFBool);
+        assert_eq!(e.message, "SFBool takes a boolean, found the string \"true\"");
+        assert!(e.help.unwrap().contains("without quotes"));
+        assert_eq!(e.span, (0, 6));
+        let e = err("[true, 1]", FieldType::MFBool);
+        assert_eq!(e.span, (7, 8));
+        assert_eq!(e.index, Some(1));
+    }
+
+    #[test]
+    fn int32s() {
+        assert_eq!(conv("-7", FieldType::SFInt32), Ok(Value::Int32s(vec![-7])));
+        assert_eq!(conv("1e2", FieldType::SFInt32), Ok(Value::Int32s(vec![100])));
+        assert_eq!(conv("2.0", FieldType::SFInt32), Ok(Value::Int32s(vec![2])));
+        assert_eq!(
+            conv("[0, 1, 2, -1, -2147483648, 2147483647]", FieldType::MFInt32),
+            Ok(Value::Int32s(vec![0, 1, 2, -1, i32::MIN, i32::MAX]))
+        );
+        let e = err("1.5", FieldType::SFInt32);
+        assert_eq!(e.message, "SFInt32 takes whole numbers: whole numbers only, found 1.5");
+        let e = err("[1, 2, 2147483648]", FieldType::MFInt32);
+        assert!(e.message.contains("out of range"), "{}", e.message);
+        assert_eq!(e.span, (7, 17));
+        assert_eq!(e.index, Some(2));
+        assert!(err("99999999999999999999999", FieldType::SFInt32).message.contains("out of range"));
+        assert!(err("1e300", FieldType::SFInt32).message.contains("out of range"));
+    }
+
+    #[test]
+    fn floats_round_once_and_overflow_to_infinity() {
+        assert_eq!(conv("0.1", FieldType::SFFloat), Ok(Value::Floats(vec![0.1f32])));
+        assert_eq!(conv("1e39", FieldType::SFFloat), Ok(Value::Floats(vec![f32::INFINITY])));
+        assert_eq!(conv("-1e39", FieldType::SFFloat), Ok(Value::Floats(vec![f32::NEG_INFINITY])));
+        assert_eq!(conv("1e39", FieldType::SFDouble), Ok(Value::Doubles(vec![1e39])));
+        assert_eq!(conv("1e-50", FieldType::SFFloat), Ok(Value::Floats(vec![0.0])));
+        assert_eq!(conv("-0", FieldType::SFFloat), Ok(Value::Floats(vec![-0.0])));
+        // Correctly rounded directly to f32 (not through f64).
+        assert_eq!(
+            conv("1.00000005960464477539062501", FieldType::SFFloat),
+            Ok(Value::Floats(vec![1.000_000_1_f32]))
+        );
+        assert_eq!(conv("0.1", FieldType::SFTime), Ok(Value::Doubles(vec![0.1])));
+    }
+
+    #[test]
+    fn vectors_check_arity() {
+        assert_eq!(conv("[1, 0, 0]", FieldType::SFColor), Ok(Value::Floats(vec![1.0, 0.0, 0.0])));
+        let e = err("[1, 0]", FieldType::SFColor);
+        assert_eq!(e.message, "SFColor takes 3 numbers, found 2");
+        assert_eq!(e.span, (0, 6));
+        let e = err("[1, 0, 0, 1]", FieldType::SFColor);
+        assert_eq!(e.message, "SFColor takes 3 numbers, found 4");
+        assert_eq!(e.span, (10, 11));
+        assert_eq!(err("[]", FieldType::SFVec3f).message, "SFVec3f takes 3 numbers, found none");
+        assert_eq!(
+            conv("[0,0,0, 1,0,0]", FieldType::MFVec3f),
+            Ok(Value::Floats(vec![0.0, 0.0, 0.0, 1.0, 0.0, 0.0]))
+        );
+        assert_eq!(conv("[]", FieldType::MFVec3f), Ok(Value::Floats(vec![])));
+        let e = err("[0,0,0, 1,0]", FieldType::MFVec3f);
+        assert_eq!(e.message, "MFVec3f takes a multiple of 3 numbers, found 5");
+        assert_eq!(e.span, (8, 11));
+        assert_eq!(e.index, Some(1));
+        assert_eq!(conv("[0,0,1,3.14]", FieldType::SFRotation).unwrap().len(), 4);
+        assert_eq!(conv("[1,2,3]", FieldType::SFVec3d), Ok(Value::Doubles(vec![1.0, 2.0, 3.0])));
+        assert_eq!(conv(&format!("[{}]", ["1"; 16].join(",")), FieldType::SFMatrix4f).unwrap().len(), 16);
+    }
+
+    #[test]
+    fn json_slips_are_syntax_errors() {
+        let e = err("\"1\"", FieldType::SFFloat);
+        assert_eq!(e.message, "SFFloat takes a number, found the string \"1\"");
+        assert_eq!(e.help.as_deref(), Some("JSON numbers are written without quotes"));
+        let e = err("\"1 0 0\"", FieldType::SFColor);
+        assert!(e.message.starts_with("SFColor takes an array of 3 numbers, found the string"));
+        assert!(e.help.is_some());
+        let e = err("{\"a\": 1}", FieldType::MFFloat);
+        assert_eq!(e.message, "MFFloat takes an array of numbers, found an object");
+        assert_eq!(err("null", FieldType::SFVec3f).message, "SFVec3f takes an array of 3 numbers, found null");
+        let e = err("[1, \"2\", 3]", FieldType::SFVec3f);
+        assert_eq!(e.message, "SFVec3f takes numbers, found the string \"2\"");
+        assert_eq!(e.span, (4, 7));
+        let e = err("[[0,0,0],[1,0,0]]", FieldType::MFVec3f);
+        assert!(e.help.unwrap().contains("flat array"));
+        let e = err("[1]", FieldType::SFFloat);
+        assert!(e.help.unwrap().contains("drop the brackets"));
+        assert_eq!(err("5", FieldType::SFString).message, "SFString takes a string, found the number 5");
+    }
+
+    #[test]
+    fn strings_and_lone_strings() {
+        assert_eq!(conv("\"a\\\"b\"", FieldType::SFString), Ok(Value::Strings(vec!["a\"b".into()])));
+        assert_eq!(
+            conv("[\"EXAMINE\", \"ANY\"]", FieldType::MFString),
+            Ok(Value::Strings(vec!["EXAMINE".into(), "ANY".into()]))
+        );
+        assert_eq!(conv("\"x.png\"", FieldType::MFString), Ok(Value::Strings(vec!["x.png".into()])));
+        assert_eq!(conv("[]", FieldType::MFString), Ok(Value::Strings(vec![])));
+        let e = err("[\"a\", 1]", FieldType::MFString);
+        assert_eq!(e.message, "MFString takes strings, found the number 1");
+        assert_eq!(e.index, Some(1));
+        assert!(err("[\"a\"]", FieldType::SFString).message.contains("found an array"));
+    }
+
+    #[test]
+    fn images() {
+        let v = conv("[2, 1, 3, 16711680, 255]", FieldType::SFImage).unwrap();
+        assert_eq!(
+            v,
+            Value::Images(vec![Image {
+                width: 2,
+                height: 1,
+                components: 3,
+                pixels: vec![0xFF0000, 0xFF]
+            }])
+        );
+        let v = conv("[1, 1, 4, 4294967295, 1, 2, 1, -1, 2]", FieldType::MFImage).unwrap();
+        let images = v.as_images().unwrap();
+        assert_eq!(images.len(), 2);
+        assert_eq!(images[0].pixels, vec![u32::MAX]);
+        assert_eq!(images[1].pixels, vec![u32::MAX, 2]);
+        assert_eq!(conv("[0, 0, 0]", FieldType::SFImage).unwrap().len(), 1);
+        assert_eq!(conv("[]", FieldType::MFImage), Ok(Value::Images(vec![])));
+        assert!(err("[]", FieldType::SFImage).message.contains("empty array"));
+        assert!(err("[1, 1]", FieldType::SFImage).message.contains("components is missing"));
+        assert!(err("[1, 1, 1, 0.5]", FieldType::SFImage).message.contains("whole numbers"));
+        assert!(err("[1, 1, 1, 4294967296]", FieldType::SFImage).message.contains("out of range"));
+        assert!(err("\"1 1 1 0\"", FieldType::SFImage).message.contains("found the string"));
+    }
+
+    #[test]
+    fn node_types_are_not_values() {
+        assert!(err("[]", FieldType::MFNode).message.contains("take nodes"));
+    }
+}

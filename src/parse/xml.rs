@@ -1,0 +1,698 @@
+//! The XML encoding (ISO/IEC 19776-1) read with quick-xml straight from the input bytes
+//! into the scene model. Element and attribute positions are byte offsets into the input;
+//! field values are parsed from the attribute text by [`xml_value`](super::xml_value).
+
+use std::borrow::Cow;
+
+use quick_xml::events::attributes::Attribute;
+use quick_xml::events::{BytesStart, Event};
+use quick_xml::{Reader, XmlVersion};
+
+use super::xml_value;
+use crate::check::Parsed;
+use crate::model::builder::Parent;
+use crate::model::*;
+use crate::report::Diagnostic;
+use crate::schema::{AccessType, FieldType, Scalar};
+use crate::validate::document::{
+    field_value_syntax::FIELD_VALUE_SYNTAX, root_not_x3d::ROOT_NOT_X3D,
+    use_with_fields::USE_WITH_FIELDS, xml_malformed::XML_MALFORMED,
+};
+
+/// Reads an X3D XML document.
+pub fn read(source: &[u8]) -> Parsed {
+    let mut reader = XmlReader {
+        source,
+        builder: Builder::new(Encoding::Xml),
+        stack: Vec::new(),
+        root_closed: false,
+    };
+    let result = reader.run();
+    let (document, mut diagnostics) = reader.builder.finish();
+    match result {
+        Ok(()) => Parsed {
+            encoding: Some(Encoding::Xml),
+            document: Some(document),
+            diagnostics,
+        },
+        Err(stop) => {
+            diagnostics.push(stop);
+            Parsed {
+                encoding: Some(Encoding::Xml),
+                document: None,
+                diagnostics,
+            }
+        }
+    }
+}
+
+/// What an open element is, so that its children and end tag are handled right.
+enum Frame {
+    Root,
+    Head,
+    Scene,
+    Node { id: NodeId, start: usize },
+    /// A USE element: its children are reported and otherwise ignored.
+    Use,
+    ProtoDeclare { proto: usize },
+    ProtoInterface { proto: usize },
+    ProtoBody,
+    ExternProtoDeclare { proto: usize },
+    /// A `field` declaration whose nodes (for SFNode/MFNode) form its initial value.
+    FieldDecl { owner: DeclOwner, field: String },
+    /// A ProtoInstance `fieldValue` whose nodes form the value.
+    FieldValue { node: NodeId, field: String, name_span: Span },
+    Is { node: NodeId },
+    /// Anything whose content is not part of the scene model (meta, ROUTE, unknown statements).
+    Other,
+}
+
+#[derive(Copy, Clone)]
+enum DeclOwner {
+    Node(NodeId),
+    Proto(usize),
+}
+
+struct XmlReader<'s> {
+    source: &'s [u8],
+    builder: Builder,
+    stack: Vec<Frame>,
+    root_closed: bool,
+}
+
+/// An attribute's name and value as text, with the value's place in the input.
+struct Attr<'a> {
+    name: &'a str,
+    name_span: Span,
+    value: Cow<'a, str>,
+    value_span: Span,
+    /// Whether `value` is the input text itself (no entity was replaced), so offsets into
+    /// it are offsets into the input.
+    verbatim: bool,
+}
+
+impl<'s> XmlReader<'s> {
+    fn run(&mut self) -> Result<(), Diagnostic> {
+        let mut reader = Reader::from_reader(self.source);
+        reader.config_mut().check_end_names = true;
+        loop {
+            let start = reader.buffer_position() as usize;
+            let event = match reader.read_event() {
+                Ok(event) => event,
+                Err(error) => {
+                    let at = reader.error_position() as usize;
+                    return Err(self.malformed(at, &error.to_string()));
+                }
+            };
+            let end = reader.buffer_position() as usize;
+            match event {
+                Event::Start(element) => self.start(&element, start, end, false)?,
+                Event::Empty(element) => {
+                    self.start(&element, start, end, true)?;
+                    self.end(end);
+                }
+                Event::End(_) => self.end(end),
+                Event::CData(_) => self.text(start, end, true)?,
+                Event::Text(_) | Event::GeneralRef(_) => self.text(start, end, false)?,
+                Event::Eof => break,
+                Event::Comment(_) | Event::Decl(_) | Event::PI(_) | Event::DocType(_) => {}
+            }
+        }
+        if !self.stack.is_empty() {
+            return Err(self.malformed(self.source.len(), "the document ends before its elements are closed"));
+        }
+        if !self.root_closed {
+            return Err(self.malformed(0, "no root element"));
+        }
+        Ok(())
+    }
+
+    fn malformed(&self, at: usize, message: &str) -> Diagnostic {
+        let at = at.min(self.source.len());
+        Diagnostic::new(&XML_MALFORMED, Span::new(at, at), format!("not well-formed XML: {message}"))
+    }
+
+    fn span_of(&self, bytes: &[u8]) -> Option<Span> {
+        let base = self.source.as_ptr() as usize;
+        let at = bytes.as_ptr() as usize;
+        (at >= base && at + bytes.len() <= base + self.source.len())
+            .then(|| Span::new(at - base, at - base + bytes.len()))
+    }
+
+    /// Text and CDATA: source code for Script and shader parts; elsewhere only whitespace
+    /// is expected, and the root must be followed by nothing but whitespace.
+    fn text(&mut self, start: usize, end: usize, cdata: bool) -> Result<(), Diagnostic> {
+        let blank = self.source[start..end].iter().all(|b| b.is_ascii_whitespace());
+        if self.stack.is_empty() {
+            if !blank {
+                return Err(self.malformed(start, "text outside the root element"));
+            }
+            return Ok(());
+        }
+        if blank && !cdata {
+            return Ok(());
+        }
+        if let Some(Frame::Node { id, .. }) = self.stack.last() {
+            let node = &mut self.builder.doc_mut().nodes[id.index()];
+            let code = node.source_code.get_or_insert(Span::new(start, start));
+            code.end = end as u32;
+        }
+        Ok(())
+    }
+
+    fn attributes<'a>(&self, element: &'a BytesStart<'a>, element_start: usize) -> Result<Vec<Attr<'a>>, Diagnostic> {
+        let mut out = Vec::new();
+        for attribute in element.attributes().with_checks(true) {
+            let attribute: Attribute<'a> = attribute.map_err(|e| self.malformed(element_start, &e.to_string()))?;
+            let name: &'a str = attribute.key.0;
+            let name_span = self.span_of(name.as_bytes()).unwrap_or(Span::new(element_start, element_start));
+            let raw: &str = &attribute.value;
+            let value_span = self.span_of(raw.as_bytes()).unwrap_or(name_span);
+            let value = attribute
+                .normalized_value(XmlVersion::Implicit1_0)
+                .map_err(|e| self.malformed(value_span.start as usize, &e.to_string()))?;
+            let verbatim = value.len() == raw.len() && !raw.contains('&');
+            out.push(Attr {
+                name,
+                name_span,
+                value,
+                value_span,
+                verbatim,
+            });
+        }
+        Ok(out)
+    }
+
+    fn start(&mut self, element: &BytesStart, start: usize, end: usize, empty: bool) -> Result<(), Diagnostic> {
+        let name = element.name().0.to_string();
+        let name_span = Span::new(start + 1, start + 1 + name.len());
+        let attrs = self.attributes(element, start)?;
+        let frame = match self.stack.last() {
+            None => {
+                if self.root_closed {
+                    return Err(self.malformed(start, "a second root element"));
+                }
+                if name != "X3D" {
+                    return Err(Diagnostic::new(
+                        &ROOT_NOT_X3D,
+                        name_span,
+                        format!("the root element is `{name}`, not `X3D`"),
+                    ));
+                }
+                self.root(&attrs, Span::new(start, end));
+                Frame::Root
+            }
+            Some(parent) => {
+                let context = Context::of(parent);
+                self.child(context, &name, name_span, &attrs, start, end, empty)
+            }
+        };
+        self.stack.push(frame);
+        Ok(())
+    }
+
+    fn root(&mut self, attrs: &[Attr], span: Span) {
+        let doc = self.builder.doc_mut();
+        doc.root_span = span;
+        for attr in attrs {
+            let named = Named {
+                text: attr.value.to_string(),
+                span: attr.value_span,
+            };
+            match attr.name {
+                "version" => {
+                    doc.version = crate::schema::Version::parse(attr.value.trim());
+                    doc.version_text = Some(named);
+                }
+                "profile" => doc.profile = Some(named),
+                _ => {}
+            }
+        }
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn child(
+        &mut self,
+        context: Context,
+        name: &str,
+        name_span: Span,
+        attrs: &[Attr],
+        start: usize,
+        end: usize,
+        empty: bool,
+    ) -> Frame {
+        let element = Span::new(start, end);
+        let hint = context.parent_hint();
+        match (context, name) {
+            (Context::Root, "head") => Frame::Head,
+            (Context::Root, "Scene") => {
+                self.builder.doc_mut().scene_span = Some(element);
+                Frame::Scene
+            }
+            (Context::Head, "component") => {
+                self.component(attrs, element);
+                Frame::Other
+            }
+            (Context::Head, "unit") => {
+                self.builder.doc_mut().head.units += 1;
+                Frame::Other
+            }
+            (Context::Head, "meta") => {
+                self.builder.doc_mut().head.metas += 1;
+                Frame::Other
+            }
+            (Context::Nodes(_), "ROUTE") => {
+                self.route(attrs, element);
+                Frame::Other
+            }
+            (Context::Nodes(_), "IMPORT" | "EXPORT") => {
+                self.builder.doc_mut().imports_exports.push(element);
+                Frame::Other
+            }
+            (Context::Nodes(_), "ProtoDeclare") => {
+                let proto = self.declare_proto(attrs, element, false);
+                Frame::ProtoDeclare { proto }
+            }
+            (Context::Nodes(_), "ExternProtoDeclare") => {
+                let proto = self.declare_proto(attrs, element, true);
+                Frame::ExternProtoDeclare { proto }
+            }
+            (Context::ProtoDeclare(proto), "ProtoInterface") => Frame::ProtoInterface { proto },
+            (Context::ProtoDeclare(proto), "ProtoBody") => {
+                self.builder.begin_proto_body(proto);
+                Frame::ProtoBody
+            }
+            (Context::ProtoInterface(proto) | Context::ExternProto(proto), "field") => {
+                self.field_decl(DeclOwner::Proto(proto), attrs, element)
+            }
+            (Context::Nodes(Some(node)), "field") => self.field_decl(DeclOwner::Node(node), attrs, element),
+            (Context::Nodes(Some(node)), "fieldValue") => self.field_value(node, attrs),
+            (Context::Nodes(Some(node)), "IS") => Frame::Is { node },
+            (Context::FieldValue(node, ..), "IS") => Frame::Is { node },
+            (Context::Is(node), "connect") => {
+                self.connect(node, attrs, element);
+                Frame::Other
+            }
+            (Context::Nodes(_), _) => self.node(hint, name, name_span, attrs, element, empty),
+            (Context::FieldDecl(owner, field), _) => {
+                let parent = match owner {
+                    DeclOwner::Node(node) => Hint::Field { node, field, origin: Origin::Children },
+                    DeclOwner::Proto(proto) => Hint::ProtoField { proto, field },
+                };
+                self.node(parent, name, name_span, attrs, element, empty)
+            }
+            (Context::FieldValue(node, field, name_span_of_field), _) => self.node(
+                Hint::FieldValue {
+                    node,
+                    field,
+                    name_span: name_span_of_field,
+                },
+                name,
+                name_span,
+                attrs,
+                element,
+                empty,
+            ),
+            (Context::Use, _) => {
+                self.builder.report(Diagnostic::new(
+                    &USE_WITH_FIELDS,
+                    name_span,
+                    format!("a USE node has a child `{name}`: USE takes no children or fields"),
+                ));
+                Frame::Other
+            }
+            _ => Frame::Other,
+        }
+    }
+
+    fn end(&mut self, end: usize) {
+        match self.stack.pop() {
+            Some(Frame::Node { id, start }) => self.builder.end_node(id, Span::new(start, end)),
+            Some(Frame::ProtoBody) => self.builder.end_proto_body(),
+            Some(Frame::Root) => self.root_closed = true,
+            _ => {}
+        }
+    }
+
+    fn component(&mut self, attrs: &[Attr], span: Span) {
+        let mut name = None;
+        let mut level = None;
+        for attr in attrs {
+            match attr.name {
+                "name" => {
+                    name = Some(Named {
+                        text: attr.value.to_string(),
+                        span: attr.value_span,
+                    })
+                }
+                "level" => level = attr.value.trim().parse::<i32>().ok().map(|l| (l, attr.value_span)),
+                _ => {}
+            }
+        }
+        let name = name.unwrap_or(Named {
+            text: String::new(),
+            span,
+        });
+        self.builder
+            .doc_mut()
+            .head
+            .components
+            .push(ComponentStatement { name, level, span });
+    }
+
+    fn route(&mut self, attrs: &[Attr], span: Span) {
+        let get = |key: &str| {
+            attrs
+                .iter()
+                .find(|a| a.name == key)
+                .map(|a| Named {
+                    text: a.value.to_string(),
+                    span: a.value_span,
+                })
+                .unwrap_or(Named {
+                    text: String::new(),
+                    span,
+                })
+        };
+        self.builder.add_route(Route {
+            from_node: get("fromNode"),
+            from_field: get("fromField"),
+            to_node: get("toNode"),
+            to_field: get("toField"),
+            span,
+            scope: Scope::Scene,
+        });
+    }
+
+    fn declare_proto(&mut self, attrs: &[Attr], span: Span, external: bool) -> usize {
+        let name = named_attr(attrs, "name").unwrap_or(Named {
+            text: String::new(),
+            span,
+        });
+        let url = attrs
+            .iter()
+            .find(|a| a.name == "url")
+            .and_then(|a| xml_value::parse_value(FieldType::MFString, &a.value).ok())
+            .and_then(|v| match v {
+                Value::Strings(s) => Some(s),
+                _ => None,
+            })
+            .unwrap_or_default();
+        self.builder.declare_proto(ProtoDecl {
+            name,
+            span,
+            external,
+            interface: Vec::new(),
+            body: Vec::new(),
+            url,
+        })
+    }
+
+    /// A `field` declaration (ProtoInterface, ExternProtoDeclare, Script, shaders).
+    fn field_decl(&mut self, owner: DeclOwner, attrs: &[Attr], span: Span) -> Frame {
+        let name = named_attr(attrs, "name").unwrap_or(Named {
+            text: String::new(),
+            span,
+        });
+        let ty_attr = attrs.iter().find(|a| a.name == "type");
+        let ty = ty_attr.and_then(|a| FieldType::parse(a.value.trim()));
+        if let (Some(attr), None) = (ty_attr, ty) {
+            self.builder.report(Diagnostic::new(
+                &FIELD_VALUE_SYNTAX,
+                attr.value_span,
+                format!("`{}` is not an X3D field type", attr.value),
+            ));
+        }
+        let access = attrs
+            .iter()
+            .find(|a| a.name == "accessType")
+            .and_then(|a| AccessType::parse(a.value.trim()));
+        let value = match (attrs.iter().find(|a| a.name == "value"), ty) {
+            (Some(attr), Some(ty)) => Some((self.parse_attr_value(ty, attr), attr.value_span)),
+            (Some(attr), None) => Some((Value::Unparsed(attr.value.to_string()), attr.value_span)),
+            (None, _) => None,
+        };
+        let field = name.text.clone();
+        let decl = FieldDecl {
+            name,
+            ty,
+            access,
+            span,
+            value,
+        };
+        match owner {
+            DeclOwner::Node(node) => self.builder.doc_mut().nodes[node.index()].declared.push(decl),
+            DeclOwner::Proto(proto) => self.builder.doc_mut().protos[proto].interface.push(decl),
+        }
+        Frame::FieldDecl { owner, field }
+    }
+
+    /// A ProtoInstance's `fieldValue`: typed by the ProtoDeclare when it is known.
+    fn field_value(&mut self, node: NodeId, attrs: &[Attr]) -> Frame {
+        let Some(name) = named_attr(attrs, "name") else {
+            return Frame::Other;
+        };
+        if let Some(attr) = attrs.iter().find(|a| a.name == "value") {
+            let field = self.builder.field_ref(node, &name.text);
+            let value = match field.clone() {
+                FieldRef::Declared { ty: Some(ty), .. } => self.parse_attr_value(ty, attr),
+                _ => Value::Unparsed(attr.value.to_string()),
+            };
+            self.builder.add_field(
+                node,
+                FieldEntry {
+                    field,
+                    name_span: name.span,
+                    span: attr.value_span,
+                    origin: Origin::FieldValue,
+                    value,
+                },
+            );
+        }
+        Frame::FieldValue {
+            node,
+            field: name.text,
+            name_span: name.span,
+        }
+    }
+
+    fn connect(&mut self, node: NodeId, attrs: &[Attr], span: Span) {
+        let get = |key| named_attr(attrs, key).unwrap_or(Named { text: String::new(), span });
+        let connect = IsConnect {
+            node_field: get("nodeField"),
+            proto_field: get("protoField"),
+            span,
+        };
+        self.builder.doc_mut().nodes[node.index()].connects.push(connect);
+    }
+
+    /// A node element: a new node, or a USE of a DEF'd one.
+    fn node(&mut self, hint: Hint, name: &str, name_span: Span, attrs: &[Attr], element: Span, empty: bool) -> Frame {
+        let kind = if name == "ProtoInstance" {
+            let proto_name = named_attr(attrs, "name").map(|n| n.text).unwrap_or_default();
+            NodeKind::ProtoInstance {
+                proto: self.builder.find_proto(&proto_name),
+                name: proto_name,
+            }
+        } else {
+            self.builder.node_kind(name)
+        };
+        let container = attrs.iter().find(|a| a.name == "containerField");
+        let field_name = container.map(|a| a.value.trim().to_string()).unwrap_or_else(|| match &kind {
+            NodeKind::Known { def, .. } => def.container_field.to_string(),
+            _ => "children".to_string(),
+        });
+        let field_span = container.map(|a| a.value_span).unwrap_or(name_span);
+        let parent = hint.parent(&field_name, field_span);
+
+        if let Some(use_attr) = attrs.iter().find(|a| a.name == "USE") {
+            let use_name = Named {
+                text: use_attr.value.to_string(),
+                span: use_attr.value_span,
+            };
+            let extras: Vec<&Attr> = attrs
+                .iter()
+                .filter(|a| !matches!(a.name, "USE" | "containerField" | "class" | "id" | "style"))
+                .filter(|a| !(name == "ProtoInstance" && a.name == "name"))
+                .collect();
+            if let Some(first) = extras.first() {
+                let names: Vec<String> = extras.iter().map(|a| format!("`{}`", a.name)).collect();
+                let mut diagnostic = Diagnostic::new(
+                    &USE_WITH_FIELDS,
+                    first.name_span,
+                    format!("USE `{}` also sets {}: a USE takes no fields", use_name.text, names.join(", ")),
+                )
+                .help("a USE is the DEF'd node itself; set the values on the DEF");
+                diagnostic.count = extras.len();
+                self.builder.report(diagnostic);
+            }
+            let element_type = (name != "ProtoInstance").then_some(name);
+            self.builder.use_node(&use_name, element_type, element, parent);
+            return if empty { Frame::Other } else { Frame::Use };
+        }
+
+        let id = self.builder.begin_node(kind, name_span, parent);
+        for attr in attrs {
+            match attr.name {
+                "DEF" => self.builder.define(
+                    id,
+                    Named {
+                        text: attr.value.to_string(),
+                        span: attr.value_span,
+                    },
+                ),
+                "containerField" | "class" | "id" | "style" => {}
+                "name" if name == "ProtoInstance" => {}
+                _ if attr.name.starts_with("xmlns") => {}
+                _ => self.attribute_field(id, attr),
+            }
+        }
+        Frame::Node {
+            id,
+            start: element.start as usize,
+        }
+    }
+
+    /// A field given as an attribute.
+    fn attribute_field(&mut self, node: NodeId, attr: &Attr) {
+        let field = self.builder.field_ref(node, attr.name);
+        let value = match field.clone() {
+            FieldRef::Schema { def, .. } => self.parse_attr_value(def.ty, attr),
+            FieldRef::Declared { ty: Some(ty), .. } => self.parse_attr_value(ty, attr),
+            _ => Value::Unparsed(attr.value.to_string()),
+        };
+        self.builder.add_field(
+            node,
+            FieldEntry {
+                field,
+                name_span: attr.name_span,
+                span: attr.value_span,
+                origin: Origin::Attribute,
+                value,
+            },
+        );
+    }
+
+    /// Parses attribute text as a field type, reporting syntax errors at their place.
+    fn parse_attr_value(&mut self, ty: FieldType, attr: &Attr) -> Value {
+        if ty.scalar() == Scalar::Node {
+            self.builder.report(Diagnostic::new(
+                &FIELD_VALUE_SYNTAX,
+                attr.value_span,
+                format!("`{}` is a {ty} field: its nodes are child elements, not attribute text", attr.name),
+            ));
+            return Value::Unparsed(attr.value.to_string());
+        }
+        match xml_value::parse_value(ty, &attr.value) {
+            Ok(value) => value,
+            Err(error) => {
+                let span = if attr.verbatim {
+                    let start = attr.value_span.start as usize + error.offset;
+                    Span::new(start, start + error.len)
+                } else {
+                    attr.value_span
+                };
+                self.builder.report(
+                    Diagnostic::new(&FIELD_VALUE_SYNTAX, span, format!("`{}`: {}", attr.name, error.message))
+                        .value(truncate(&attr.value, 80)),
+                );
+                Value::Unparsed(attr.value.to_string())
+            }
+        }
+    }
+}
+
+fn named_attr(attrs: &[Attr], key: &str) -> Option<Named> {
+    attrs.iter().find(|a| a.name == key).map(|a| Named {
+        text: a.value.to_string(),
+        span: a.value_span,
+    })
+}
+
+fn truncate(text: &str, max: usize) -> String {
+    match text.char_indices().nth(max) {
+        Some((cut, _)) => format!("{}…", &text[..cut]),
+        None => text.to_string(),
+    }
+}
+
+/// What the innermost open element lets its children be.
+#[derive(Clone)]
+enum Context {
+    Root,
+    Head,
+    /// Scene, ProtoBody or a node: nodes and statements; `Some` for a node.
+    Nodes(Option<NodeId>),
+    ProtoDeclare(usize),
+    ProtoInterface(usize),
+    ExternProto(usize),
+    FieldDecl(DeclOwner, String),
+    FieldValue(NodeId, String, Span),
+    Is(NodeId),
+    Use,
+    Other,
+}
+
+impl Context {
+    fn of(frame: &Frame) -> Context {
+        match frame {
+            Frame::Root => Context::Root,
+            Frame::Head => Context::Head,
+            Frame::Scene | Frame::ProtoBody => Context::Nodes(None),
+            Frame::Node { id, .. } => Context::Nodes(Some(*id)),
+            Frame::ProtoDeclare { proto } => Context::ProtoDeclare(*proto),
+            Frame::ProtoInterface { proto } => Context::ProtoInterface(*proto),
+            Frame::ExternProtoDeclare { proto } => Context::ExternProto(*proto),
+            Frame::FieldDecl { owner, field } => Context::FieldDecl(*owner, field.clone()),
+            Frame::FieldValue { node, field, name_span } => Context::FieldValue(*node, field.clone(), *name_span),
+            Frame::Is { node } => Context::Is(*node),
+            Frame::Use => Context::Use,
+            Frame::Other => Context::Other,
+        }
+    }
+
+    /// Where a node element in this context goes, before its containerField is known.
+    fn parent_hint(&self) -> Hint {
+        match self {
+            Context::Nodes(Some(node)) => Hint::Node(*node),
+            _ => Hint::TopLevel,
+        }
+    }
+}
+
+/// Where a node element goes; resolved to a [`Parent`] once its field name is known.
+enum Hint {
+    /// The Scene or the open ProtoBody (the builder knows which by its scope).
+    TopLevel,
+    Node(NodeId),
+    Field { node: NodeId, field: String, origin: Origin },
+    FieldValue { node: NodeId, field: String, name_span: Span },
+    ProtoField { proto: usize, field: String },
+}
+
+impl Hint {
+    fn parent<'a>(&'a self, container_field: &'a str, field_span: Span) -> Parent<'a> {
+        match self {
+            Hint::TopLevel => Parent::TopLevel,
+            Hint::Node(node) => Parent::Field {
+                node: *node,
+                field: container_field,
+                field_span,
+                origin: Origin::Children,
+            },
+            Hint::Field { node, field, origin } => Parent::Field {
+                node: *node,
+                field,
+                field_span,
+                origin: *origin,
+            },
+            Hint::FieldValue { node, field, name_span } => Parent::Field {
+                node: *node,
+                field,
+                field_span: *name_span,
+                origin: Origin::FieldValue,
+            },
+            Hint::ProtoField { proto, field } => Parent::ProtoField { proto: *proto, field },
+        }
+    }
+}

@@ -1,0 +1,1030 @@
+//! Field values in the XML encoding (ISO/IEC 19776-1 clause 5): the text of an attribute,
+//! already unescaped by the XML reader, turned into a typed [`Value`].
+//!
+//! Values are separated by XML whitespace and commas (commas count as whitespace). Numbers
+//! go straight into one flat vector per field, with no allocation per number. Non-finite
+//! and overflowing floats are kept as NaN and ±infinity: reporting them is a rule's job,
+//! as is comparing an image's pixel count with its size.
+
+use std::fmt;
+
+use super::number::{is_separator, scan_float, scan_i32, scan_pixel, token_end, Float, IntError};
+use crate::model::{Image, Value};
+use crate::schema::{FieldType, Scalar};
+
+/// A value that does not follow the syntax of its field type. `offset` and `len` are a
+/// byte range in the text given to [`parse_value`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SyntaxError {
+    pub offset: usize,
+    pub len: usize,
+    pub message: String,
+}
+
+impl SyntaxError {
+    fn new(offset: usize, len: usize, message: impl Into<String>) -> SyntaxError {
+        SyntaxError {
+            offset,
+            len,
+            message: message.into(),
+        }
+    }
+
+    fn at(range: (usize, usize), message: impl Into<String>) -> SyntaxError {
+        SyntaxError::new(range.0, range.1 - range.0, message)
+    }
+}
+
+impl fmt::Display for SyntaxError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for SyntaxError {}
+
+/// Parses the text of an attribute as a value of type `ty`.
+///
+/// `text` is the attribute value after XML entity unescaping. Offsets in the error are byte
+/// offsets into `text`. SFNode and MFNode values are child elements, not attribute text,
+/// so they are always an error here.
+pub fn parse_value(ty: FieldType, text: &str) -> Result<Value, SyntaxError> {
+    let s = text.as_bytes();
+    match ty.scalar() {
+        Scalar::Float => {
+            let values = parse_floats::<f32>(ty, s)?;
+            check_count(ty, s, values.len())?;
+            Ok(Value::Floats(values))
+        }
+        Scalar::Double => {
+            let values = parse_floats::<f64>(ty, s)?;
+            check_count(ty, s, values.len())?;
+            Ok(Value::Doubles(values))
+        }
+        Scalar::Int32 => {
+            let values = parse_int32s(ty, s)?;
+            check_count(ty, s, values.len())?;
+            Ok(Value::Int32s(values))
+        }
+        Scalar::Bool => {
+            let values = parse_bools(ty, s)?;
+            check_count(ty, s, values.len())?;
+            Ok(Value::Bools(values))
+        }
+        Scalar::String if ty.is_mf() => parse_mfstring(text).map(Value::Strings),
+        Scalar::String => Ok(Value::Strings(vec![text.to_owned()])),
+        Scalar::Image => parse_images(ty, s).map(Value::Images),
+        Scalar::Node => Err(SyntaxError::new(
+            0,
+            text.len(),
+            format!("{ty} fields take child elements, not attribute text"),
+        )),
+    }
+}
+
+/// True when an MFString value was written without any double quotes (`url='a.png'`).
+/// [`parse_value`] accepts that as one string, as browsers do, though 19776-1 5.15 asks
+/// for every string of an MFString to be quoted; a rule can use this to say so.
+pub fn mfstring_is_unquoted(text: &str) -> bool {
+    !text.contains('"') && !trim_xml_whitespace(text).is_empty()
+}
+
+/// Capacity for the numbers in `s`: a guess from its length (at least two bytes per
+/// number, usually many more), so that big values grow their vector rarely.
+fn estimate(s: &[u8]) -> usize {
+    s.len() / 4 + 1
+}
+
+/// Drops the excess capacity a generous estimate left behind.
+fn trim_capacity<T>(v: &mut Vec<T>) {
+    if v.capacity() > v.len() + v.len() / 4 + 16 {
+        v.shrink_to_fit();
+    }
+}
+
+/// `(start, end)` of every token; for error paths only.
+fn tokens(s: &[u8]) -> impl Iterator<Item = (usize, usize)> + '_ {
+    let mut i = 0;
+    std::iter::from_fn(move || {
+        while i < s.len() && is_separator(s[i]) {
+            i += 1;
+        }
+        if i >= s.len() {
+            return None;
+        }
+        let start = i;
+        i = token_end(s, i);
+        Some((start, i))
+    })
+}
+
+/// The token for an error message, shortened when long.
+fn show(s: &[u8], start: usize, end: usize) -> String {
+    let text = String::from_utf8_lossy(&s[start..end]);
+    const MAX: usize = 40;
+    if text.chars().count() > MAX {
+        let short: String = text.chars().take(MAX).collect();
+        format!("{short}…")
+    } else {
+        text.into_owned()
+    }
+}
+
+fn trim_xml_whitespace(text: &str) -> &str {
+    text.trim_matches(|c| matches!(c, ' ' | '\t' | '\n' | '\r'))
+}
+
+fn plural(n: usize, one: &str, many: &str) -> String {
+    if n == 1 {
+        format!("1 {one}")
+    } else {
+        format!("{n} {many}")
+    }
+}
+
+/// Checks the number of scalars against the type: exactly its arity for SF types, a
+/// multiple of it for MF types.
+fn check_count(ty: FieldType, s: &[u8], count: usize) -> Result<(), SyntaxError> {
+    let arity = ty.arity();
+    let what = match ty.scalar() {
+        Scalar::Bool => ("value", "values"),
+        _ => ("number", "numbers"),
+    };
+    if ty.is_mf() {
+        if count % arity == 0 {
+            return Ok(());
+        }
+        // Point at the incomplete last element.
+        let first = count - count % arity;
+        let spans: Vec<(usize, usize)> = tokens(s).skip(first).collect();
+        let start = spans.first().map_or(s.len(), |t| t.0);
+        let end = spans.last().map_or(s.len(), |t| t.1);
+        return Err(SyntaxError::at(
+            (start, end),
+            format!("{ty} takes a multiple of {arity} {}, found {count}", what.1),
+        ));
+    }
+    if count == arity {
+        return Ok(());
+    }
+    let expected = plural(arity, what.0, what.1);
+    if count == 0 {
+        // Only separators: point at all of it.
+        return Err(SyntaxError::new(
+            0,
+            s.len(),
+            format!("{ty} takes {expected}, found none"),
+        ));
+    }
+    let range = if count > arity {
+        // Point at the surplus.
+        let mut surplus = tokens(s).skip(arity);
+        let start = surplus.next().map_or(s.len(), |t| t.0);
+        let end = surplus.last().map_or_else(|| token_end(s, start), |t| t.1);
+        (start, end)
+    } else {
+        let mut all = tokens(s);
+        let start = all.next().map_or(0, |t| t.0);
+        let end = all.last().map_or_else(|| token_end(s, start), |t| t.1);
+        (start, end)
+    };
+    Err(SyntaxError::at(
+        range,
+        format!("{ty} takes {expected}, found {count}"),
+    ))
+}
+
+fn parse_floats<F: Float>(ty: FieldType, s: &[u8]) -> Result<Vec<F>, SyntaxError> {
+    let mut values: Vec<F> = if ty.is_mf() {
+        Vec::with_capacity(estimate(s))
+    } else {
+        Vec::with_capacity(ty.arity())
+    };
+    let n = s.len();
+    let mut i = 0;
+    loop {
+        while i < n && is_separator(s[i]) {
+            i += 1;
+        }
+        if i >= n {
+            break;
+        }
+        match scan_float::<F>(s, i) {
+            Ok((v, end)) => {
+                values.push(v);
+                i = end;
+            }
+            Err(end) => return Err(float_error(ty, s, i, end)),
+        }
+    }
+    trim_capacity(&mut values);
+    Ok(values)
+}
+
+#[cold]
+fn float_error(ty: FieldType, s: &[u8], start: usize, end: usize) -> SyntaxError {
+    // The scanner may stop inside a token; report the whole of it.
+    let mut start = start;
+    while start > 0 && !is_separator(s[start - 1]) {
+        start -= 1;
+    }
+    let end = token_end(s, end);
+    let token = show(s, start, end);
+    let raw = &s[start..end];
+    let hint = if raw == b"true" || raw == b"false" {
+        format!("; {ty} takes numbers, not booleans")
+    } else if raw.len() > 1
+        && raw
+            .last()
+            .is_some_and(|b| matches!(b, b'f' | b'F' | b'd' | b'D'))
+        && scan_float::<f64>(&raw[..raw.len() - 1], 0).is_ok()
+    {
+        "; numbers take no type suffix".to_owned()
+    } else if raw.starts_with(b"0x") || raw.starts_with(b"0X") {
+        format!("; {ty} takes decimal numbers, not hexadecimal")
+    } else {
+        String::new()
+    };
+    SyntaxError::at((start, end), format!("`{token}` is not a number{hint}"))
+}
+
+fn parse_int32s(ty: FieldType, s: &[u8]) -> Result<Vec<i32>, SyntaxError> {
+    let mut values: Vec<i32> = if ty.is_mf() {
+        Vec::with_capacity(estimate(s))
+    } else {
+        Vec::with_capacity(1)
+    };
+    let n = s.len();
+    let mut i = 0;
+    loop {
+        while i < n && is_separator(s[i]) {
+            i += 1;
+        }
+        if i >= n {
+            break;
+        }
+        match scan_i32(s, i) {
+            Ok((v, end)) => {
+                values.push(v);
+                i = end;
+            }
+            Err((error, _)) => return Err(int_error(ty, s, i, error)),
+        }
+    }
+    trim_capacity(&mut values);
+    Ok(values)
+}
+
+#[cold]
+fn int_error(ty: FieldType, s: &[u8], start: usize, error: IntError) -> SyntaxError {
+    let end = token_end(s, start);
+    let token = show(s, start, end);
+    let message = match error {
+        IntError::OutOfRange => {
+            format!("`{token}` is out of range for {ty} (-2147483648 to 2147483647)")
+        }
+        IntError::Syntax if scan_float::<f64>(&s[start..end], 0).is_ok() => {
+            format!("{ty} takes whole numbers, found `{token}`")
+        }
+        IntError::Syntax => format!("`{token}` is not a whole number"),
+    };
+    SyntaxError::at((start, end), message)
+}
+
+fn parse_bools(ty: FieldType, s: &[u8]) -> Result<Vec<bool>, SyntaxError> {
+    let mut values = Vec::new();
+    for (start, end) in tokens(s) {
+        match &s[start..end] {
+            b"true" => values.push(true),
+            b"false" => values.push(false),
+            other => {
+                let token = show(s, start, end);
+                let message = if other.eq_ignore_ascii_case(b"true") {
+                    format!("`{token}` is not a boolean: X3D XML booleans are lowercase: `true`")
+                } else if other.eq_ignore_ascii_case(b"false") {
+                    format!("`{token}` is not a boolean: X3D XML booleans are lowercase: `false`")
+                } else if other == b"1" {
+                    format!(
+                        "`{token}` is not a boolean: {ty} takes `true` or `false`; write `true`"
+                    )
+                } else if other == b"0" {
+                    format!(
+                        "`{token}` is not a boolean: {ty} takes `true` or `false`; write `false`"
+                    )
+                } else {
+                    format!("`{token}` is not a boolean: {ty} takes `true` or `false`")
+                };
+                return Err(SyntaxError::at((start, end), message));
+            }
+        }
+    }
+    Ok(values)
+}
+
+/// `"a" "b c"`: double-quoted strings separated by whitespace or commas, with `\"` and
+/// `\\` as escapes (and a backslash before any other character standing for that
+/// character). Text with no double quote at all is taken as one string.
+fn parse_mfstring(text: &str) -> Result<Vec<String>, SyntaxError> {
+    let s = text.as_bytes();
+    if !text.contains('"') {
+        let trimmed = trim_xml_whitespace(text);
+        return Ok(if trimmed.is_empty() {
+            Vec::new()
+        } else {
+            vec![trimmed.to_owned()]
+        });
+    }
+    let mut strings = Vec::new();
+    let n = s.len();
+    let mut i = 0;
+    loop {
+        while i < n && is_separator(s[i]) {
+            i += 1;
+        }
+        if i >= n {
+            break;
+        }
+        if s[i] != b'"' {
+            let start = i;
+            let mut end = i;
+            while end < n && !is_separator(s[end]) && s[end] != b'"' {
+                end += 1;
+            }
+            return Err(SyntaxError::at(
+                (start, end),
+                format!(
+                    "`{}` is outside quotes: each string of an MFString is enclosed in double quotes, as in `\"a\" \"b\"`",
+                    show(s, start, end)
+                ),
+            ));
+        }
+        let open = i;
+        i += 1;
+        let mut value = String::new();
+        let mut chunk = i;
+        loop {
+            match memchr::memchr2(b'"', b'\\', &s[i..]) {
+                None => {
+                    return Err(SyntaxError::new(
+                        open,
+                        n - open,
+                        "unterminated string: no closing `\"`",
+                    ));
+                }
+                Some(k) => {
+                    let at = i + k;
+                    if s[at] == b'"' {
+                        value.push_str(&text[chunk..at]);
+                        i = at + 1;
+                        break;
+                    }
+                    // A backslash: keep the character after it, whatever it is.
+                    value.push_str(&text[chunk..at]);
+                    if at + 1 >= n {
+                        return Err(SyntaxError::new(
+                            open,
+                            n - open,
+                            "unterminated string: no closing `\"`",
+                        ));
+                    }
+                    chunk = at + 1;
+                    // Skip the escaped character (which may be multi-byte) so that an
+                    // escaped quote or backslash is taken literally.
+                    let width = text[chunk..].chars().next().map_or(1, char::len_utf8);
+                    i = chunk + width;
+                }
+            }
+        }
+        strings.push(value);
+    }
+    Ok(strings)
+}
+
+fn parse_images(ty: FieldType, s: &[u8]) -> Result<Vec<Image>, SyntaxError> {
+    let n = s.len();
+    let mut images = Vec::new();
+    let mut i = 0;
+    let skip = |i: &mut usize| {
+        while *i < n && is_separator(s[*i]) {
+            *i += 1;
+        }
+    };
+    loop {
+        skip(&mut i);
+        if i >= n {
+            break;
+        }
+        let header_start = i;
+        let mut header = [0i32; 3];
+        for (k, slot) in header.iter_mut().enumerate() {
+            skip(&mut i);
+            if i >= n {
+                let what = ["width", "height", "components"][k];
+                let message = format!(
+                    "{ty} needs `width height components` before its pixels; {what} is missing"
+                );
+                let mut end = n;
+                while end > header_start && is_separator(s[end - 1]) {
+                    end -= 1;
+                }
+                return Err(SyntaxError::at((header_start, end), message));
+            }
+            match scan_i32(s, i) {
+                Ok((v, end)) => {
+                    *slot = v;
+                    i = end;
+                }
+                Err((error, _)) => return Err(image_int_error(ty, s, i, error, true)),
+            }
+        }
+        let [width, height, components] = header;
+        let mut pixels = Vec::new();
+        if ty.is_mf() {
+            // The size says where the next image starts; take what is there if the data
+            // ends first. Never allocate from the declared size alone.
+            let declared = (width.max(0) as u64).saturating_mul(height.max(0) as u64);
+            pixels.reserve(declared.min(estimate(&s[i..]) as u64) as usize);
+            let mut taken = 0u64;
+            while taken < declared {
+                skip(&mut i);
+                if i >= n {
+                    break;
+                }
+                match scan_pixel(s, i) {
+                    Ok((v, end)) => {
+                        pixels.push(v);
+                        i = end;
+                    }
+                    Err((error, _)) => return Err(image_int_error(ty, s, i, error, false)),
+                }
+                taken += 1;
+            }
+        } else {
+            pixels.reserve(estimate(&s[i..]));
+            loop {
+                skip(&mut i);
+                if i >= n {
+                    break;
+                }
+                match scan_pixel(s, i) {
+                    Ok((v, end)) => {
+                        pixels.push(v);
+                        i = end;
+                    }
+                    Err((error, _)) => return Err(image_int_error(ty, s, i, error, false)),
+                }
+            }
+        }
+        trim_capacity(&mut pixels);
+        images.push(Image {
+            width,
+            height,
+            components,
+            pixels,
+        });
+        if !ty.is_mf() {
+            break;
+        }
+    }
+    if images.is_empty() && !ty.is_mf() {
+        return Err(SyntaxError::new(
+            0,
+            n,
+            format!("{ty} takes `width height components` and then the pixels, e.g. `0 0 0`"),
+        ));
+    }
+    Ok(images)
+}
+
+#[cold]
+fn image_int_error(
+    ty: FieldType,
+    s: &[u8],
+    start: usize,
+    error: IntError,
+    header: bool,
+) -> SyntaxError {
+    let end = token_end(s, start);
+    let token = show(s, start, end);
+    let what = if header { "size" } else { "pixel value" };
+    let message = match error {
+        IntError::OutOfRange if header => {
+            format!("`{token}` is out of range for an {ty} size (at most 2147483647)")
+        }
+        IntError::OutOfRange => {
+            format!("`{token}` is out of range for an {ty} pixel value (at most 0xFFFFFFFF)")
+        }
+        IntError::Syntax if scan_float::<f64>(&s[start..end], 0).is_ok() => {
+            format!("{ty} takes whole numbers, found `{token}` as a {what}")
+        }
+        IntError::Syntax => format!("`{token}` is not a whole number ({ty} {what})"),
+    };
+    SyntaxError::at((start, end), message)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use FieldType::*;
+
+    fn ok(ty: FieldType, text: &str) -> Value {
+        parse_value(ty, text).unwrap_or_else(|e| panic!("{ty} {text:?}: {e:?}"))
+    }
+
+    fn err(ty: FieldType, text: &str) -> SyntaxError {
+        match parse_value(ty, text) {
+            Ok(v) => panic!("{ty} {text:?} parsed as {v:?}"),
+            Err(e) => e,
+        }
+    }
+
+    /// The text the error points at.
+    fn pointed<'a>(text: &'a str, e: &SyntaxError) -> &'a str {
+        &text[e.offset..e.offset + e.len]
+    }
+
+    #[test]
+    fn floats_and_separators() {
+        let expected = Value::Floats(vec![1.0, 2.0, 3.0]);
+        for text in [
+            "1 2 3",
+            "1,2,3",
+            "1, 2, 3",
+            "1 2 3,",
+            " 1\t2\n3\r",
+            ",1,,2 , 3,",
+            "1.0 2e0 +3",
+        ] {
+            assert_eq!(ok(MFVec3f, text), expected, "{text:?}");
+            assert_eq!(ok(SFVec3f, text), expected, "{text:?}");
+            assert_eq!(ok(SFColor, text), expected, "{text:?}");
+        }
+        assert_eq!(ok(SFFloat, "0.5"), Value::Floats(vec![0.5]));
+        assert_eq!(ok(MFFloat, ""), Value::Floats(vec![]));
+        assert_eq!(ok(MFFloat, " , "), Value::Floats(vec![]));
+        assert_eq!(ok(SFVec2f, "1 2"), Value::Floats(vec![1.0, 2.0]));
+        assert_eq!(
+            ok(SFRotation, "0 1 0 1.5"),
+            Value::Floats(vec![0.0, 1.0, 0.0, 1.5])
+        );
+        assert_eq!(ok(MFColorRGBA, "1 0 0 1 0 1 0 0.5").len(), 8);
+        assert_eq!(ok(SFMatrix3f, "1 0 0 0 1 0 0 0 1").len(), 9);
+        assert_eq!(ok(SFMatrix4f, &["0"; 16].join(" ")).len(), 16);
+        assert_eq!(ok(MFVec4f, "1 2 3 4 5 6 7 8").len(), 8);
+        assert_eq!(ok(MFVec2f, "1 2 3 4").len(), 4);
+    }
+
+    #[test]
+    fn doubles() {
+        assert_eq!(ok(SFTime, "-1"), Value::Doubles(vec![-1.0]));
+        assert_eq!(ok(SFDouble, "0.1"), Value::Doubles(vec![0.1]));
+        assert_eq!(ok(MFTime, "0 1.5"), Value::Doubles(vec![0.0, 1.5]));
+        assert_eq!(
+            ok(SFVec3d, "1e300 2 3"),
+            Value::Doubles(vec![1e300, 2.0, 3.0])
+        );
+        assert_eq!(ok(MFVec2d, "1 2 3 4").len(), 4);
+        assert_eq!(ok(MFVec4d, "").len(), 0);
+        assert_eq!(ok(SFMatrix3d, &["1"; 9].join(",")).len(), 9);
+        assert_eq!(ok(MFMatrix4d, &["1"; 32].join(" ")).len(), 32);
+        assert_eq!(ok(MFDouble, "1").len(), 1);
+        let e = err(SFVec3d, "1 2");
+        assert_eq!(e.message, "SFVec3d takes 3 numbers, found 2");
+    }
+
+    #[test]
+    fn non_finite_values_are_kept() {
+        let Value::Floats(v) = ok(MFFloat, "NaN INF -INF inf -Infinity 1e39") else {
+            panic!()
+        };
+        assert!(v[0].is_nan());
+        assert_eq!(
+            &v[1..],
+            &[
+                f32::INFINITY,
+                f32::NEG_INFINITY,
+                f32::INFINITY,
+                f32::NEG_INFINITY,
+                f32::INFINITY
+            ]
+        );
+        let Value::Floats(v) = ok(SFFloat, "-0") else {
+            panic!()
+        };
+        assert_eq!(v[0].to_bits(), (-0.0f32).to_bits());
+    }
+
+    #[test]
+    fn float_errors() {
+        let text = "1 2 abc 4";
+        let e = err(MFFloat, text);
+        assert_eq!((e.offset, e.len), (4, 3));
+        assert_eq!(e.message, "`abc` is not a number");
+        let text = "0 1.2.3";
+        let e = err(MFFloat, text);
+        assert_eq!(pointed(text, &e), "1.2.3");
+        let text = "1 true";
+        let e = err(MFFloat, text);
+        assert_eq!(pointed(text, &e), "true");
+        assert!(e.message.contains("not booleans"), "{}", e.message);
+        let e = err(SFFloat, "1.5f");
+        assert!(e.message.contains("suffix"), "{}", e.message);
+        let e = err(SFFloat, "0xFF");
+        assert!(e.message.contains("hexadecimal"), "{}", e.message);
+        let text = "1 2 é";
+        let e = err(MFFloat, text);
+        assert_eq!(pointed(text, &e), "é");
+        let text = "1 2;3";
+        let e = err(MFFloat, text);
+        assert_eq!(pointed(text, &e), "2;3");
+        let long = format!("1 {}", "x".repeat(1000));
+        let e = err(MFFloat, &long);
+        assert_eq!((e.offset, e.len), (2, 1000));
+        assert!(e.message.len() < 100);
+    }
+
+    #[test]
+    fn arity_errors() {
+        let text = "1 0";
+        let e = err(SFColor, text);
+        assert_eq!(e.message, "SFColor takes 3 numbers, found 2");
+        assert_eq!(pointed(text, &e), "1 0");
+        let text = "1 2 3 4 5 6 7";
+        let e = err(MFVec3f, text);
+        assert_eq!(e.message, "MFVec3f takes a multiple of 3 numbers, found 7");
+        assert_eq!(pointed(text, &e), "7");
+        let text = "1 2 3, 4 5,";
+        let e = err(MFVec3f, text);
+        assert_eq!(pointed(text, &e), "4 5");
+        let text = "1 2";
+        let e = err(SFFloat, text);
+        assert_eq!(e.message, "SFFloat takes 1 number, found 2");
+        assert_eq!(pointed(text, &e), "2");
+        let text = "1 2 3 4 5";
+        let e = err(SFVec3f, text);
+        assert_eq!(pointed(text, &e), "4 5");
+        let e = err(SFFloat, "");
+        assert_eq!(e.message, "SFFloat takes 1 number, found none");
+        assert_eq!((e.offset, e.len), (0, 0));
+        let e = err(SFVec3f, "  ");
+        assert_eq!((e.offset, e.len), (0, 2));
+        let e = err(SFInt32, "1 2");
+        assert_eq!(e.message, "SFInt32 takes 1 number, found 2");
+        let e = err(SFBool, "true false");
+        assert_eq!(e.message, "SFBool takes 1 value, found 2");
+        let e = err(SFBool, "");
+        assert_eq!(e.message, "SFBool takes 1 value, found none");
+        let e = err(SFRotation, "0 1 0");
+        assert_eq!(e.message, "SFRotation takes 4 numbers, found 3");
+        let e = err(MFColorRGBA, "1 1 1");
+        assert_eq!(
+            e.message,
+            "MFColorRGBA takes a multiple of 4 numbers, found 3"
+        );
+    }
+
+    #[test]
+    fn bools() {
+        assert_eq!(ok(SFBool, "true"), Value::Bools(vec![true]));
+        assert_eq!(ok(SFBool, " false "), Value::Bools(vec![false]));
+        assert_eq!(
+            ok(MFBool, "true,false true"),
+            Value::Bools(vec![true, false, true])
+        );
+        assert_eq!(ok(MFBool, ""), Value::Bools(vec![]));
+        let e = err(SFBool, "True");
+        assert!(
+            e.message.contains("X3D XML booleans are lowercase: `true`"),
+            "{}",
+            e.message
+        );
+        assert_eq!((e.offset, e.len), (0, 4));
+        let e = err(MFBool, "true FALSE");
+        assert!(e.message.contains("lowercase: `false`"), "{}", e.message);
+        assert_eq!((e.offset, e.len), (5, 5));
+        let e = err(SFBool, "TRUE");
+        assert!(e.message.contains("lowercase"));
+        let e = err(SFBool, "1");
+        assert!(e.message.contains("write `true`"), "{}", e.message);
+        let e = err(SFBool, "yes");
+        assert!(e.message.contains("`true` or `false`"), "{}", e.message);
+    }
+
+    #[test]
+    fn int32s() {
+        assert_eq!(ok(SFInt32, "-5"), Value::Int32s(vec![-5]));
+        assert_eq!(ok(SFInt32, "0xFF"), Value::Int32s(vec![255]));
+        assert_eq!(
+            ok(MFInt32, "0 1 2 -1, 3 0X10"),
+            Value::Int32s(vec![0, 1, 2, -1, 3, 16])
+        );
+        assert_eq!(ok(MFInt32, ""), Value::Int32s(vec![]));
+        assert_eq!(
+            ok(MFInt32, "2147483647 -2147483648"),
+            Value::Int32s(vec![i32::MAX, i32::MIN])
+        );
+        let text = "1 1.5 2";
+        let e = err(SFInt32, text);
+        assert_eq!(e.message, "SFInt32 takes whole numbers, found `1.5`");
+        assert_eq!(pointed(text, &e), "1.5");
+        let e = err(MFInt32, text);
+        assert_eq!(e.message, "MFInt32 takes whole numbers, found `1.5`");
+        let text = "0 2147483648";
+        let e = err(MFInt32, text);
+        assert!(e.message.contains("out of range"), "{}", e.message);
+        assert_eq!(pointed(text, &e), "2147483648");
+        let e = err(MFInt32, "1 x");
+        assert_eq!(e.message, "`x` is not a whole number");
+        assert_eq!((e.offset, e.len), (2, 1));
+        let e = err(SFInt32, "");
+        assert_eq!(e.message, "SFInt32 takes 1 number, found none");
+    }
+
+    #[test]
+    fn strings() {
+        assert_eq!(
+            ok(SFString, " a \"b\" "),
+            Value::Strings(vec![" a \"b\" ".into()])
+        );
+        assert_eq!(ok(SFString, ""), Value::Strings(vec![String::new()]));
+        assert_eq!(
+            ok(MFString, r#""a" "b c""#),
+            Value::Strings(vec!["a".into(), "b c".into()])
+        );
+        assert_eq!(
+            ok(MFString, r#" "a","b" , "" "#),
+            Value::Strings(vec!["a".into(), "b".into(), "".into()])
+        );
+        assert_eq!(
+            ok(MFString, r#""a""b""#),
+            Value::Strings(vec!["a".into(), "b".into()])
+        );
+        assert_eq!(ok(MFString, ""), Value::Strings(vec![]));
+        assert_eq!(ok(MFString, "  \n"), Value::Strings(vec![]));
+        assert_eq!(
+            ok(MFString, r#""He said, \"Immel did it!\"""#),
+            Value::Strings(vec![r#"He said, "Immel did it!""#.into()])
+        );
+        assert_eq!(
+            ok(MFString, r#""a\\b""#),
+            Value::Strings(vec![r"a\b".into()])
+        );
+        assert_eq!(ok(MFString, r#""a\\""#), Value::Strings(vec![r"a\".into()]));
+        assert_eq!(
+            ok(MFString, r#""a\nb""#),
+            Value::Strings(vec!["anb".into()])
+        );
+        assert_eq!(
+            ok(MFString, r#""\é" "ü""#),
+            Value::Strings(vec!["é".into(), "ü".into()])
+        );
+        assert_eq!(
+            ok(MFString, "\"line\none\""),
+            Value::Strings(vec!["line\none".into()])
+        );
+    }
+
+    #[test]
+    fn unquoted_mfstring() {
+        assert_eq!(
+            ok(MFString, "texture.png"),
+            Value::Strings(vec!["texture.png".into()])
+        );
+        assert_eq!(
+            ok(MFString, "  Hello world \n"),
+            Value::Strings(vec!["Hello world".into()])
+        );
+        assert!(mfstring_is_unquoted(" a.png "));
+        assert!(!mfstring_is_unquoted("\"a.png\""));
+        assert!(!mfstring_is_unquoted("  "));
+    }
+
+    #[test]
+    fn mfstring_errors() {
+        let text = r#""a" "b"#;
+        let e = err(MFString, text);
+        assert_eq!(pointed(text, &e), "\"b");
+        assert!(e.message.contains("unterminated"));
+        let text = r#""a\""#;
+        let e = err(MFString, text);
+        assert_eq!((e.offset, e.len), (0, 4));
+        let text = r#""a\"#;
+        let e = err(MFString, text);
+        assert!(e.message.contains("unterminated"));
+        let text = r#""a" b "c""#;
+        let e = err(MFString, text);
+        assert_eq!(pointed(text, &e), "b");
+        assert!(e.message.contains("outside quotes"), "{}", e.message);
+        let text = r#"Hello "World""#;
+        let e = err(MFString, text);
+        assert_eq!(pointed(text, &e), "Hello");
+        let text = r#""a"b"#;
+        let e = err(MFString, text);
+        assert_eq!(pointed(text, &e), "b");
+    }
+
+    #[test]
+    fn sfimage() {
+        assert_eq!(
+            ok(SFImage, "0 0 0"),
+            Value::Images(vec![Image {
+                width: 0,
+                height: 0,
+                components: 0,
+                pixels: vec![]
+            }])
+        );
+        assert_eq!(
+            ok(SFImage, "2 1 3 0xFF0000 0x00FF00"),
+            Value::Images(vec![Image {
+                width: 2,
+                height: 1,
+                components: 3,
+                pixels: vec![0xFF0000, 0x00FF00]
+            }])
+        );
+        // Pixel count is not checked here; negative values are their bit patterns.
+        assert_eq!(
+            ok(SFImage, "1 1 4 -1 4294967295 0xFFFFFFFF"),
+            Value::Images(vec![Image {
+                width: 1,
+                height: 1,
+                components: 4,
+                pixels: vec![u32::MAX; 3]
+            }])
+        );
+        assert_eq!(
+            ok(SFImage, "2 2 1"),
+            Value::Images(vec![Image {
+                width: 2,
+                height: 2,
+                components: 1,
+                pixels: vec![]
+            }])
+        );
+        let e = err(SFImage, "");
+        assert!(
+            e.message.contains("width height components"),
+            "{}",
+            e.message
+        );
+        let e = err(SFImage, "  ");
+        assert!(
+            e.message.contains("width height components"),
+            "{}",
+            e.message
+        );
+        let text = "1 1";
+        let e = err(SFImage, text);
+        assert!(e.message.contains("components is missing"), "{}", e.message);
+        assert_eq!(pointed(text, &e), "1 1");
+        let text = "1 1 1 0.5";
+        let e = err(SFImage, text);
+        assert_eq!(pointed(text, &e), "0.5");
+        assert!(e.message.contains("whole numbers"));
+        let text = "1 1 1 4294967296";
+        let e = err(SFImage, text);
+        assert_eq!(pointed(text, &e), "4294967296");
+        let text = "1 x 1";
+        let e = err(SFImage, text);
+        assert_eq!(pointed(text, &e), "x");
+        let text = "4294967295 1 1";
+        let e = err(SFImage, text);
+        assert!(e.message.contains("size"), "{}", e.message);
+    }
+
+    #[test]
+    fn mfimage() {
+        assert_eq!(ok(MFImage, ""), Value::Images(vec![]));
+        let Value::Images(images) = ok(MFImage, "1 2 1 0xFF 0x80, 2 1 3 1 2 0 0 0") else {
+            panic!()
+        };
+        assert_eq!(images.len(), 3);
+        assert_eq!(
+            images[0],
+            Image {
+                width: 1,
+                height: 2,
+                components: 1,
+                pixels: vec![255, 128]
+            }
+        );
+        assert_eq!(
+            images[1],
+            Image {
+                width: 2,
+                height: 1,
+                components: 3,
+                pixels: vec![1, 2]
+            }
+        );
+        assert_eq!(
+            images[2],
+            Image {
+                width: 0,
+                height: 0,
+                components: 0,
+                pixels: vec![]
+            }
+        );
+        // Short last image: takes what is there.
+        let Value::Images(images) = ok(MFImage, "2 2 1 1 2 3") else {
+            panic!()
+        };
+        assert_eq!(
+            images,
+            vec![Image {
+                width: 2,
+                height: 2,
+                components: 1,
+                pixels: vec![1, 2, 3]
+            }]
+        );
+        // A huge declared size allocates nothing of its own.
+        let Value::Images(images) = ok(MFImage, "2147483647 2147483647 4 1 2") else {
+            panic!()
+        };
+        assert_eq!(images[0].pixels, vec![1, 2]);
+        // Negative sizes hold no pixels: the next numbers start the next image.
+        let Value::Images(images) = ok(MFImage, "-1 5 1 0 0 0") else {
+            panic!()
+        };
+        assert_eq!(images.len(), 2);
+        let text = "1 1 1 5 2 2";
+        let e = err(MFImage, text);
+        assert!(e.message.contains("components is missing"), "{}", e.message);
+        assert_eq!(pointed(text, &e), "2 2");
+    }
+
+    #[test]
+    fn nodes_are_not_attribute_text() {
+        let e = err(SFNode, "NULL");
+        assert_eq!((e.offset, e.len), (0, 4));
+        assert!(e.message.contains("child elements"));
+        let e = err(MFNode, "");
+        assert!(e.message.contains("MFNode"));
+    }
+
+    #[test]
+    fn every_type_handles_odd_input_without_panicking() {
+        let inputs = [
+            "",
+            " ",
+            ",",
+            "\"",
+            "\\",
+            "é",
+            "1é",
+            "0x",
+            "-",
+            ".",
+            "e",
+            "1e",
+            "\"\\",
+            "\"a\\\"",
+            "1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17",
+        ];
+        let digits = "9".repeat(10_000);
+        for &ty in FieldType::ALL {
+            for text in inputs.iter().copied().chain([digits.as_str()]) {
+                let _ = parse_value(ty, text);
+            }
+        }
+    }
+
+    #[test]
+    fn error_ranges_are_char_boundaries() {
+        for &ty in FieldType::ALL {
+            for text in ["ü 1", "1 ü", "\"ü\" ü", "ü", "1 2 ü€"] {
+                if let Err(e) = parse_value(ty, text) {
+                    assert!(
+                        text.get(e.offset..e.offset + e.len).is_some(),
+                        "{ty} {text:?} {e:?}"
+                    );
+                }
+            }
+        }
+    }
+
+    /// Times parsing 10 million floats; run with
+    /// `cargo test --release --lib xml_value::tests::throughput -- --ignored --nocapture`.
+    #[test]
+    #[ignore]
+    fn throughput() {
+        let count = 10_000_000;
+        let mut text = String::with_capacity(count * 9);
+        for k in 0..count {
+            text.push_str(if k % 2 == 0 { "-12.3456 " } else { "7.891011 " });
+        }
+        for _ in 0..3 {
+            let start = std::time::Instant::now();
+            let value = parse_value(MFVec3f, &text[..text.len() - 9 * (count % 3)]).unwrap();
+            let elapsed = start.elapsed();
+            assert_eq!(value.len(), count - count % 3);
+            eprintln!(
+                "MFVec3f: {:.2} ns/number",
+                elapsed.as_nanos() as f64 / value.len() as f64
+            );
+        }
+    }
+}

@@ -1,0 +1,81 @@
+//! One finding: which rule, where (a byte span and, when known, the node it concerns),
+//! what, and the details a tool needs (MF element index, offending value, a suggestion).
+
+use crate::model::{NodeId, Span};
+use crate::validate::{Rule, Severity};
+
+#[derive(Clone, Debug)]
+pub struct Diagnostic {
+    pub rule: &'static Rule,
+    pub severity: Severity,
+    pub message: String,
+    pub span: Span,
+    /// The node the finding concerns, for the structural path.
+    pub node: Option<NodeId>,
+    /// The MF element index, where one element is at fault.
+    pub index: Option<usize>,
+    /// The offending value as text.
+    pub value: Option<String>,
+    /// A suggestion ("did you mean `diffuseColor`?").
+    pub help: Option<String>,
+    /// Other places that explain this one ("first defined here").
+    pub related: Vec<(Span, String)>,
+    /// How many findings this one stands for (repeats folded into one).
+    pub count: usize,
+}
+
+impl Diagnostic {
+    pub fn new(rule: &'static Rule, span: Span, message: impl Into<String>) -> Diagnostic {
+        Diagnostic {
+            rule,
+            severity: rule.severity,
+            message: message.into(),
+            span,
+            node: None,
+            index: None,
+            value: None,
+            help: None,
+            related: Vec::new(),
+            count: 1,
+        }
+    }
+
+    pub fn node(mut self, node: NodeId) -> Diagnostic {
+        self.node = Some(node);
+        self
+    }
+
+    pub fn index(mut self, index: usize) -> Diagnostic {
+        self.index = Some(index);
+        self
+    }
+
+    pub fn value(mut self, value: impl Into<String>) -> Diagnostic {
+        self.value = Some(value.into());
+        self
+    }
+
+    pub fn help(mut self, help: impl Into<String>) -> Diagnostic {
+        self.help = Some(help.into());
+        self
+    }
+
+    pub fn help_opt(mut self, help: Option<String>) -> Diagnostic {
+        self.help = help;
+        self
+    }
+
+    pub fn related(mut self, span: Span, label: impl Into<String>) -> Diagnostic {
+        self.related.push((span, label.into()));
+        self
+    }
+
+    pub fn severity(mut self, severity: Severity) -> Diagnostic {
+        self.severity = severity;
+        self
+    }
+
+    pub fn code(&self) -> &'static str {
+        self.rule.code
+    }
+}

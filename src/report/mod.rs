@@ -1,0 +1,62 @@
+//! Reporting: [`Diagnostic`]s are resolved once per file ([`resolve`]: line, column, path)
+//! into a [`FileReport`], which each format renders: [`human`], [`concise`], [`json`].
+
+pub mod concise;
+mod diagnostic;
+pub mod human;
+pub mod json;
+mod line_index;
+mod path;
+mod resolve;
+mod stats;
+
+pub use diagnostic::Diagnostic;
+pub use resolve::{resolve, Related, Resolved};
+pub use stats::Stats;
+
+use serde::Serialize;
+
+use crate::model::Encoding;
+use crate::validate::Severity;
+
+/// Everything reported for one input.
+#[derive(Clone, Debug)]
+pub struct FileReport {
+    pub path: String,
+    pub encoding: Option<Encoding>,
+    pub x3d_version: Option<String>,
+    pub profile: Option<String>,
+    pub diagnostics: Vec<Resolved>,
+    /// Whether `--max-diagnostics` dropped some.
+    pub truncated: bool,
+    pub stats: Stats,
+}
+
+/// Diagnostics per severity over the files checked; a folded diagnostic counts as many.
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct Summary {
+    pub files: usize,
+    pub errors: usize,
+    pub warnings: usize,
+    pub infos: usize,
+    pub hints: usize,
+}
+
+impl Summary {
+    pub fn of(reports: &[FileReport]) -> Summary {
+        let mut summary = Summary {
+            files: reports.len(),
+            ..Summary::default()
+        };
+        for d in reports.iter().flat_map(|r| &r.diagnostics) {
+            let count = match d.severity {
+                Severity::Error => &mut summary.errors,
+                Severity::Warning => &mut summary.warnings,
+                Severity::Info => &mut summary.infos,
+                Severity::Hint => &mut summary.hints,
+            };
+            *count += d.count;
+        }
+        summary
+    }
+}

@@ -1,0 +1,119 @@
+//! The structural path of a node, XPath-like: `/X3D/Scene/Transform[2]/Shape/Appearance`.
+//!
+//! Each step names the node's type, then
+//! - `[@DEF='name']` when the node has a DEF name;
+//! - `[n]` when it stands in an MF field (or the Scene, a ProtoBody): its 1-based position
+//!   among the references of the same type in that field (USEs included, as XPath counts
+//!   USE elements);
+//! - nothing in an SF field.
+//!
+//! Nodes in a ProtoBody start at `/X3D/Scene/ProtoDeclare[@name='P']/ProtoBody`; initial
+//! values of a ProtoInterface field at `…/ProtoInterface/field[@name='f']`. The walk follows
+//! `Node::place` upward: O(depth × siblings), done only for reported diagnostics.
+
+use crate::model::{ChildRef, Document, NodeId, Place, Value};
+
+/// The path of diagnostics that concern no node.
+pub const ROOT: &str = "/X3D";
+
+pub fn node_path(doc: &Document, id: NodeId) -> String {
+    let mut steps = Vec::new();
+    let mut current = id;
+    let root = loop {
+        let Some(node) = doc.nodes.get(current.index()) else {
+            break ROOT.to_string();
+        };
+        // A well-formed model is a tree by `place`; this bounds the walk if it is not.
+        if steps.len() > doc.nodes.len() {
+            break ROOT.to_string();
+        }
+        match node.place {
+            Place::Scene => {
+                steps.push(step(doc, current, &doc.scene, true));
+                break "/X3D/Scene".to_string();
+            }
+            Place::ProtoBody { proto } => {
+                let body = doc.protos.get(proto).map_or(&[][..], |p| &p.body[..]);
+                steps.push(step(doc, current, body, true));
+                break format!("{}/ProtoBody", proto_declare(doc, proto));
+            }
+            Place::ProtoField { proto, field } => {
+                let decl = doc.protos.get(proto).and_then(|p| p.interface.get(field as usize));
+                let siblings = decl
+                    .and_then(|f| f.value.as_ref())
+                    .and_then(|(v, _)| v.as_nodes())
+                    .unwrap_or(&[]);
+                let multiple = decl
+                    .and_then(|f| f.ty)
+                    .map_or(siblings.len() > 1, |t| t.is_mf());
+                steps.push(step(doc, current, siblings, multiple));
+                let name = decl.map_or("", |f| f.name.text.as_str());
+                break format!(
+                    "{}/ProtoInterface/field[@name={}]",
+                    proto_declare(doc, proto),
+                    quote(name)
+                );
+            }
+            Place::Field { parent, entry } => {
+                let entry = doc
+                    .nodes
+                    .get(parent.index())
+                    .and_then(|p| p.fields.get(entry as usize));
+                let siblings = entry
+                    .and_then(|e| match &e.value {
+                        Value::Nodes(refs) => Some(&refs[..]),
+                        _ => None,
+                    })
+                    .unwrap_or(&[]);
+                let multiple = entry
+                    .and_then(|e| e.field_type())
+                    .map_or(siblings.len() > 1, |t| t.is_mf());
+                steps.push(step(doc, current, siblings, multiple));
+                current = parent;
+            }
+        }
+    };
+    let mut path = root;
+    for step in steps.iter().rev() {
+        path.push('/');
+        path.push_str(step);
+    }
+    path
+}
+
+fn step(doc: &Document, id: NodeId, siblings: &[ChildRef], multiple: bool) -> String {
+    let node = doc.node(id);
+    let ty = node.type_name();
+    if let Some(def) = &node.def_name {
+        return format!("{ty}[@DEF={}]", quote(&def.text));
+    }
+    if !multiple {
+        return ty.to_string();
+    }
+    let mut position = 0;
+    for sibling in siblings {
+        let same_type = doc
+            .nodes
+            .get(sibling.node.index())
+            .is_some_and(|n| n.type_name() == ty);
+        position += usize::from(same_type);
+        if sibling.node == id && !sibling.is_use {
+            break;
+        }
+    }
+    format!("{ty}[{}]", position.max(1))
+}
+
+fn proto_declare(doc: &Document, proto: usize) -> String {
+    let name = doc.protos.get(proto).map_or("", |p| p.name.text.as_str());
+    format!("/X3D/Scene/ProtoDeclare[@name={}]", quote(name))
+}
+
+/// An XPath string literal: single quotes unless the text holds one.
+fn quote(text: &str) -> String {
+    if text.contains('\'') {
+        format!("\"{text}\"")
+    } else {
+        format!("'{text}'")
+    }
+}

@@ -1,0 +1,156 @@
+//! What a document holds, for the report's `stats`. Both encodings build the same model, so
+//! the same scene gives the same numbers in XML and JSON.
+//!
+//! - `nodes`: distinct nodes (a USE'd node counts once), ProtoBodies included;
+//!   `nodeTypes`: the same, by type name as written (`ProtoInstance` for instances).
+//! - `shapes`, `lights`, `textures`: nodes that are an `X3DShapeNode`, `X3DLightNode`,
+//!   `X3DTextureNode` (MultiTexture and 3D textures included).
+//! - `defs`: nodes with a DEF name; `uses`: USE references anywhere (node fields, the Scene,
+//!   ProtoBodies, initial values of declared fields); `routes`: ROUTE statements.
+//! - `triangles`, `lines`, `points`: the primitives each distinct geometry node's data
+//!   defines, counted once however often it is USE'd: IndexedFaceSet n−2 per polygon of
+//!   n ≥ 3 indices (runs ended by −1 or the end); IndexedTriangleSet index/3; TriangleSet
+//!   coordinates/3; Indexed{TriangleStrip,TriangleFan}Set n−2 per index run of n ≥ 3;
+//!   TriangleStripSet, TriangleFanSet n−2 per stripCount/fanCount of n ≥ 3; ElevationGrid
+//!   (x−1)(z−1)·2; IndexedLineSet n−1 per index run of n ≥ 2; LineSet n−1 per vertexCount
+//!   of n ≥ 2; PointSet its coordinates. Other geometry (Box, Sphere, Extrusion, NURBS, …)
+//!   counts 0: how finely it is tessellated is the browser's choice.
+
+use std::collections::BTreeMap;
+
+use serde::Serialize;
+
+use crate::model::{ChildRef, Document, Node, Value};
+
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Stats {
+    pub nodes: usize,
+    pub node_types: BTreeMap<String, usize>,
+    pub shapes: usize,
+    pub triangles: u64,
+    pub lines: u64,
+    pub points: u64,
+    pub lights: usize,
+    pub textures: usize,
+    pub defs: usize,
+    pub uses: usize,
+    pub routes: usize,
+}
+
+impl Stats {
+    pub fn of(doc: &Document) -> Stats {
+        let mut stats = Stats {
+            nodes: doc.nodes.len(),
+            routes: doc.routes.len(),
+            uses: uses(&doc.scene),
+            ..Stats::default()
+        };
+        for proto in &doc.protos {
+            stats.uses += uses(&proto.body);
+            stats.uses += proto.interface.iter().map(|f| declared_uses(&f.value)).sum::<usize>();
+        }
+        for node in &doc.nodes {
+            *stats.node_types.entry(node.type_name().to_string()).or_default() += 1;
+            stats.shapes += usize::from(node.is_a("X3DShapeNode"));
+            stats.lights += usize::from(node.is_a("X3DLightNode"));
+            stats.textures += usize::from(node.is_a("X3DTextureNode"));
+            stats.defs += usize::from(node.def_name.is_some());
+            stats.uses += node
+                .fields
+                .iter()
+                .filter_map(|f| f.value.as_nodes())
+                .map(uses)
+                .sum::<usize>();
+            stats.uses += node.declared.iter().map(|f| declared_uses(&f.value)).sum::<usize>();
+            let primitives = primitives(doc, node);
+            stats.triangles = stats.triangles.saturating_add(primitives.triangles);
+            stats.lines = stats.lines.saturating_add(primitives.lines);
+            stats.points = stats.points.saturating_add(primitives.points);
+        }
+        stats
+    }
+}
+
+fn uses(refs: &[ChildRef]) -> usize {
+    refs.iter().filter(|r| r.is_use).count()
+}
+
+fn declared_uses(value: &Option<(Value, crate::model::Span)>) -> usize {
+    value
+        .as_ref()
+        .and_then(|(v, _)| v.as_nodes())
+        .map_or(0, uses)
+}
+
+#[derive(Default)]
+struct Primitives {
+    triangles: u64,
+    lines: u64,
+    points: u64,
+}
+
+fn primitives(doc: &Document, node: &Node) -> Primitives {
+    let ints = |name| node.value(name).and_then(Value::as_int32s).unwrap_or(&[]);
+    let triangles = |triangles| Primitives {
+        triangles,
+        ..Primitives::default()
+    };
+    let Some(def) = node.def() else {
+        return Primitives::default();
+    };
+    match def.name {
+        "IndexedFaceSet" | "IndexedTriangleStripSet" | "IndexedTriangleFanSet" => {
+            let field = if def.name == "IndexedFaceSet" { "coordIndex" } else { "index" };
+            triangles(index_runs(ints(field)).map(|n| n.saturating_sub(2)).sum())
+        }
+        "IndexedTriangleSet" => triangles(ints("index").len() as u64 / 3),
+        "TriangleSet" => triangles(coordinates(doc, node) / 3),
+        "TriangleStripSet" | "TriangleFanSet" => {
+            let field = if def.name == "TriangleStripSet" { "stripCount" } else { "fanCount" };
+            triangles(counts(ints(field)).map(|n| n.saturating_sub(2)).sum())
+        }
+        "ElevationGrid" => {
+            let dimension = |name| ints(name).first().map_or(0, |&d| u64::from(d.max(0) as u32));
+            let (x, z) = (dimension("xDimension"), dimension("zDimension"));
+            triangles(x.saturating_sub(1).saturating_mul(z.saturating_sub(1)).saturating_mul(2))
+        }
+        "IndexedLineSet" => Primitives {
+            lines: index_runs(ints("coordIndex")).map(|n| n.saturating_sub(1)).sum(),
+            ..Primitives::default()
+        },
+        "LineSet" => Primitives {
+            lines: counts(ints("vertexCount")).map(|n| n.saturating_sub(1)).sum(),
+            ..Primitives::default()
+        },
+        "PointSet" => Primitives {
+            points: coordinates(doc, node),
+            ..Primitives::default()
+        },
+        _ => Primitives::default(),
+    }
+}
+
+/// Lengths of the runs of indices separated by −1 (a last run without −1 counts too).
+fn index_runs(indices: &[i32]) -> impl Iterator<Item = u64> + '_ {
+    indices
+        .split(|&i| i == -1)
+        .map(|run| run.len() as u64)
+        .filter(|&n| n > 0)
+}
+
+/// Non-negative vertex counts (negative ones define nothing).
+fn counts(values: &[i32]) -> impl Iterator<Item = u64> + '_ {
+    values.iter().map(|&n| u64::from(n.max(0) as u32))
+}
+
+/// Points in the Coordinate or CoordinateDouble node of the `coord` field.
+fn coordinates(doc: &Document, node: &Node) -> u64 {
+    let Some(coord) = node.child("coord").and_then(|id| doc.nodes.get(id.index())) else {
+        return 0;
+    };
+    match coord.value("point") {
+        Some(v @ (Value::Floats(_) | Value::Doubles(_))) => v.len() as u64 / 3,
+        _ => 0,
+    }
+}

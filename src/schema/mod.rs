@@ -1,0 +1,9 @@
+//! The X3D schema tables: node types, their fields and components, per version.
+
+pub mod types;
+// Generated and checked for freshness byte for byte, so rustfmt must leave it alone.
+#[rustfmt::skip]
+pub mod generated;
+
+pub use generated::schema;
+pub use types::*;

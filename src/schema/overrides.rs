@@ -1,0 +1,396 @@
+//! Corrections to the X3D Unified Object Model, from the specification clauses in
+//! `../shared/spec` (they win where the two differ; see `../shared/spec/README.md`).
+//!
+//! Data only: the generator (`codegen/`, which includes this file by path) applies every
+//! entry to the tables it reads from the UOM before it writes `generated.rs`, and fails when
+//! an entry names a node, type, field or component that the UOM of one of its versions does
+//! not have, so an entry cannot silently stop applying. `docs/spec-vs-uom.md` lists every
+//! difference found between the clauses' interface tables and the UOM and what became of it.
+//!
+//! Which clause speaks for which version: `000_` (Shape) is 4.0, `001_` (Shape) is 4.1, and
+//! `002_` (Rendering), `003_` (Lighting) and `004_` (Texturing) are 4.0 (`004_` predates
+//! 4.1's RenderedTexture). Entries from them name 4.0 only, although the 4.1 UOM repeats
+//! most of the 4.0 entries they correct: nothing here speaks for 4.1 there. Two exceptions:
+//! `003_` shows the 3.x value of light `intensity` next to the 4.0 one, and the SpotLight
+//! angle bound π/2 is the same in every version (the UOMs all round it down).
+//!
+//! Not compiled into the checker (nothing there needs it); run `cargo run -p
+//! x3dcheck-codegen` after every change here.
+
+use super::types::{AccessType, Bound, ComponentLevel, FieldType, Version};
+
+/// A correction to one field, for the listed versions.
+pub struct FieldOverride {
+    pub versions: &'static [Version],
+    /// A concrete node, or an abstract type: then the entry applies to every concrete node
+    /// that inherits it (and has the field, for changes to an existing field).
+    pub node: &'static str,
+    pub field: &'static str,
+    pub change: Change,
+    /// The clause (and table) of ISO/IEC 19775-1 the correction comes from.
+    pub clause: &'static str,
+    pub why: &'static str,
+}
+
+pub enum Change {
+    /// The node types an SFNode/MFNode field accepts (the `[X3D…Node]` of the table).
+    Acceptable(&'static [&'static str]),
+    /// The lower bound; None for unbounded.
+    Min(Option<Bound>),
+    /// The upper bound; None for unbounded.
+    Max(Option<Bound>),
+    /// The default, in XML encoding syntax.
+    Default(&'static str),
+    /// The component level the field needs above its node's; None for just the node's.
+    Component(Option<ComponentLevel>),
+    /// The field does not exist in these versions although the UOM lists it.
+    Remove,
+    /// The field exists in these versions although the UOM does not list it.
+    Add(NewField),
+}
+
+/// A field the UOM lacks, as the clause's interface table gives it.
+pub struct NewField {
+    pub ty: FieldType,
+    pub access: AccessType,
+    pub default: &'static str,
+    pub min: Option<Bound>,
+    pub max: Option<Bound>,
+    pub enumeration: &'static [&'static str],
+    pub enumeration_strict: bool,
+    pub acceptable: &'static [&'static str],
+}
+
+/// The highest level of a component, where the support-level table has a level that no
+/// node needs (a level that only makes fields or behaviour mandatory), so the UOM's
+/// `componentInfo` entries do not reach it.
+pub struct ComponentOverride {
+    pub versions: &'static [Version],
+    pub component: &'static str,
+    pub max_level: u8,
+    pub clause: &'static str,
+    pub why: &'static str,
+}
+
+/// A correction to the component level a concrete node needs (the support-level tables).
+pub struct NodeOverride {
+    pub versions: &'static [Version],
+    pub node: &'static str,
+    pub component: ComponentLevel,
+    pub clause: &'static str,
+    pub why: &'static str,
+}
+
+const V3: &[Version] = &[Version::V3_0, Version::V3_1, Version::V3_2, Version::V3_3];
+const V4: &[Version] = &[Version::V4_0, Version::V4_1];
+const V4_0: &[Version] = &[Version::V4_0];
+const V4_1: &[Version] = &[Version::V4_1];
+const ALL: &[Version] = &Version::ALL;
+
+const fn incl(value: f64) -> Option<Bound> {
+    Some(Bound {
+        value,
+        inclusive: true,
+    })
+}
+
+const fn level(component: &'static str, level: u8) -> ComponentLevel {
+    ComponentLevel { component, level }
+}
+
+pub static FIELD_OVERRIDES: &[FieldOverride] = &[
+    // ---- 12 Shape ----
+    FieldOverride {
+        versions: V4,
+        node: "Appearance",
+        field: "backMaterial",
+        change: Change::Acceptable(&["X3DOneSidedMaterialNode"]),
+        clause: "12.4.2",
+        why: "backMaterial takes Material, PhysicalMaterial or UnlitMaterial, never a TwoSidedMaterial; the UOM says X3DMaterialNode",
+    },
+    FieldOverride {
+        versions: V4_0,
+        node: "Appearance",
+        field: "alphaMode",
+        change: Change::Remove,
+        clause: "12.4.2",
+        why: "added in 4.1 (001_ lists it, the 4.0 table in 000_ does not); the 4.0 UOM already has it",
+    },
+    FieldOverride {
+        versions: V4_0,
+        node: "Appearance",
+        field: "alphaCutoff",
+        change: Change::Remove,
+        clause: "12.4.2",
+        why: "added in 4.1 (001_ lists it, the 4.0 table in 000_ does not); the 4.0 UOM already has it",
+    },
+    FieldOverride {
+        versions: V4_0,
+        node: "X3DShapeNode",
+        field: "castShadow",
+        change: Change::Remove,
+        clause: "12.3.5",
+        why: "added to X3DShapeNode in 4.1 (001_); the 4.0 UOM already has it on Shape and ParticleSystem",
+    },
+    FieldOverride {
+        versions: V4_0,
+        node: "AcousticProperties",
+        field: "description",
+        change: Change::Remove,
+        clause: "12.4.1",
+        why: "added in 4.1 (001_ lists it, the 4.0 table in 000_ does not); the 4.0 UOM already has it",
+    },
+    FieldOverride {
+        versions: V4_0,
+        node: "AcousticProperties",
+        field: "enabled",
+        change: Change::Remove,
+        clause: "12.4.1",
+        why: "added in 4.1 (001_ lists it, the 4.0 table in 000_ does not); the 4.0 UOM already has it",
+    },
+    FieldOverride {
+        versions: V4_0,
+        node: "PointProperties",
+        field: "colorMode",
+        change: Change::Add(NewField {
+            ty: FieldType::SFString,
+            access: AccessType::InputOutput,
+            default: "TEXTURE_AND_POINT_COLOR",
+            min: None,
+            max: None,
+            enumeration: &["POINT_COLOR", "TEXTURE_COLOR", "TEXTURE_AND_POINT_COLOR"],
+            enumeration_strict: true,
+            acceptable: &[],
+        }),
+        clause: "12.4.7",
+        why: "in the 4.0 interface table (gone in 4.1); the UOM lists it in no version",
+    },
+    FieldOverride {
+        versions: V4_1,
+        node: "PointProperties",
+        field: "markerType",
+        change: Change::Add(NewField {
+            ty: FieldType::SFInt32,
+            access: AccessType::InputOutput,
+            default: "1",
+            min: incl(0.0),
+            max: None,
+            enumeration: &[],
+            enumeration_strict: false,
+            acceptable: &[],
+        }),
+        clause: "12.4.7",
+        why: "added in 4.1 (001_); the UOM lists it in no version",
+    },
+    FieldOverride {
+        versions: V4,
+        node: "PointProperties",
+        field: "attenuation",
+        change: Change::Min(incl(0.0)),
+        clause: "12.4.7",
+        why: "the table gives [0,∞) (\"attenuation values shall be greater than or equal to zero\"); the UOM leaves it unbounded",
+    },
+    FieldOverride {
+        versions: V4,
+        node: "LineProperties",
+        field: "linetype",
+        change: Change::Min(incl(1.0)),
+        clause: "12.4.4",
+        why: "the table gives [1,∞) (linetypes are numbered from 1); the UOM says [0,∞)",
+    },
+    FieldOverride {
+        versions: V4_0,
+        node: "Appearance",
+        field: "pointProperties",
+        change: Change::Component(Some(level("Shape", 4))),
+        clause: "12.5 (Table 12.4)",
+        why: "PointProperties is a Shape level 4 node in 4.0; the UOM says 5",
+    },
+    FieldOverride {
+        versions: V4_1,
+        node: "Appearance",
+        field: "pointProperties",
+        change: Change::Component(Some(level("Shape", 3))),
+        clause: "12.5 (Table 12.4)",
+        why: "PointProperties is a Shape level 3 node in 4.1; the UOM says 5",
+    },
+    FieldOverride {
+        versions: V4_1,
+        node: "Appearance",
+        field: "acousticProperties",
+        change: Change::Component(Some(level("Shape", 4))),
+        clause: "12.5 (Table 12.4)",
+        why: "AcousticProperties is a Shape level 4 node in 4.1; the UOM says 5",
+    },
+    FieldOverride {
+        versions: V4,
+        node: "Material",
+        field: "transparency",
+        change: Change::Component(None),
+        clause: "12.5 (Table 12.4)",
+        why: "level 1 supports every Material field but the ones it lists as optional, and transparency is not among them; the UOM says Shape 2",
+    },
+    // ---- 11 Rendering ----
+    FieldOverride {
+        versions: V4_0,
+        node: "Normal",
+        field: "vector",
+        change: Change::Min(None),
+        clause: "11.4 (Normal)",
+        why: "the table gives (-∞,∞); unit length is checked by NORMAL_NOT_UNIT with a tolerance, not as a range; the UOM says [-1,1]",
+    },
+    FieldOverride {
+        versions: V4_0,
+        node: "Normal",
+        field: "vector",
+        change: Change::Max(None),
+        clause: "11.4 (Normal)",
+        why: "the table gives (-∞,∞); the UOM says [-1,1]",
+    },
+    FieldOverride {
+        versions: V4_0,
+        node: "IndexedTriangleStripSet",
+        field: "creaseAngle",
+        change: Change::Add(NewField {
+            ty: FieldType::SFFloat,
+            access: AccessType::InputOutput,
+            default: "0",
+            min: incl(0.0),
+            max: None,
+            enumeration: &[],
+            enumeration_strict: false,
+            acceptable: &[],
+        }),
+        clause: "11.4 (IndexedTriangleStripSet)",
+        why: "in the interface table; the UOM (and the XML Schemas) do not have it",
+    },
+    // ---- 17 Lighting ----
+    // The UOMs already agree on intensity; these entries pin the two ranges of 17.2.1 so a
+    // later UOM cannot change them unnoticed (the generator reports them as no-ops).
+    FieldOverride {
+        versions: V3,
+        node: "X3DLightNode",
+        field: "intensity",
+        change: Change::Max(incl(1.0)),
+        clause: "17.2.1",
+        why: "3.x: light intensity ranges from 0.0 to 1.0 (003_ shows [0,1] for 3.x)",
+    },
+    FieldOverride {
+        versions: V4,
+        node: "DirectionalLight",
+        field: "intensity",
+        change: Change::Max(None),
+        clause: "17.2.1",
+        why: "4.x: light intensity ranges from 0.0 to infinity (003_ shows [0,∞] for 4.x)",
+    },
+    FieldOverride {
+        versions: V4,
+        node: "PointLight",
+        field: "intensity",
+        change: Change::Max(None),
+        clause: "17.2.1",
+        why: "4.x: light intensity ranges from 0.0 to infinity (003_ shows [0,∞] for 4.x)",
+    },
+    FieldOverride {
+        versions: V4,
+        node: "SpotLight",
+        field: "intensity",
+        change: Change::Max(None),
+        clause: "17.2.1",
+        why: "4.x: light intensity ranges from 0.0 to infinity (003_ shows [0,∞] for 4.x)",
+    },
+    FieldOverride {
+        versions: V4_1,
+        node: "EnvironmentLight",
+        field: "intensity",
+        change: Change::Max(None),
+        clause: "17.2.1",
+        why: "4.x: light intensity ranges from 0.0 to infinity, for every light source",
+    },
+    FieldOverride {
+        versions: ALL,
+        node: "SpotLight",
+        field: "beamWidth",
+        change: Change::Max(incl(std::f64::consts::FRAC_PI_2)),
+        clause: "17.4.4",
+        why: "(0,π/2]: the UOM's 1.570796 is below π/2, so π/2 written in full (1.570796327) would fail in f32",
+    },
+    FieldOverride {
+        versions: ALL,
+        node: "SpotLight",
+        field: "cutOffAngle",
+        change: Change::Max(incl(std::f64::consts::FRAC_PI_2)),
+        clause: "17.4.4",
+        why: "(0,π/2]: the UOM's 1.570796 is below π/2, so π/2 written in full (1.570796327) would fail in f32",
+    },
+    FieldOverride {
+        versions: V4_0,
+        node: "SpotLight",
+        field: "beamWidth",
+        change: Change::Default("0.785398"),
+        clause: "17.4.4",
+        why: "the table gives π/4 (as the 3.x UOMs do); the 4.0 UOM says 0.589049",
+    },
+    // ---- 18 Texturing ----
+    FieldOverride {
+        versions: V4_0,
+        node: "TextureProperties",
+        field: "borderWidth",
+        change: Change::Max(incl(1.0)),
+        clause: "18.4.9",
+        why: "the table gives [0,1]; the UOM says [0,∞)",
+    },
+];
+
+pub static NODE_OVERRIDES: &[NodeOverride] = &[
+    NodeOverride {
+        versions: V4_0,
+        node: "PointProperties",
+        component: level("Shape", 4),
+        clause: "12.5 (Table 12.4)",
+        why: "Shape level 4 in 4.0; the UOM says 5",
+    },
+    NodeOverride {
+        versions: V4_1,
+        node: "PointProperties",
+        component: level("Shape", 3),
+        clause: "12.5 (Table 12.4)",
+        why: "Shape level 3 in 4.1 (support levels regrouped); the UOM says 5",
+    },
+    NodeOverride {
+        versions: V4_1,
+        node: "TwoSidedMaterial",
+        component: level("Shape", 3),
+        clause: "12.5 (Table 12.4)",
+        why: "Shape level 3 in 4.1 (support levels regrouped); the UOM says 4",
+    },
+    NodeOverride {
+        versions: V4_1,
+        node: "AcousticProperties",
+        component: level("Shape", 4),
+        clause: "12.5 (Table 12.4)",
+        why: "Shape level 4 in 4.1 (support levels regrouped); the UOM says 5",
+    },
+    NodeOverride {
+        versions: V4_0,
+        node: "MultiTexture",
+        component: level("Texturing", 3),
+        clause: "18.5 (Table 18.11)",
+        why: "Texturing level 3 in 4.0; the UOM says 2",
+    },
+    NodeOverride {
+        versions: V4_0,
+        node: "MovieTexture",
+        component: level("Texturing", 4),
+        clause: "18.5 (Table 18.11)",
+        why: "Texturing level 4 in 4.0; the UOM says 3",
+    },
+];
+
+pub static COMPONENT_OVERRIDES: &[ComponentOverride] = &[ComponentOverride {
+    versions: V4_0,
+    component: "Lighting",
+    max_level: 4,
+    clause: "17.6 (Table 17.6)",
+    why: "level 4 (all fields and capabilities fully supported) adds no node",
+}];

@@ -1,0 +1,70 @@
+//! CONTAINER_FIELD_INVALID: a child node placed in a field its parent does not have as a
+//! node field.
+
+use crate::model::{FieldRef, NodeKind, Origin};
+use crate::report::Diagnostic;
+use crate::schema::Scalar;
+use crate::validate::{suggest, Ctx};
+
+crate::declare_rule! {
+    /// ## What it does
+    /// Reports a child node whose `containerField` (given, or the default of its type)
+    /// names no SFNode/MFNode field of its parent, and suggests the node field it most
+    /// likely meant.
+    ///
+    /// ## Why it matters
+    /// The XML encoding places every child node by its containerField. A wrong one means
+    /// the child is dropped by browsers, or lands somewhere else than intended.
+    ///
+    /// ## Example
+    /// ```xml
+    /// <Appearance>
+    ///   <ImageTexture containerField='diffuseTexture' url='"a.png"'/>
+    /// </Appearance>
+    /// ```
+    ///
+    /// ## Clause
+    /// 19776-1 (XML encoding) 5.1.2 containerField; 19775-1 the parent's interface table.
+    pub static CONTAINER_FIELD_INVALID = {
+        severity: Error,
+        level: Fast,
+        clause: "19776-1 5.1.2",
+        versions: "all",
+        check: Some(check),
+    }
+}
+
+fn check(ctx: &mut Ctx) {
+    for (id, node) in ctx.doc.iter() {
+        let NodeKind::Known { def, .. } = node.kind else { continue };
+        for entry in node.fields.iter().filter(|e| e.origin == Origin::Children) {
+            let is_node_field = match &entry.field {
+                FieldRef::Schema { def, .. } => def.ty.scalar() == Scalar::Node,
+                FieldRef::Declared { ty, .. } => ty.is_none_or(|t| t.scalar() == Scalar::Node),
+                FieldRef::Unknown { .. } => false,
+            };
+            // Unknown child nodes get NODE_UNKNOWN; their default placement is a guess.
+            let children = entry.value.as_nodes().unwrap_or_default();
+            let any_known = children.iter().any(|c| ctx.doc.node(c.node).def().is_some());
+            if is_node_field || !any_known {
+                continue;
+            }
+            let node_fields = def.fields.iter().filter(|f| f.ty.scalar() == Scalar::Node).map(|f| f.name);
+            let mut diagnostic = Diagnostic::new(
+                &CONTAINER_FIELD_INVALID,
+                entry.name_span,
+                format!("containerField `{}` names no node field of {}", entry.name(), def.name),
+            )
+            .node(id)
+            .value(entry.name().to_string())
+            .help_opt(suggest::help(entry.name(), node_fields.clone()));
+            if diagnostic.help.is_none() {
+                let all: Vec<&str> = node_fields.collect();
+                if !all.is_empty() {
+                    diagnostic = diagnostic.help(format!("{}'s node fields: {}", def.name, all.join(", ")));
+                }
+            }
+            ctx.report(diagnostic);
+        }
+    }
+}

@@ -1,0 +1,47 @@
+//! FIELD_DEPRECATED: TextureProperties.borderColor and borderWidth in X3D 4.
+
+use crate::report::Diagnostic;
+use crate::validate::Ctx;
+
+crate::declare_rule! {
+    /// ## What it does
+    /// Reports TextureProperties `borderColor` or `borderWidth` set in an X3D 4.x scene.
+    ///
+    /// ## Why it matters
+    /// Texture borders are deprecated in X3D 4 (modern graphics APIs have no texture
+    /// borders); browsers ignore them.
+    ///
+    /// ## Example
+    /// ```xml
+    /// <TextureProperties borderWidth='1'/>
+    /// ```
+    ///
+    /// ## Clause
+    /// 19775-1 (4.x) 18.4.9 TextureProperties.
+    pub static FIELD_DEPRECATED = {
+        severity: Warning,
+        level: Fast,
+        clause: "18.4.9",
+        versions: "4.x",
+        check: Some(check),
+    }
+}
+
+fn check(ctx: &mut Ctx) {
+    if !ctx.version.is_4x() {
+        return;
+    }
+    for id in ctx.doc.nodes_of_type("TextureProperties") {
+        let node = ctx.doc.node(id);
+        for entry in node.fields.iter().filter(|e| matches!(e.name(), "borderColor" | "borderWidth")) {
+            ctx.report(
+                Diagnostic::new(
+                    &FIELD_DEPRECATED,
+                    entry.name_span,
+                    format!("TextureProperties.{} is deprecated in X3D 4 and ignored", entry.name()),
+                )
+                .node(id),
+            );
+        }
+    }
+}

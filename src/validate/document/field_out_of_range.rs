@@ -1,0 +1,169 @@
+//! FIELD_OUT_OF_RANGE: a value outside the range of the node's interface table.
+
+use super::failures;
+use crate::model::{FieldEntry, NodeId, Value};
+use crate::report::Diagnostic;
+use crate::schema::{Bound, FieldDef};
+use crate::validate::Ctx;
+
+crate::declare_rule! {
+    /// ## What it does
+    /// Reports a value outside the range printed in the node's interface table for the
+    /// document's version (e.g. light `intensity` is [0,1] in 3.x and [0,∞) in 4.x).
+    /// Every element of an MF value and every component of a vector is checked; one
+    /// diagnostic per field names the first offending element, its value, the range and
+    /// how many elements are out of range in all.
+    ///
+    /// Values are compared at the field's precision: SFFloat-based values as the f32 the
+    /// text rounds to, against the bound rounded to f32 (so `1.570796327` passes a
+    /// (0,π/2] bound and `1.571` does not); SFDouble and SFTime values in f64; integers
+    /// exactly. NaN is never in range; -0 equals 0.
+    ///
+    /// ## Why it matters
+    /// Browsers clamp, wrap or reject out-of-range values, each differently, so the scene
+    /// looks different in each.
+    ///
+    /// ## Example
+    /// ```xml
+    /// <Material diffuseColor='1.2 0 0' transparency='-0.5'/>
+    /// ```
+    ///
+    /// ## Clause
+    /// 19775-1 the node's interface table; 4.4.2.2 Field semantics.
+    pub static FIELD_OUT_OF_RANGE = {
+        severity: Error,
+        level: Fast,
+        clause: "4.4.2.2",
+        versions: "all",
+        check: Some(check),
+    }
+}
+
+fn check(ctx: &mut Ctx) {
+    for (id, node) in ctx.doc.iter() {
+        for entry in &node.fields {
+            let Some(def) = entry.schema_def() else { continue };
+            if def.min.is_none() && def.max.is_none() {
+                continue;
+            }
+            let outside = match &entry.value {
+                Value::Floats(v) => failures(v.iter().map(|&x| in_range_f32(x, def))),
+                Value::Doubles(v) => failures(v.iter().map(|&x| in_range_f64(x, def))),
+                Value::Int32s(v) => failures(v.iter().map(|&x| in_range_f64(f64::from(x), def))),
+                _ => continue,
+            };
+            if let Some((first, count)) = outside {
+                report(ctx, id, node.type_name(), entry, def, first, count);
+            }
+        }
+    }
+}
+
+fn report(ctx: &mut Ctx, id: NodeId, type_name: &str, entry: &FieldEntry, def: &FieldDef, first: usize, count: usize) {
+    let span = ctx.scalar_span(entry, first);
+    let text = String::from_utf8_lossy(ctx.source.get(span.range()).unwrap_or_default()).into_owned();
+    let arity = def.ty.arity();
+    let place = match (def.ty.is_mf(), arity) {
+        (true, 1) => format!("[{first}]"),
+        (true, _) => format!("[{}] component {}", first / arity, first % arity),
+        (false, 1) => String::new(),
+        (false, _) => format!(" component {first}"),
+    };
+    let more = if count > 1 { format!(" ({count} values out of range in all)") } else { String::new() };
+    let mut diagnostic = Diagnostic::new(
+        &FIELD_OUT_OF_RANGE,
+        span,
+        format!(
+            "{type_name}.{}{place} = {text} is outside {} in X3D {}{more}",
+            def.name,
+            range_text(def),
+            ctx.version
+        ),
+    )
+    .node(id)
+    .index(if def.ty.is_mf() { first / arity } else { first })
+    .value(text);
+    diagnostic.count = count;
+    ctx.report(diagnostic);
+}
+
+/// Single-precision values are compared with the bound rounded to f32, the precision
+/// the field has; NaN compares false everywhere and so is never in range.
+pub fn in_range_f32(value: f32, def: &FieldDef) -> bool {
+    let above = |b: Bound| if b.inclusive { value >= b.value as f32 } else { value > b.value as f32 };
+    let below = |b: Bound| if b.inclusive { value <= b.value as f32 } else { value < b.value as f32 };
+    def.min.is_none_or(above) && def.max.is_none_or(below) && !value.is_nan()
+}
+
+pub fn in_range_f64(value: f64, def: &FieldDef) -> bool {
+    let above = |b: Bound| if b.inclusive { value >= b.value } else { value > b.value };
+    let below = |b: Bound| if b.inclusive { value <= b.value } else { value < b.value };
+    def.min.is_none_or(above) && def.max.is_none_or(below) && !value.is_nan()
+}
+
+/// The range as the interface tables print it: `[0,1]`, `(0,π/2]`, `[0,∞)`.
+pub fn range_text(def: &FieldDef) -> String {
+    let number = |v: f64| {
+        if v == std::f64::consts::FRAC_PI_2 {
+            "π/2".to_string()
+        } else if v == std::f64::consts::PI {
+            "π".to_string()
+        } else {
+            format!("{v}")
+        }
+    };
+    let (open, low) = match def.min {
+        Some(b) => (if b.inclusive { '[' } else { '(' }, number(b.value)),
+        None => ('(', "-∞".to_string()),
+    };
+    let (high, close) = match def.max {
+        Some(b) => (number(b.value), if b.inclusive { ']' } else { ')' }),
+        None => ("∞".to_string(), ')'),
+    };
+    format!("{open}{low},{high}{close}")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::schema::{AccessType, FieldType};
+
+    fn def(min: Option<Bound>, max: Option<Bound>) -> FieldDef {
+        FieldDef {
+            name: "f",
+            ty: FieldType::SFFloat,
+            access: AccessType::InputOutput,
+            default: "",
+            min,
+            max,
+            enumeration: &[],
+            enumeration_strict: false,
+            acceptable: &[],
+            component: None,
+        }
+    }
+
+    #[test]
+    fn bounds_are_compared_in_f32() {
+        let half_pi = Bound { value: std::f64::consts::FRAC_PI_2, inclusive: true };
+        let zero_open = Bound { value: 0.0, inclusive: false };
+        let d = def(Some(zero_open), Some(half_pi));
+        assert!(in_range_f32("1.570796327".parse().unwrap(), &d));
+        assert!(!in_range_f32("1.571".parse().unwrap(), &d));
+        assert!(!in_range_f32(0.0, &d));
+        assert!(!in_range_f32(-0.0, &d));
+        assert!(in_range_f32(f32::from_bits(1), &d), "the smallest denormal is above 0");
+        assert!(!in_range_f32(f32::NAN, &d));
+        assert_eq!(range_text(&d), "(0,π/2]");
+    }
+
+    #[test]
+    fn unbounded_sides_accept_everything_finite_and_infinite() {
+        let d = def(Some(Bound { value: 0.0, inclusive: true }), None);
+        assert!(in_range_f32(f32::MAX, &d));
+        assert!(in_range_f32(f32::INFINITY, &d));
+        assert!(in_range_f32(-0.0, &d));
+        assert!(!in_range_f32(-f32::from_bits(1), &d));
+        assert_eq!(range_text(&d), "[0,∞)");
+    }
+}

@@ -1,0 +1,38 @@
+//! PROFILE_MISSING: the root has no `profile`.
+
+use crate::report::Diagnostic;
+use crate::validate::Ctx;
+
+crate::declare_rule! {
+    /// ## What it does
+    /// Reports an `X3D` root without a `profile` attribute.
+    ///
+    /// ## Why it matters
+    /// The profile tells a browser which components the scene needs; without one the
+    /// Full profile is assumed, so a browser that supports less may refuse the scene, and
+    /// component-level checks have nothing to measure against.
+    ///
+    /// ## Example
+    /// ```xml
+    /// <X3D version='4.0'><Scene/></X3D>
+    /// ```
+    ///
+    /// ## Clause
+    /// 19775-1 7.2.5.3 (PROFILE statement).
+    pub static PROFILE_MISSING = {
+        severity: Warning,
+        level: Fast,
+        clause: "7.2.5.3",
+        versions: "all",
+        check: Some(check),
+    }
+}
+
+fn check(ctx: &mut Ctx) {
+    if ctx.doc.profile.is_none() {
+        ctx.report(
+            Diagnostic::new(&PROFILE_MISSING, ctx.doc.root_span, "the X3D root has no `profile`; Full is assumed")
+                .help("add profile='Interchange' (or the smallest profile the scene fits)"),
+        );
+    }
+}

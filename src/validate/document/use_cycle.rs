@@ -1,0 +1,28 @@
+//! USE_CYCLE: reported by the model builder when a USE stands inside the node it names.
+//! The reference is left out of the model, so the graph stays acyclic for every later step.
+
+crate::declare_rule! {
+    /// ## What it does
+    /// Reports a node that is `USE`d inside itself.
+    ///
+    /// ## Why it matters
+    /// The scene graph is a directed acyclic graph; a cycle makes traversal endless and
+    /// browsers reject or hang on it.
+    ///
+    /// ## Example
+    /// ```xml
+    /// <Transform DEF='T'>
+    ///   <Transform USE='T'/>
+    /// </Transform>
+    /// ```
+    ///
+    /// ## Clause
+    /// 19775-1 4.3.2 Scene graph hierarchy; 4.4.3 DEF/USE semantics.
+    pub static USE_CYCLE = {
+        severity: Error,
+        level: Fast,
+        clause: "4.4.3",
+        versions: "all",
+        check: None,
+    }
+}

@@ -1,0 +1,125 @@
+//! What a rule is: its stable code, default severity, level and clause, and its docs.
+//! Each rule lives in a file of its own and is declared with [`declare_rule!`], whose doc
+//! comment is the single source of the rustdoc page, `x3dcheck rules CODE` and the docs.
+
+use std::fmt;
+
+use serde::Serialize;
+
+use super::Ctx;
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Severity {
+    Hint,
+    Info,
+    Warning,
+    Error,
+}
+
+impl Severity {
+    pub fn parse(text: &str) -> Option<Severity> {
+        Some(match text {
+            "error" => Severity::Error,
+            "warning" => Severity::Warning,
+            "info" => Severity::Info,
+            "hint" => Severity::Hint,
+            _ => return None,
+        })
+    }
+
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Severity::Error => "error",
+            Severity::Warning => "warning",
+            Severity::Info => "info",
+            Severity::Hint => "hint",
+        }
+    }
+}
+
+impl fmt::Display for Severity {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+/// How much checking is done: each level runs every rule of the levels below it.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, clap::ValueEnum)]
+#[serde(rename_all = "lowercase")]
+pub enum Level {
+    /// Syntax and schema.
+    Fast,
+    /// Adds cross-node semantics.
+    Standard,
+    /// Adds numeric analysis of geometry data and reading referenced files.
+    Deep,
+}
+
+impl Level {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Level::Fast => "fast",
+            Level::Standard => "standard",
+            Level::Deep => "deep",
+        }
+    }
+}
+
+/// A checking rule. Rules found while reading (syntax, DEF/USE) have no `check`: the
+/// readers and the model builder report them.
+pub struct Rule {
+    pub code: &'static str,
+    pub severity: Severity,
+    pub level: Level,
+    /// ISO/IEC 19775-1 clause (or 19776 encoding clause) the rule enforces.
+    pub clause: &'static str,
+    /// X3D versions where it applies, as the catalogue writes them: `all`, `4.x`, `4.1`.
+    pub versions: &'static str,
+    /// The rule's documentation (Markdown: What it does / Why it matters / Example / Clause).
+    pub doc: &'static str,
+    pub check: Option<fn(&mut Ctx)>,
+}
+
+impl Rule {
+    /// The first sentence under "What it does", for listings.
+    pub fn summary(&self) -> &'static str {
+        self.doc
+            .lines()
+            .map(str::trim)
+            .find(|l| !l.is_empty() && !l.starts_with('#'))
+            .unwrap_or("")
+    }
+}
+
+impl fmt::Debug for Rule {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.code)
+    }
+}
+
+/// Declares a rule: `declare_rule! { /// docs… pub static CODE = { severity, level, clause, versions, check } }`.
+#[macro_export]
+macro_rules! declare_rule {
+    (
+        $(#[doc = $doc:literal])*
+        pub static $code:ident = {
+            severity: $severity:ident,
+            level: $level:ident,
+            clause: $clause:literal,
+            versions: $versions:literal,
+            check: $check:expr $(,)?
+        }
+    ) => {
+        $(#[doc = $doc])*
+        pub static $code: $crate::validate::Rule = $crate::validate::Rule {
+            code: stringify!($code),
+            severity: $crate::validate::Severity::$severity,
+            level: $crate::validate::Level::$level,
+            clause: $clause,
+            versions: $versions,
+            doc: concat!($($doc, "\n"),*),
+            check: $check,
+        };
+    };
+}

@@ -1,0 +1,77 @@
+//! The number scanners agree bit for bit with the standard library's correctly rounded
+//! parsers.
+
+use proptest::prelude::*;
+use x3dcheck::parse::number::{parse_f32, parse_f64, parse_i32};
+
+fn check_f32(text: &str) {
+    let ours = parse_f32(text.as_bytes()).map(f32::to_bits);
+    let std = text.parse::<f32>().ok().map(f32::to_bits);
+    assert_eq!(ours, std, "{text:?}");
+}
+
+fn check_f64(text: &str) {
+    let ours = parse_f64(text.as_bytes()).map(f64::to_bits);
+    let std = text.parse::<f64>().ok().map(f64::to_bits);
+    assert_eq!(ours, std, "{text:?}");
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    #[test]
+    fn f32_round_trips(bits in any::<u32>()) {
+        let x = f32::from_bits(bits);
+        prop_assume!(x.is_finite());
+        for text in [format!("{x}"), format!("{x:e}"), format!("{x:?}"), format!("{x:.3}"), format!("{x:.12e}")] {
+            check_f32(&text);
+        }
+        prop_assert_eq!(parse_f32(format!("{x:e}").as_bytes()).map(f32::to_bits), Some(bits));
+    }
+
+    #[test]
+    fn f64_round_trips(bits in any::<u64>()) {
+        let x = f64::from_bits(bits);
+        prop_assume!(x.is_finite());
+        for text in [format!("{x}"), format!("{x:e}"), format!("{x:?}"), format!("{x:.3}"), format!("{x:.20e}")] {
+            check_f64(&text);
+        }
+        prop_assert_eq!(parse_f64(format!("{x:e}").as_bytes()).map(f64::to_bits), Some(bits));
+    }
+
+    /// Decimal text near the midpoint between two neighbouring f32 values: the hard cases
+    /// for correct rounding, and the ones a conversion through f64 gets wrong.
+    #[test]
+    fn f32_near_midpoints(bits in 0u32..0x7f7f_ffff, digits in 8usize..20) {
+        let low = f32::from_bits(bits) as f64;
+        let high = f32::from_bits(bits + 1) as f64;
+        let mid = (low + high) / 2.0; // exact in f64
+        let below = f64::from_bits(mid.to_bits() - 1);
+        let above = f64::from_bits(mid.to_bits() + 1);
+        for v in [mid, below, above] {
+            check_f32(&format!("{v:e}"));
+            check_f32(&format!("{v:.digits$e}"));
+            check_f32(&format!("{v}"));
+        }
+    }
+
+    #[test]
+    fn random_decimal_text(text in "[+-]?[0-9]{0,22}(\\.[0-9]{0,22})?([eE][+-]?[0-9]{1,3})?") {
+        check_f32(&text);
+        check_f64(&text);
+    }
+
+    #[test]
+    fn short_decimal_text(text in "-?(0|[1-9][0-9]{0,8})\\.[0-9]{1,9}(e-?[0-9]{1,2})?") {
+        check_f32(&text);
+        check_f64(&text);
+    }
+
+    #[test]
+    fn i32_agrees_with_std(x in any::<i64>()) {
+        let text = x.to_string();
+        prop_assert_eq!(parse_i32(text.as_bytes()), text.parse::<i32>().ok());
+        let small = (x as i32).to_string();
+        prop_assert_eq!(parse_i32(small.as_bytes()), Some(x as i32));
+    }
+}

@@ -1,0 +1,69 @@
+//! Every real scene of `../shared/corpus` is checked without a panic, and every diagnostic
+//! has a place. The corpus is read from beside the repository, never copied in.
+
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use x3dcheck::config::CheckConfig;
+use x3dcheck::validate::Level;
+
+/// Generous: the largest corpus file takes milliseconds; this only catches hangs.
+const MAX_SECONDS_PER_FILE: u64 = 20;
+
+fn corpus_files(extensions: &[&str]) -> Vec<PathBuf> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus");
+    assert!(root.is_dir(), "../shared/corpus is missing: {}", root.display());
+    let mut files = Vec::new();
+    let mut dirs = vec![root];
+    while let Some(dir) = dirs.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap().flatten() {
+            let path = entry.path();
+            if entry.file_type().unwrap().is_dir() {
+                dirs.push(path);
+            } else if path
+                .extension()
+                .and_then(|e| e.to_str())
+                .is_some_and(|e| extensions.contains(&e.to_ascii_lowercase().as_str()))
+            {
+                files.push(path);
+            }
+        }
+    }
+    files.sort();
+    files
+}
+
+fn check_all(extensions: &[&str]) {
+    let files = corpus_files(extensions);
+    assert!(!files.is_empty());
+    let config = CheckConfig { level: Level::Deep, ..CheckConfig::default() };
+    let mut problems = Vec::new();
+    for path in &files {
+        let source = std::fs::read(path).unwrap();
+        let started = Instant::now();
+        let name = path.display().to_string();
+        let result = std::panic::catch_unwind(|| x3dcheck::check_source(&name, &source, &config));
+        let Ok(report) = result else {
+            problems.push(format!("{name}: panicked"));
+            continue;
+        };
+        if started.elapsed() > Duration::from_secs(MAX_SECONDS_PER_FILE) {
+            problems.push(format!("{name}: took {:?}", started.elapsed()));
+        }
+        for d in &report.diagnostics {
+            if d.line == 0 || d.column == 0 || d.path.is_empty() || d.clause.is_empty() || d.message.is_empty() {
+                problems.push(format!("{name}: {} lacks a place, path, clause or message: {d:?}", d.code));
+            }
+        }
+        let json = x3dcheck::report::json::render(std::slice::from_ref(&report));
+        if let Err(e) = serde_json::from_str::<serde_json::Value>(&json) {
+            problems.push(format!("{name}: JSON report does not parse: {e}"));
+        }
+    }
+    assert!(problems.is_empty(), "{} of {} files:\n{}", problems.len(), files.len(), problems.join("\n"));
+}
+
+#[test]
+fn every_xml_scene_is_checked_cleanly() {
+    check_all(&["x3d"]);
+}
