@@ -155,11 +155,7 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
         .iter()
         .flat_map(|r| &r.diagnostics)
         .any(|d| d.severity >= fail_level);
-    Ok(ExitCode::from(if failed {
-        USAGE
-    } else {
-        u8::from(fails)
-    }))
+    Ok(ExitCode::from(if failed { USAGE } else { u8::from(fails) }))
 }
 
 fn config(args: &CheckArgs) -> Result<CheckConfig, String> {
@@ -169,10 +165,14 @@ fn config(args: &CheckArgs) -> Result<CheckConfig, String> {
         ..CheckConfig::default()
     };
     for code in &args.select {
-        config.select.insert(known_rule(code, "--select")?.code.to_string());
+        config
+            .select
+            .insert(known_rule(code, "--select")?.code.to_string());
     }
     for code in &args.ignore {
-        config.ignore.insert(known_rule(code, "--ignore")?.code.to_string());
+        config
+            .ignore
+            .insert(known_rule(code, "--ignore")?.code.to_string());
     }
     for item in &args.severity {
         let (code, level) = item
@@ -200,7 +200,7 @@ fn known_rule(code: &str, option: &str) -> Result<&'static Rule, String> {
         .max_by(|a, b| a.0.total_cmp(&b.0));
     let hint = nearest.map_or(String::new(), |(_, c)| format!(" (did you mean `{c}`?)"));
     Err(format!(
-        "unknown rule code `{code}` in {option}{hint}; `x3dcheck rules` lists them"
+        "{option}: unknown rule code `{code}`{hint}; `x3dcheck rules` lists the codes"
     ))
 }
 
@@ -270,9 +270,11 @@ fn walk(dir: &Path, files: &mut Vec<PathBuf>, fail: &mut impl FnMut(&Path, io::E
 }
 
 fn is_x3d_name(path: &Path) -> bool {
-    path.extension()
-        .and_then(|e| e.to_str())
-        .is_some_and(|e| ["x3d", "x3dj", "json"].iter().any(|x| e.eq_ignore_ascii_case(x)))
+    path.extension().and_then(|e| e.to_str()).is_some_and(|e| {
+        ["x3d", "x3dj", "json"]
+            .iter()
+            .any(|x| e.eq_ignore_ascii_case(x))
+    })
 }
 
 fn read_stdin() -> io::Result<Vec<u8>> {
@@ -305,7 +307,10 @@ type Outcome = Result<(FileReport, String), String>;
 
 fn check_input(input: &Input, config: &CheckConfig, format: Format, color: bool) -> Outcome {
     let (name, bytes) = match input {
-        Input::Stdin(bytes) => ("<stdin>".to_string(), std::borrow::Cow::Borrowed(&bytes[..])),
+        Input::Stdin(bytes) => (
+            "<stdin>".to_string(),
+            std::borrow::Cow::Borrowed(&bytes[..]),
+        ),
         Input::File(path) => {
             let name = path.display().to_string();
             match read_file(path) {
@@ -329,7 +334,9 @@ fn check_input(input: &Input, config: &CheckConfig, format: Format, color: bool)
 
 fn write_output(output: Option<&Path>, text: &str) -> Result<(), String> {
     match output {
-        Some(path) => fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display())),
+        Some(path) => {
+            fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))
+        }
         None => io::stdout()
             .lock()
             .write_all(text.as_bytes())
@@ -341,24 +348,29 @@ fn rules(code: Option<&str>) -> Result<ExitCode, String> {
     let mut out = String::new();
     match code {
         None => {
-            let width = RULES.iter().map(|r| r.code.len()).max().unwrap_or(4);
-            out.push_str(&format!(
-                "{:width$}  SEVERITY  LEVEL     VERSIONS  CLAUSE    SUMMARY\n",
-                "CODE"
-            ));
-            for rule in RULES {
-                out.push_str(&format!(
-                    "{:width$}  {:8}  {:8}  {:8}  {:8}  {}\n",
-                    rule.code,
-                    rule.severity.as_str(),
-                    rule.level.as_str(),
-                    rule.versions,
-                    rule.clause,
-                    rule.summary()
-                ));
+            let mut rows = vec![["CODE", "SEVERITY", "LEVEL", "VERSIONS", "CLAUSE", "SUMMARY"]];
+            rows.extend(RULES.iter().map(|r| {
+                [
+                    r.code,
+                    r.severity.as_str(),
+                    r.level.as_str(),
+                    r.versions,
+                    r.clause,
+                    r.summary(),
+                ]
+            }));
+            let widths: Vec<usize> = (0..5)
+                .map(|column| rows.iter().map(|row| row[column].len()).max().unwrap_or(0))
+                .collect();
+            for row in rows {
+                for (cell, width) in row.iter().zip(&widths) {
+                    out.push_str(&format!("{cell:width$}  "));
+                }
+                out.push_str(row[5]);
+                out.push('\n');
             }
         }
-        Some(code) => out = explain(known_rule(code, "`x3dcheck rules`")?),
+        Some(code) => out = explain(known_rule(code, "rules")?),
     }
     write_output(None, &out)?;
     Ok(ExitCode::SUCCESS)

@@ -12,7 +12,11 @@ const MAX_SECONDS_PER_FILE: u64 = 20;
 
 fn corpus_files(extensions: &[&str]) -> Vec<PathBuf> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus");
-    assert!(root.is_dir(), "../shared/corpus is missing: {}", root.display());
+    assert!(
+        root.is_dir(),
+        "../shared/corpus is missing: {}",
+        root.display()
+    );
     let mut files = Vec::new();
     let mut dirs = vec![root];
     while let Some(dir) = dirs.pop() {
@@ -36,7 +40,10 @@ fn corpus_files(extensions: &[&str]) -> Vec<PathBuf> {
 fn check_all(extensions: &[&str]) {
     let files = corpus_files(extensions);
     assert!(!files.is_empty());
-    let config = CheckConfig { level: Level::Deep, ..CheckConfig::default() };
+    let config = CheckConfig {
+        level: Level::Deep,
+        ..CheckConfig::default()
+    };
     let mut problems = Vec::new();
     for path in &files {
         let source = std::fs::read(path).unwrap();
@@ -51,8 +58,16 @@ fn check_all(extensions: &[&str]) {
             problems.push(format!("{name}: took {:?}", started.elapsed()));
         }
         for d in &report.diagnostics {
-            if d.line == 0 || d.column == 0 || d.path.is_empty() || d.clause.is_empty() || d.message.is_empty() {
-                problems.push(format!("{name}: {} lacks a place, path, clause or message: {d:?}", d.code));
+            if d.line == 0
+                || d.column == 0
+                || d.path.is_empty()
+                || d.clause.is_empty()
+                || d.message.is_empty()
+            {
+                problems.push(format!(
+                    "{name}: {} lacks a place, path, clause or message: {d:?}",
+                    d.code
+                ));
             }
         }
         let json = x3dcheck::report::json::render(std::slice::from_ref(&report));
@@ -60,7 +75,13 @@ fn check_all(extensions: &[&str]) {
             problems.push(format!("{name}: JSON report does not parse: {e}"));
         }
     }
-    assert!(problems.is_empty(), "{} of {} files:\n{}", problems.len(), files.len(), problems.join("\n"));
+    assert!(
+        problems.is_empty(),
+        "{} of {} files:\n{}",
+        problems.len(),
+        files.len(),
+        problems.join("\n")
+    );
 }
 
 #[test]

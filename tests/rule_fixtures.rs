@@ -9,18 +9,31 @@ use std::path::{Path, PathBuf};
 use x3dcheck::config::CheckConfig;
 use x3dcheck::validate::{Level, RULES};
 
-const DOC_SECTIONS: [&str; 4] = ["## What it does", "## Why it matters", "## Example", "## Clause"];
+const DOC_SECTIONS: [&str; 4] = [
+    "## What it does",
+    "## Why it matters",
+    "## Example",
+    "## Clause",
+];
 
 fn fixture_dir(code: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus/rules").join(code)
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("corpus/rules")
+        .join(code)
 }
 
 /// The scenes in a rule's fixture folder whose name starts with `stem` (`fail`, `pass`).
 fn scenes(code: &str, stem: &str) -> Vec<PathBuf> {
-    let Ok(entries) = fs::read_dir(fixture_dir(code)) else { return Vec::new() };
+    let Ok(entries) = fs::read_dir(fixture_dir(code)) else {
+        return Vec::new();
+    };
     let mut found: Vec<PathBuf> = entries
         .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.file_name().and_then(|n| n.to_str()).is_some_and(|n| n.starts_with(stem)))
+        .filter(|p| {
+            p.file_name()
+                .and_then(|n| n.to_str())
+                .is_some_and(|n| n.starts_with(stem))
+        })
         .collect();
     found.sort();
     found
@@ -29,10 +42,21 @@ fn scenes(code: &str, stem: &str) -> Vec<PathBuf> {
 /// The concise report of one scene, with its path relative to the crate.
 fn report(path: &Path) -> (Vec<String>, String) {
     let source = fs::read(path).unwrap();
-    let relative = path.strip_prefix(env!("CARGO_MANIFEST_DIR")).unwrap().to_string_lossy().into_owned();
-    let config = CheckConfig { level: Level::Deep, ..CheckConfig::default() };
+    let relative = path
+        .strip_prefix(env!("CARGO_MANIFEST_DIR"))
+        .unwrap()
+        .to_string_lossy()
+        .into_owned();
+    let config = CheckConfig {
+        level: Level::Deep,
+        ..CheckConfig::default()
+    };
     let file = x3dcheck::check_source(&relative, &source, &config);
-    let codes = file.diagnostics.iter().map(|d| d.code.to_string()).collect();
+    let codes = file
+        .diagnostics
+        .iter()
+        .map(|d| d.code.to_string())
+        .collect();
     (codes, x3dcheck::report::concise::render(&file))
 }
 
@@ -49,7 +73,11 @@ fn every_rule_has_docs() {
             missing.push(format!("{}: empty summary", rule.code));
         }
     }
-    assert!(missing.is_empty(), "rule docs incomplete:\n{}", missing.join("\n"));
+    assert!(
+        missing.is_empty(),
+        "rule docs incomplete:\n{}",
+        missing.join("\n")
+    );
 }
 
 #[test]
@@ -59,25 +87,44 @@ fn every_rule_has_a_failing_and_a_passing_scene() {
         let failing = scenes(rule.code, "fail");
         let passing = scenes(rule.code, "pass");
         if failing.is_empty() {
-            problems.push(format!("{}: no corpus/rules/{}/fail.* scene", rule.code, rule.code));
+            problems.push(format!(
+                "{}: no corpus/rules/{}/fail.* scene",
+                rule.code, rule.code
+            ));
         }
         if passing.is_empty() {
-            problems.push(format!("{}: no corpus/rules/{}/pass.* scene", rule.code, rule.code));
+            problems.push(format!(
+                "{}: no corpus/rules/{}/pass.* scene",
+                rule.code, rule.code
+            ));
         }
         for path in &failing {
             let (codes, text) = report(path);
             if !codes.iter().any(|c| c == rule.code) {
-                problems.push(format!("{}: {} does not trigger it; it reports:\n{text}", rule.code, path.display()));
+                problems.push(format!(
+                    "{}: {} does not trigger it; it reports:\n{text}",
+                    rule.code,
+                    path.display()
+                ));
             }
         }
         for path in &passing {
             let (codes, text) = report(path);
             if codes.iter().any(|c| c == rule.code) {
-                problems.push(format!("{}: {} triggers it:\n{text}", rule.code, path.display()));
+                problems.push(format!(
+                    "{}: {} triggers it:\n{text}",
+                    rule.code,
+                    path.display()
+                ));
             }
         }
     }
-    assert!(problems.is_empty(), "{} fixture problems:\n{}", problems.len(), problems.join("\n"));
+    assert!(
+        problems.is_empty(),
+        "{} fixture problems:\n{}",
+        problems.len(),
+        problems.join("\n")
+    );
 }
 
 #[test]
@@ -85,7 +132,14 @@ fn failing_scene_reports_are_pinned() {
     for rule in RULES {
         for path in scenes(rule.code, "fail") {
             let (_, text) = report(&path);
-            let name = format!("{}__{}", rule.code, path.file_name().unwrap().to_string_lossy().replace('.', "_"));
+            let name = format!(
+                "{}__{}",
+                rule.code,
+                path.file_name()
+                    .unwrap()
+                    .to_string_lossy()
+                    .replace('.', "_")
+            );
             insta::assert_snapshot!(name, text);
         }
     }

@@ -2,8 +2,8 @@
 //! refuses any entry that no longer matches what the UOM says, so that an entry whose node
 //! or field was renamed or dropped fails the build instead of silently doing nothing.
 
-use crate::overrides::{Change, FieldOverride, NewField, NodeOverride};
-use crate::overrides::{FIELD_OVERRIDES, NODE_OVERRIDES};
+use crate::overrides::{Change, ComponentOverride, FieldOverride, NewField, NodeOverride};
+use crate::overrides::{COMPONENT_OVERRIDES, FIELD_OVERRIDES, NODE_OVERRIDES};
 use crate::types::ComponentLevel;
 use crate::uom::{self, Component, Field, Schema};
 
@@ -43,6 +43,43 @@ pub fn apply(schema: &mut Schema, applied: &mut Applied) -> Result<(), String> {
     }
     // Levels may have moved: the highest level of each component is taken afresh.
     schema.components = uom::component_levels(&schema.nodes);
+    for entry in COMPONENT_OVERRIDES
+        .iter()
+        .filter(|o| o.versions.contains(&version))
+    {
+        apply_component(schema, entry, applied).map_err(|e| {
+            format!(
+                "src/schema/overrides.rs: {version} component {} ({}): {e}",
+                entry.component, entry.clause
+            )
+        })?;
+    }
+    Ok(())
+}
+
+fn apply_component(
+    schema: &mut Schema,
+    entry: &ComponentOverride,
+    applied: &mut Applied,
+) -> Result<(), String> {
+    let max = schema
+        .components
+        .get_mut(entry.component)
+        .ok_or("no node of this version belongs to the component")?;
+    if *max > entry.max_level {
+        return Err(format!(
+            "nodes or fields need level {max}, above the stated highest level"
+        ));
+    }
+    if *max == entry.max_level {
+        applied.no_ops.push(format!(
+            "{} component {} ({})",
+            schema.version, entry.component, entry.clause
+        ));
+    } else {
+        *max = entry.max_level;
+        applied.changes += 1;
+    }
     Ok(())
 }
 
@@ -129,6 +166,7 @@ fn modify(fields: &mut Vec<Field>, position: usize, change: &Change) -> bool {
             field.component = new;
             !same
         }
+        Change::Strict => replace(&mut field.enumeration_strict, true),
         Change::Remove => {
             fields.remove(position);
             true
@@ -155,9 +193,10 @@ fn apply_node(
         .ok_or("no such concrete node in this version")?;
     let new = component(entry.component);
     if node.component.name == new.name && node.component.level == new.level {
-        applied
-            .no_ops
-            .push(format!("{} {} ({})", schema.version, entry.node, entry.clause));
+        applied.no_ops.push(format!(
+            "{} {} ({})",
+            schema.version, entry.node, entry.clause
+        ));
     } else {
         node.component = new;
         applied.changes += 1;
@@ -310,7 +349,11 @@ mod tests {
             }),
         );
         apply_field(&mut schema, &add, &mut applied).unwrap();
-        let names: Vec<&str> = schema.nodes[0].fields.iter().map(|f| f.name.as_str()).collect();
+        let names: Vec<&str> = schema.nodes[0]
+            .fields
+            .iter()
+            .map(|f| f.name.as_str())
+            .collect();
         assert_eq!(names, ["attenuation", "intensity"]);
     }
 }

@@ -5,7 +5,7 @@
 use std::collections::BTreeMap;
 use std::fmt::Write;
 
-use crate::overrides::{FIELD_OVERRIDES, NODE_OVERRIDES};
+use crate::overrides::{COMPONENT_OVERRIDES, FIELD_OVERRIDES, NODE_OVERRIDES};
 use crate::types::{Bound, Version};
 use crate::uom::{Component, Field, Schema};
 
@@ -28,12 +28,13 @@ pub fn render(schemas: &[Schema]) -> String {
     out.push_str(" (the X3D Unified Object Model of each version),\n");
     writeln!(
         out,
-        "// with the corrections of src/schema/overrides.rs applied ({} field and {} node overrides),",
+        "// with the corrections of src/schema/overrides.rs applied ({} field, {} node and {} component\n\
+         // overrides), where the specification clauses in ../shared/spec differ from the UOM.",
         FIELD_OVERRIDES.len(),
-        NODE_OVERRIDES.len()
+        NODE_OVERRIDES.len(),
+        COMPONENT_OVERRIDES.len()
     )
     .unwrap();
-    out.push_str("// where the specification clauses in ../shared/spec differ from the UOM.\n");
     // The UOM's bounds include 3.1416 and 1.5708; they are the spec's values, not stand-ins
     // for the std constants that clippy would suggest.
     out.push_str("#![allow(clippy::approx_constant)]\n\n");

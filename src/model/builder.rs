@@ -6,8 +6,8 @@ use super::*;
 use crate::report::Diagnostic;
 use crate::schema::{self, Version};
 use crate::validate::document::{
-    def_duplicate::DEF_DUPLICATE, field_duplicate::FIELD_DUPLICATE, use_cycle::USE_CYCLE, use_type_mismatch::USE_TYPE_MISMATCH,
-    use_undefined::USE_UNDEFINED,
+    def_duplicate::DEF_DUPLICATE, field_duplicate::FIELD_DUPLICATE, use_cycle::USE_CYCLE,
+    use_type_mismatch::USE_TYPE_MISMATCH, use_undefined::USE_UNDEFINED,
 };
 
 /// Where a node being added goes.
@@ -118,8 +118,12 @@ impl Builder {
                 }
             }
             NodeKind::ProtoInstance { proto, .. } => {
-                let declared = proto
-                    .and_then(|p| self.doc.protos[p].interface.iter().find(|f| f.name.text == name));
+                let declared = proto.and_then(|p| {
+                    self.doc.protos[p]
+                        .interface
+                        .iter()
+                        .find(|f| f.name.text == name)
+                });
                 return FieldRef::Declared {
                     name: name.to_string(),
                     ty: declared.and_then(|f| f.ty),
@@ -191,7 +195,11 @@ impl Builder {
                 }
             }
         };
-        if let Some(child) = siblings.iter_mut().rev().find(|c| c.node == id && !c.is_use) {
+        if let Some(child) = siblings
+            .iter_mut()
+            .rev()
+            .find(|c| c.node == id && !c.is_use)
+        {
             child.span = span;
         }
     }
@@ -247,7 +255,10 @@ impl Builder {
                 Diagnostic::new(
                     &USE_CYCLE,
                     name.span,
-                    format!("USE `{}` stands inside the node it names: the scene graph would be cyclic", name.text),
+                    format!(
+                        "USE `{}` stands inside the node it names: the scene graph would be cyclic",
+                        name.text
+                    ),
                 )
                 .node(target)
                 .value(name.text.clone()),
@@ -322,7 +333,9 @@ impl Builder {
                 origin,
             } => {
                 let entry = self.node_field_entry(node, field, field_span, origin, child.span);
-                if let Value::Nodes(children) = &mut self.doc.nodes[node.index()].fields[entry].value {
+                if let Value::Nodes(children) =
+                    &mut self.doc.nodes[node.index()].fields[entry].value
+                {
                     children.push(child);
                 }
                 Place::Field {
@@ -343,10 +356,9 @@ impl Builder {
         first_child: Span,
     ) -> usize {
         let fields = &self.doc.nodes[node.index()].fields;
-        if let Some(i) = fields
-            .iter()
-            .position(|e| e.name() == field && matches!(e.value, Value::Nodes(_)) && e.origin == origin)
-        {
+        if let Some(i) = fields.iter().position(|e| {
+            e.name() == field && matches!(e.value, Value::Nodes(_)) && e.origin == origin
+        }) {
             return i;
         }
         if let Some(first) = fields.iter().find(|e| e.name() == field) {
@@ -379,7 +391,10 @@ impl Builder {
             let diagnostic = Diagnostic::new(
                 &FIELD_DUPLICATE,
                 entry.name_span,
-                format!("field `{}` is given twice; the first value is kept", entry.name()),
+                format!(
+                    "field `{}` is given twice; the first value is kept",
+                    entry.name()
+                ),
             )
             .node(node)
             .related(first.name_span, "first given here");

@@ -179,10 +179,7 @@ pub enum FieldRef {
     },
     /// A field declared by the document: a ProtoInstance's fieldValue, typed by the
     /// ProtoDeclare when known.
-    Declared {
-        name: String,
-        ty: Option<FieldType>,
-    },
+    Declared { name: String, ty: Option<FieldType> },
     /// A name the node's type does not have in any version.
     Unknown { name: String },
 }
@@ -329,7 +326,10 @@ impl Document {
 
     /// Every node with its id, in document order.
     pub fn iter(&self) -> impl Iterator<Item = (NodeId, &Node)> {
-        self.nodes.iter().enumerate().map(|(i, n)| (NodeId(i as u32), n))
+        self.nodes
+            .iter()
+            .enumerate()
+            .map(|(i, n)| (NodeId(i as u32), n))
     }
 
     pub fn node_ids(&self) -> impl Iterator<Item = NodeId> {

@@ -27,7 +27,6 @@ pub mod tree;
 pub mod value;
 
 use std::borrow::Cow;
-use std::collections::HashSet;
 
 use tree::{Kind, Tree};
 
@@ -56,7 +55,11 @@ pub fn read(source: &[u8]) -> Parsed {
         Err(error) => {
             let at = error.valid_up_to();
             let len = error.error_len().unwrap_or(source.len() - at);
-            return failed(malformed(at, len, &format!("invalid UTF-8 at byte {at}: JSON text is UTF-8")));
+            return failed(malformed(
+                at,
+                len,
+                &format!("invalid UTF-8 at byte {at}: JSON text is UTF-8"),
+            ));
         }
     };
     let tree = match tree::parse(text) {
@@ -83,13 +86,23 @@ pub fn read(source: &[u8]) -> Parsed {
 }
 
 fn malformed(at: usize, len: usize, message: &str) -> Diagnostic {
-    Diagnostic::new(&JSON_MALFORMED, Span::new(at, at + len), format!("not valid JSON: {message}"))
+    Diagnostic::new(
+        &JSON_MALFORMED,
+        Span::new(at, at + len),
+        format!("not valid JSON: {message}"),
+    )
 }
 
 /// The `"X3D"` member of the top-level object: its key and value.
 fn root(t: &Tree) -> Result<(usize, usize), Diagnostic> {
     let top = 0;
-    let not_x3d = |message: String| Err(Diagnostic::new(&ROOT_NOT_X3D, span(t.full_span(top)), message));
+    let not_x3d = |message: String| {
+        Err(Diagnostic::new(
+            &ROOT_NOT_X3D,
+            span(t.full_span(top)),
+            message,
+        ))
+    };
     if t.kind(top) != Kind::Object {
         return not_x3d(format!(
             "the top-level JSON value is {}, not an object with an `X3D` member",
@@ -97,15 +110,28 @@ fn root(t: &Tree) -> Result<(usize, usize), Diagnostic> {
         ));
     }
     let Some((key, value)) = t.get(top, "X3D") else {
-        let keys: Vec<String> = t.members(top).take(3).map(|(k, _)| format!("`{}`", t.str(k))).collect();
-        let found = if keys.is_empty() { "no member".to_string() } else { format!("{}", keys.join(", ")) };
-        return not_x3d(format!("the top-level object has no `X3D` member (found {found})"));
+        let keys: Vec<String> = t
+            .members(top)
+            .take(3)
+            .map(|(k, _)| format!("`{}`", t.str(k)))
+            .collect();
+        let found = if keys.is_empty() {
+            "no member".to_string()
+        } else {
+            format!("{}", keys.join(", "))
+        };
+        return not_x3d(format!(
+            "the top-level object has no `X3D` member (found {found})"
+        ));
     };
     if t.kind(value) != Kind::Object {
         return Err(Diagnostic::new(
             &ROOT_NOT_X3D,
             span(t.full_span(value)),
-            format!("`X3D` must be an object, found {}", value::describe(t, value)),
+            format!(
+                "`X3D` must be an object, found {}",
+                value::describe(t, value)
+            ),
         ));
     }
     Ok((key, value))
@@ -146,7 +172,10 @@ impl<'s> Ctx<'s> {
                 field_span: *field_span,
                 origin: *origin,
             },
-            Ctx::ProtoField { proto, field } => Parent::ProtoField { proto: *proto, field },
+            Ctx::ProtoField { proto, field } => Parent::ProtoField {
+                proto: *proto,
+                field,
+            },
         }
     }
 
@@ -154,8 +183,14 @@ impl<'s> Ctx<'s> {
     fn describe(&self) -> String {
         match self {
             Ctx::TopLevel => "`-children`".to_string(),
-            Ctx::Field { field, origin: Origin::Member, .. } => format!("`-{field}`"),
-            Ctx::Field { field, .. } | Ctx::ProtoField { field, .. } => format!("the nodes of `{field}`"),
+            Ctx::Field {
+                field,
+                origin: Origin::Member,
+                ..
+            } => format!("`-{field}`"),
+            Ctx::Field { field, .. } | Ctx::ProtoField { field, .. } => {
+                format!("the nodes of `{field}`")
+            }
         }
     }
 }
@@ -206,7 +241,16 @@ struct JsonReader<'t, 's> {
 fn is_node_statement_key(key: &str) -> bool {
     matches!(
         key,
-        "@DEF" | "@USE" | "@containerField" | "@class" | "@id" | "@style" | "IS" | "field" | "fieldValue" | "#sourceCode"
+        "@DEF"
+            | "@USE"
+            | "@containerField"
+            | "@class"
+            | "@id"
+            | "@style"
+            | "IS"
+            | "field"
+            | "fieldValue"
+            | "#sourceCode"
     )
 }
 
@@ -251,7 +295,9 @@ impl<'t, 's> JsonReader<'t, 's> {
                 let found = value::describe(self.t, value);
                 self.syntax(
                     self.t.full_span(value),
-                    format!("{what} takes a node object or an array of node objects, found {found}"),
+                    format!(
+                        "{what} takes a node object or an array of node objects, found {found}"
+                    ),
                 );
             }
         }
@@ -260,33 +306,54 @@ impl<'t, 's> JsonReader<'t, 's> {
     /// Reports the repeated keys of object `object` that `filter` selects.
     fn duplicate_keys(&mut self, object: usize, filter: impl Fn(&str) -> bool) {
         let t = self.t;
-        if t.item(object).len < 2 {
+        let count = t.item(object).len as usize;
+        if count < 2 {
             return;
         }
-        let mut seen: HashSet<Cow<'s, str>> = HashSet::new();
-        let mut first: Vec<(Cow<'s, str>, Span)> = Vec::new();
-        for (key, _) in t.members(object) {
-            let name = t.str(key);
-            if name.starts_with("#comment") || !filter(&name) {
-                continue;
-            }
-            let key_span = span(t.span(key));
-            if seen.contains(&name) {
-                let related = first.iter().find(|(n, _)| *n == name).map(|(_, s)| *s);
-                let mut diagnostic = Diagnostic::new(
-                    &FIELD_DUPLICATE,
-                    key_span,
-                    format!("`{name}` is given twice in one object; JSON parsers keep only one of them"),
-                )
-                .value(name.to_string());
-                if let Some(related) = related {
-                    diagnostic = diagnostic.related(related, "first given here");
+        let selected = |k: usize| {
+            let name = t.str(k);
+            (!name.starts_with("#comment") && filter(&name)).then_some(name)
+        };
+        // Small objects (nearly all) are compared pairwise, without allocating.
+        let mut repeats: Vec<(usize, usize)> = Vec::new();
+        if count <= 16 {
+            for (j, (key, _)) in t.members(object).enumerate() {
+                let Some(name) = selected(key) else { continue };
+                let first = t
+                    .members(object)
+                    .take(j)
+                    .map(|(k, _)| k)
+                    .find(|&k| t.key_is(k, &name));
+                if let Some(first) = first {
+                    repeats.push((first, key));
                 }
-                self.report(diagnostic);
-            } else {
-                first.push((name.clone(), key_span));
-                seen.insert(name);
             }
+        } else {
+            let mut seen: std::collections::HashMap<Cow<'s, str>, usize> =
+                std::collections::HashMap::new();
+            for (key, _) in t.members(object) {
+                let Some(name) = selected(key) else { continue };
+                match seen.get(&name) {
+                    Some(&first) => repeats.push((first, key)),
+                    None => {
+                        seen.insert(name, key);
+                    }
+                }
+            }
+        }
+        for (first, key) in repeats {
+            let name = t.str(key);
+            self.report(
+                Diagnostic::new(
+                    &FIELD_DUPLICATE,
+                    span(t.span(key)),
+                    format!(
+                        "`{name}` is given twice in one object; JSON parsers keep only one of them"
+                    ),
+                )
+                .value(name.to_string())
+                .related(span(t.span(first)), "first given here"),
+            );
         }
     }
 
@@ -300,7 +367,10 @@ impl<'t, 's> JsonReader<'t, 's> {
         }
         let found = value::describe(self.t, value);
         let key_name = self.t.str(key);
-        self.syntax(self.t.full_span(value), format!("`{key_name}` takes a string, found {found}"));
+        self.syntax(
+            self.t.full_span(value),
+            format!("`{key_name}` takes a string, found {found}"),
+        );
         None
     }
 
@@ -355,11 +425,17 @@ impl<'t, 's> JsonReader<'t, 's> {
             }
         }
         // The Scene last, on the stack; a repeated Scene is reported and read too.
-        let scenes: Vec<(usize, usize)> = t.members(x3d).filter(|&(k, _)| t.key_is(k, "Scene")).collect();
+        let scenes: Vec<(usize, usize)> = t
+            .members(x3d)
+            .filter(|&(k, _)| t.key_is(k, "Scene"))
+            .collect();
         for &(_, scene) in scenes.iter().rev() {
             if t.kind(scene) != Kind::Object {
                 let found = value::describe(t, scene);
-                self.syntax(t.full_span(scene), format!("`Scene` must be an object, found {found}"));
+                self.syntax(
+                    t.full_span(scene),
+                    format!("`Scene` must be an object, found {found}"),
+                );
                 continue;
             }
             self.duplicate_keys(scene, |_| true);
@@ -378,7 +454,10 @@ impl<'t, 's> JsonReader<'t, 's> {
         self.duplicate_keys(head, |_| true);
         for (key, value) in t.members(head) {
             let objects: Vec<usize> = match t.kind(value) {
-                Kind::Array => t.elements(value).filter(|&e| t.kind(e) == Kind::Object).collect(),
+                Kind::Array => t
+                    .elements(value)
+                    .filter(|&e| t.kind(e) == Kind::Object)
+                    .collect(),
                 Kind::Object => vec![value],
                 _ => Vec::new(),
             };
@@ -410,11 +489,15 @@ impl<'t, 's> JsonReader<'t, 's> {
             };
             text.parse::<i32>().ok().map(|l| (l, span(t.span(v))))
         });
-        self.builder.doc_mut().head.components.push(ComponentStatement {
-            name,
-            level,
-            span: object_span,
-        });
+        self.builder
+            .doc_mut()
+            .head
+            .components
+            .push(ComponentStatement {
+                name,
+                level,
+                span: object_span,
+            });
     }
 
     // ----- the walk -----
@@ -501,7 +584,10 @@ impl<'t, 's> JsonReader<'t, 's> {
         let route_span = self.member_span(key, value);
         if self.t.kind(value) != Kind::Object {
             let found = value::describe(self.t, value);
-            self.syntax(self.t.full_span(value), format!("`ROUTE` takes an object, found {found}"));
+            self.syntax(
+                self.t.full_span(value),
+                format!("`ROUTE` takes an object, found {found}"),
+            );
             return;
         }
         self.duplicate_keys(value, |_| true);
@@ -528,7 +614,10 @@ impl<'t, 's> JsonReader<'t, 's> {
         if t.kind(value) != Kind::Object {
             let found = value::describe(t, value);
             let name = t.str(key);
-            self.syntax(t.full_span(value), format!("`{name}` takes an object, found {found}"));
+            self.syntax(
+                t.full_span(value),
+                format!("`{name}` takes an object, found {found}"),
+            );
             return;
         }
         self.duplicate_keys(value, |_| true);
@@ -623,24 +712,10 @@ impl<'t, 's> JsonReader<'t, 's> {
             let Some(use_name) = self.string_member(use_key, use_value) else {
                 return;
             };
-            for (k, v) in t.members(value) {
-                if k == use_key {
-                    continue;
-                }
-                let member = t.str(k);
-                let allowed = matches!(member.as_ref(), "@containerField" | "@class" | "@id" | "@style")
-                    || member.starts_with('#')
-                    || (member == "-children" && !self.holds_nodes(v));
-                if !allowed {
-                    self.report(Diagnostic::new(
-                        &USE_WITH_FIELDS,
-                        span(t.span(k)),
-                        format!("USE `{}` also sets `{member}`: a USE takes no fields", use_name.text),
-                    ));
-                }
-            }
+            self.use_extras(value, use_key, &use_name, is_proto_instance);
             let element_type = (!is_proto_instance).then_some(name.as_ref());
-            self.builder.use_node(&use_name, element_type, node_span, ctx.parent());
+            self.builder
+                .use_node(&use_name, element_type, node_span, ctx.parent());
             return;
         }
 
@@ -666,22 +741,93 @@ impl<'t, 's> JsonReader<'t, 's> {
             }
         }
         self.stack.push(Frame {
-            task: Task::Node { id, span: node_span },
+            task: Task::Node {
+                id,
+                span: node_span,
+            },
             cursor: value + 1,
             end: t.next(value),
         });
     }
 
-    /// Whether a `-children` value holds anything but comments.
-    fn holds_nodes(&self, value: usize) -> bool {
+    /// Reports what a USE node object holds besides `@USE`, as the XML reader does: its
+    /// fields in one diagnostic (`@containerField`, `@class`, `@id`, `@style` and a
+    /// ProtoInstance's `@name` allowed), then each node or statement it holds (comments
+    /// allowed).
+    fn use_extras(
+        &mut self,
+        object: usize,
+        use_key: usize,
+        use_name: &Named,
+        is_proto_instance: bool,
+    ) {
         let t = self.t;
-        let object_has_nodes = |o: usize| t.members(o).any(|(k, _)| !t.str(k).starts_with('#'));
-        match t.kind(value) {
-            Kind::Array => t
-                .elements(value)
-                .any(|e| t.kind(e) != Kind::Object || object_has_nodes(e)),
-            Kind::Object => object_has_nodes(value),
-            _ => true,
+        let mut fields: Vec<(Cow<'s, str>, Span)> = Vec::new();
+        let mut children: Vec<(Cow<'s, str>, Span)> = Vec::new();
+        let nodes_of = |value: usize, out: &mut Vec<(Cow<'s, str>, Span)>| {
+            let wrappers: Vec<usize> = match t.kind(value) {
+                Kind::Array => t.elements(value).collect(),
+                _ => vec![value],
+            };
+            for wrapper in wrappers {
+                if t.kind(wrapper) != Kind::Object {
+                    out.push((
+                        Cow::Owned(value::describe(t, wrapper)),
+                        span(t.full_span(wrapper)),
+                    ));
+                    continue;
+                }
+                for (k, _) in t.members(wrapper) {
+                    let name = t.str(k);
+                    if !name.starts_with('#') {
+                        out.push((name, span(t.span(k))));
+                    }
+                }
+            }
+        };
+        for (k, v) in t.members(object) {
+            if k == use_key {
+                continue;
+            }
+            let member = t.str(k);
+            match member.as_ref() {
+                "@containerField" | "@class" | "@id" | "@style" => {}
+                "@name" if is_proto_instance => {}
+                m if m.starts_with('@') => fields.push((member, span(t.span(k)))),
+                m if m.starts_with('-') => nodes_of(v, &mut children),
+                m if m.starts_with('#') => {}
+                "field" | "fieldValue" if t.kind(v) == Kind::Array => {
+                    for e in t.elements(v) {
+                        children.push((member.clone(), span(t.full_span(e))));
+                    }
+                }
+                _ => children.push((member, span(t.span(k)))),
+            }
+        }
+        if let Some((_, first)) = fields.first() {
+            let names: Vec<String> = fields.iter().map(|(n, _)| format!("`{n}`")).collect();
+            self.report(
+                Diagnostic::new(
+                    &USE_WITH_FIELDS,
+                    *first,
+                    format!(
+                        "USE `{}` also sets {}: a USE takes no fields",
+                        use_name.text,
+                        names.join(", ")
+                    ),
+                )
+                .help("a USE is the DEF'd node itself; set the values on the DEF"),
+            );
+        }
+        for (name, at) in children {
+            self.report(Diagnostic::new(
+                &USE_WITH_FIELDS,
+                at,
+                format!(
+                    "USE `{}` holds `{name}`: a USE takes no children or fields",
+                    use_name.text
+                ),
+            ));
         }
     }
 
@@ -710,7 +856,10 @@ impl<'t, 's> JsonReader<'t, 's> {
                 Kind::Array => self.push(Task::FieldValues(id), value),
                 _ => {
                     let found = value::describe(t, value);
-                    self.syntax(t.full_span(value), format!("`fieldValue` takes an array, found {found}"));
+                    self.syntax(
+                        t.full_span(value),
+                        format!("`fieldValue` takes an array, found {found}"),
+                    );
                 }
             },
             "IS" => self.is(id, value),
@@ -768,23 +917,35 @@ impl<'t, 's> JsonReader<'t, 's> {
 
     /// Converts a value, reporting a syntax error at its place (then it is kept unparsed).
     /// `node_field` names the `-name` form for node-typed fields.
-    fn convert(&mut self, ty: FieldType, value: usize, label: &str, node_field: Option<&str>) -> Value {
+    fn convert(
+        &mut self,
+        ty: FieldType,
+        value: usize,
+        label: &str,
+        node_field: Option<&str>,
+    ) -> Value {
         let t = self.t;
         if ty.scalar() == Scalar::Node {
             let hint = match node_field {
                 Some(name) => format!("give its nodes as `-{name}`"),
                 None => "give its nodes in `-children`".to_string(),
             };
-            self.syntax(t.full_span(value), format!("{label} is an {ty} field: {hint}, not as a value"));
+            self.syntax(
+                t.full_span(value),
+                format!("{label} is an {ty} field: {hint}, not as a value"),
+            );
             return Value::Unparsed(t.raw_full(value).to_string());
         }
         match value::convert(t, value, ty) {
             Ok(parsed) => parsed,
             Err(error) => {
-                let mut diagnostic =
-                    Diagnostic::new(&FIELD_VALUE_SYNTAX, span(error.span), format!("{label}: {}", error.message))
-                        .value(truncate(t.raw_full(value), 80))
-                        .help_opt(error.help);
+                let mut diagnostic = Diagnostic::new(
+                    &FIELD_VALUE_SYNTAX,
+                    span(error.span),
+                    format!("{label}: {}", error.message),
+                )
+                .value(truncate(t.raw_full(value), 80))
+                .help_opt(error.help);
                 if let Some(index) = error.index {
                     diagnostic = diagnostic.index(index);
                 }
@@ -799,7 +960,10 @@ impl<'t, 's> JsonReader<'t, 's> {
         let t = self.t;
         if t.kind(object) != Kind::Object {
             let found = value::describe(t, object);
-            self.syntax(t.full_span(object), format!("a `field` declaration is an object, found {found}"));
+            self.syntax(
+                t.full_span(object),
+                format!("a `field` declaration is an object, found {found}"),
+            );
             return;
         }
         self.duplicate_keys(object, |_| true);
@@ -813,7 +977,10 @@ impl<'t, 's> JsonReader<'t, 's> {
             if let Some(text) = self.string_member(key, value) {
                 ty = FieldType::parse(text.text.trim());
                 if ty.is_none() {
-                    self.syntax(t.span(value), format!("`{}` is not an X3D field type", text.text));
+                    self.syntax(
+                        t.span(value),
+                        format!("`{}` is not an X3D field type", text.text),
+                    );
                 }
             }
         }
@@ -823,7 +990,9 @@ impl<'t, 's> JsonReader<'t, 's> {
             .and_then(|(_, v)| AccessType::parse(t.str(v).trim()));
         let value = t.get(object, "@value").map(|(_, v)| {
             let parsed = match ty {
-                Some(ty) => self.convert(ty, v, &format!("`@value` of field `{}`", name.text), None),
+                Some(ty) => {
+                    self.convert(ty, v, &format!("`@value` of field `{}`", name.text), None)
+                }
                 None => Value::Unparsed(t.raw_full(v).to_string()),
             };
             (parsed, self.value_span(v))
@@ -837,7 +1006,9 @@ impl<'t, 's> JsonReader<'t, 's> {
             value,
         };
         match owner {
-            DeclOwner::Node(node) => self.builder.doc_mut().nodes[node.index()].declared.push(decl),
+            DeclOwner::Node(node) => self.builder.doc_mut().nodes[node.index()]
+                .declared
+                .push(decl),
             DeclOwner::Proto(proto) => self.builder.doc_mut().protos[proto].interface.push(decl),
         }
         if let Some((key, children)) = t.get(object, "-children") {
@@ -862,7 +1033,10 @@ impl<'t, 's> JsonReader<'t, 's> {
         let t = self.t;
         if t.kind(object) != Kind::Object {
             let found = value::describe(t, object);
-            self.syntax(t.full_span(object), format!("a `fieldValue` is an object, found {found}"));
+            self.syntax(
+                t.full_span(object),
+                format!("a `fieldValue` is an object, found {found}"),
+            );
             return;
         }
         self.duplicate_keys(object, |_| true);
@@ -872,9 +1046,12 @@ impl<'t, 's> JsonReader<'t, 's> {
         if let Some((_, value)) = t.get(object, "@value") {
             let field = self.builder.field_ref(node, &name.text);
             let parsed = match &field {
-                FieldRef::Declared { ty: Some(ty), .. } => {
-                    self.convert(*ty, value, &format!("`@value` of fieldValue `{}`", name.text), None)
-                }
+                FieldRef::Declared { ty: Some(ty), .. } => self.convert(
+                    *ty,
+                    value,
+                    &format!("`@value` of fieldValue `{}`", name.text),
+                    None,
+                ),
                 _ => Value::Unparsed(t.raw_full(value).to_string()),
             };
             let entry = FieldEntry {
@@ -885,6 +1062,10 @@ impl<'t, 's> JsonReader<'t, 's> {
                 value: parsed,
             };
             self.builder.add_field(node, entry);
+        }
+        // `IS` inside a fieldValue (written by some exporters) connects the instance.
+        if let Some((_, is)) = t.get(object, "IS") {
+            self.is(node, is);
         }
         if let Some((_, children)) = t.get(object, "-children") {
             let ctx = Ctx::Field {
@@ -902,7 +1083,10 @@ impl<'t, 's> JsonReader<'t, 's> {
         let t = self.t;
         if t.kind(object) != Kind::Object {
             let found = value::describe(t, object);
-            self.syntax(t.full_span(object), format!("`IS` takes an object with a `connect` array, found {found}"));
+            self.syntax(
+                t.full_span(object),
+                format!("`IS` takes an object with a `connect` array, found {found}"),
+            );
             return;
         }
         self.duplicate_keys(object, |_| true);
@@ -916,7 +1100,10 @@ impl<'t, 's> JsonReader<'t, 's> {
                 Kind::Object => vec![value],
                 _ => {
                     let found = value::describe(t, value);
-                    self.syntax(t.full_span(value), format!("`connect` takes an array, found {found}"));
+                    self.syntax(
+                        t.full_span(value),
+                        format!("`connect` takes an array, found {found}"),
+                    );
                     continue;
                 }
             };
@@ -924,7 +1111,10 @@ impl<'t, 's> JsonReader<'t, 's> {
                 let connect_span = span(t.full_span(connect));
                 if t.kind(connect) != Kind::Object {
                     let found = value::describe(t, connect);
-                    self.syntax(t.full_span(connect), format!("a `connect` is an object, found {found}"));
+                    self.syntax(
+                        t.full_span(connect),
+                        format!("a `connect` is an object, found {found}"),
+                    );
                     continue;
                 }
                 self.duplicate_keys(connect, |_| true);
@@ -939,7 +1129,9 @@ impl<'t, 's> JsonReader<'t, 's> {
                     proto_field: get("@protoField"),
                     span: connect_span,
                 };
-                self.builder.doc_mut().nodes[node.index()].connects.push(connect);
+                self.builder.doc_mut().nodes[node.index()]
+                    .connects
+                    .push(connect);
             }
         }
     }

@@ -297,27 +297,42 @@ impl<'s> Scanner<'s> {
                             self.close();
                             state = State::AfterValue;
                         }
-                        b'}' => return Err(self.error_here("a trailing comma before `}` is not allowed in JSON")),
+                        b'}' => {
+                            return Err(self
+                                .error_here("a trailing comma before `}` is not allowed in JSON"))
+                        }
                         b'"' => {
                             self.count_in_parent(false);
                             self.string(Kind::Key)?;
                             self.skip_ws();
                             match self.s.get(self.i) {
                                 Some(b':') => self.i += 1,
-                                Some(_) => return Err(self.error_here("expected `:` after the object key")),
+                                Some(_) => {
+                                    return Err(self.error_here("expected `:` after the object key"))
+                                }
                                 None => return Err(self.eof_error()),
                             }
                             state = State::Value;
                         }
-                        b'\'' => return Err(self.error_here("an object key must be in double quotes, not single quotes")),
-                        _ => return Err(self.error_here("expected a string in double quotes as the object key")),
+                        b'\'' => {
+                            return Err(self.error_here(
+                                "an object key must be in double quotes, not single quotes",
+                            ))
+                        }
+                        _ => {
+                            return Err(self.error_here(
+                                "expected a string in double quotes as the object key",
+                            ))
+                        }
                     }
                 }
                 State::AfterValue => {
                     let Some(&top) = self.stack.last() else {
                         // The top-level value is complete: only whitespace may follow.
                         if self.i < self.s.len() {
-                            return Err(self.error_here("unexpected text after the end of the JSON value"));
+                            return Err(
+                                self.error_here("unexpected text after the end of the JSON value")
+                            );
                         }
                         return Ok(());
                     };
@@ -334,7 +349,9 @@ impl<'s> Scanner<'s> {
                             self.i += 1;
                             self.skip_ws();
                             if self.s.get(self.i) == Some(&b']') {
-                                return Err(self.error_here("a trailing comma before `]` is not allowed in JSON"));
+                                return Err(self.error_here(
+                                    "a trailing comma before `]` is not allowed in JSON",
+                                ));
                             }
                             state = State::Value;
                         }
@@ -343,7 +360,11 @@ impl<'s> Scanner<'s> {
                             self.close();
                         }
                         (b'}' | b']', _) => {
-                            let open = if in_object { "an object (`{`)" } else { "an array (`[`)" };
+                            let open = if in_object {
+                                "an object (`{`)"
+                            } else {
+                                "an array (`[`)"
+                            };
                             let at = self.items[top as usize].start as usize;
                             let (line, column) = line_column(self.src, at);
                             return Err(self.error_here(&format!(
@@ -351,9 +372,21 @@ impl<'s> Scanner<'s> {
                                 b as char
                             )));
                         }
-                        (b'"', true) => return Err(self.error_here("expected `,` or `}` between object members")),
-                        (_, true) => return Err(self.error_here("expected `,` or `}` after the object member")),
-                        (_, false) => return Err(self.error_here("expected `,` or `]` after the array element")),
+                        (b'"', true) => {
+                            return Err(
+                                self.error_here("expected `,` or `}` between object members")
+                            )
+                        }
+                        (_, true) => {
+                            return Err(
+                                self.error_here("expected `,` or `}` after the object member")
+                            )
+                        }
+                        (_, false) => {
+                            return Err(
+                                self.error_here("expected `,` or `]` after the array element")
+                            )
+                        }
                     }
                 }
             }
@@ -413,7 +446,9 @@ impl<'s> Scanner<'s> {
             return Err(Error {
                 at: self.i,
                 len: 1,
-                message: format!("nested too deeply: more than {MAX_DEPTH} levels of arrays and objects"),
+                message: format!(
+                    "nested too deeply: more than {MAX_DEPTH} levels of arrays and objects"
+                ),
             });
         }
         let index = self.items.len() as u32;
@@ -555,9 +590,14 @@ impl<'s> Scanner<'s> {
 
     /// The four hex digits of the `\u` escape at the backslash `at`.
     fn hex4(&self, at: usize) -> Result<u32, Error> {
-        let digits = self.s.get(at + 2..at + 6).filter(|d| d.iter().all(u8::is_ascii_hexdigit));
+        let digits = self
+            .s
+            .get(at + 2..at + 6)
+            .filter(|d| d.iter().all(u8::is_ascii_hexdigit));
         match digits {
-            Some(d) => Ok(d.iter().fold(0, |acc, &b| acc * 16 + (b as char).to_digit(16).unwrap_or(0))),
+            Some(d) => Ok(d.iter().fold(0, |acc, &b| {
+                acc * 16 + (b as char).to_digit(16).unwrap_or(0)
+            })),
             None => Err(Error {
                 at,
                 len: 2,
@@ -621,7 +661,9 @@ impl<'s> Scanner<'s> {
             }
         }
         // A number glued to letters or more digits (`1.2.3`, `0x1F`, `1f`) is one bad token.
-        if s.get(i).is_some_and(|b| b.is_ascii_alphanumeric() || *b == b'.') {
+        if s.get(i)
+            .is_some_and(|b| b.is_ascii_alphanumeric() || *b == b'.')
+        {
             return Err(self.bad_number(start, "not a valid JSON number"));
         }
         self.i = i;
@@ -633,7 +675,9 @@ impl<'s> Scanner<'s> {
     fn bad_number(&self, start: usize, why: &str) -> Error {
         let s = self.s;
         let mut end = start + 1;
-        while end < s.len() && (s[end].is_ascii_alphanumeric() || matches!(s[end], b'.' | b'+' | b'-')) {
+        while end < s.len()
+            && (s[end].is_ascii_alphanumeric() || matches!(s[end], b'.' | b'+' | b'-'))
+        {
             end += 1;
         }
         Error {
@@ -681,8 +725,15 @@ impl<'s> Scanner<'s> {
             _ if matches!(word, "NaN" | "Infinity" | "nan" | "inf" | "infinity") => {
                 format!("`{word}` is not a JSON number")
             }
-            _ if matches!(word, "True" | "TRUE" | "False" | "FALSE" | "Null" | "NULL" | "None") => {
-                format!("`{word}` is not a JSON literal: write `{}`", word.to_ascii_lowercase().replace("none", "null"))
+            _ if matches!(
+                word,
+                "True" | "TRUE" | "False" | "FALSE" | "Null" | "NULL" | "None"
+            ) =>
+            {
+                format!(
+                    "`{word}` is not a JSON literal: write `{}`",
+                    word.to_ascii_lowercase().replace("none", "null")
+                )
             }
             _ if !word.is_empty() => format!("expected a value, found `{word}`"),
             _ => {
@@ -691,7 +742,11 @@ impl<'s> Scanner<'s> {
             }
         };
         let len = word_end.saturating_sub(start).max(1);
-        Error { at: start, len, message }
+        Error {
+            at: start,
+            len,
+            message,
+        }
     }
 
     #[cold]
@@ -713,7 +768,11 @@ impl<'s> Scanner<'s> {
             None => "the input ends before a JSON value".to_string(),
             Some(&top) => {
                 let item = &self.items[top as usize];
-                let what = if item.kind == Kind::Object { "an object (`{`)" } else { "an array (`[`)" };
+                let what = if item.kind == Kind::Object {
+                    "an object (`{`)"
+                } else {
+                    "an array (`[`)"
+                };
                 let (line, column) = line_column(self.src, item.start as usize);
                 format!("the input ends inside {what} opened at line {line}, column {column}")
             }
@@ -730,7 +789,10 @@ impl<'s> Scanner<'s> {
 fn line_column(src: &str, at: usize) -> (usize, usize) {
     let before = &src.as_bytes()[..at.min(src.len())];
     let line = before.iter().filter(|&&b| b == b'\n').count() + 1;
-    let line_start = before.iter().rposition(|&b| b == b'\n').map_or(0, |p| p + 1);
+    let line_start = before
+        .iter()
+        .rposition(|&b| b == b'\n')
+        .map_or(0, |p| p + 1);
     let column = src[line_start..at.min(src.len())].chars().count() + 1;
     (line, column)
 }
@@ -775,8 +837,14 @@ mod tests {
         assert_eq!(t.item(0).len, 3);
         assert_eq!(t.item(2).len, 3);
         assert_eq!(t.full_span(0), (0, src.len()));
-        let members: Vec<_> = t.members(0).map(|(k, v)| (t.str(k).into_owned(), v)).collect();
-        assert_eq!(members, vec![("a".into(), 2), ("b".into(), 7), ("s".into(), 11)]);
+        let members: Vec<_> = t
+            .members(0)
+            .map(|(k, v)| (t.str(k).into_owned(), v))
+            .collect();
+        assert_eq!(
+            members,
+            vec![("a".into(), 2), ("b".into(), 7), ("s".into(), 11)]
+        );
         assert_eq!(t.raw(1), "a");
         assert_eq!(&src[t.full_span(1).0..t.full_span(1).1], "\"a\"");
         assert_eq!(t.raw(2), "[1, -2.5e3, true]");
@@ -825,7 +893,12 @@ mod tests {
 
     #[test]
     fn scalars_at_the_top() {
-        for (src, kind) in [("1", Kind::Number), ("\"x\"", Kind::String), (" null ", Kind::Null), ("[]", Kind::Array)] {
+        for (src, kind) in [
+            ("1", Kind::Number),
+            ("\"x\"", Kind::String),
+            (" null ", Kind::Null),
+            ("[]", Kind::Array),
+        ] {
             assert_eq!(parse(src).unwrap().kind(0), kind);
         }
         assert_eq!(parse("\u{feff}{}").unwrap().span(0), (3, 5));
@@ -857,7 +930,11 @@ mod tests {
             ("[\"\\u12\"]", 2, "four hexadecimal"),
             ("[\"abc", 1, "unterminated string"),
             ("{\"a\": [1, 2}", 11, "does not close an array"),
-            ("{\"a\": 1", 7, "ends inside an object (`{`) opened at line 1, column 1"),
+            (
+                "{\"a\": 1",
+                7,
+                "ends inside an object (`{`) opened at line 1, column 1",
+            ),
             ("{} x", 3, "after the end"),
             ("{} {}", 3, "after the end"),
             ("[1, // c\n 2]", 4, "comments"),
@@ -867,7 +944,11 @@ mod tests {
         for &(src, at, needle) in cases {
             let e = err(src);
             assert_eq!(e.at, at, "position for {src:?}: {e:?}");
-            assert!(e.message.contains(needle), "message for {src:?}: {:?}", e.message);
+            assert!(
+                e.message.contains(needle),
+                "message for {src:?}: {:?}",
+                e.message
+            );
         }
     }
 

@@ -11,8 +11,8 @@
 //! vector per field.
 
 use super::tree::{Kind, Tree, NOT_INTEGER};
-use crate::parse::number::{parse_f32, parse_f64};
 use crate::model::{Image, Value};
+use crate::parse::number::{parse_f32, parse_f64};
 use crate::schema::{FieldType, Scalar};
 
 /// A value that does not fit its field's type. `span` is a byte range in the input: the
@@ -107,7 +107,11 @@ fn plural(n: usize, (one, many): (&str, &str)) -> String {
 /// What the whole value should look like.
 fn expected(ty: FieldType) -> String {
     let noun = element_noun(ty);
-    let article = if noun.0.starts_with(['a', 'e', 'i', 'o', 'u']) { "an" } else { "a" };
+    let article = if noun.0.starts_with(['a', 'e', 'i', 'o', 'u']) {
+        "an"
+    } else {
+        "a"
+    };
     if ty == FieldType::SFImage {
         "an array [width, height, components, pixel…]".to_string()
     } else if ty == FieldType::MFImage {
@@ -131,10 +135,14 @@ fn wrong_kind(tree: &Tree, i: usize, ty: FieldType) -> ValueError {
         format!("{ty} takes {}, found {}", expected(ty), describe(tree, i)),
     );
     match (tree.kind(i), ty.scalar()) {
-        (Kind::String, Scalar::Int32 | Scalar::Float | Scalar::Double) if looks_numeric(tree.raw(i)) => {
+        (Kind::String, Scalar::Int32 | Scalar::Float | Scalar::Double)
+            if looks_numeric(tree.raw(i)) =>
+        {
             error.help("JSON numbers are written without quotes")
         }
-        (Kind::String, Scalar::Bool) if matches!(tree.raw(i), "true" | "false" | "TRUE" | "FALSE") => {
+        (Kind::String, Scalar::Bool)
+            if matches!(tree.raw(i), "true" | "false" | "TRUE" | "FALSE") =>
+        {
             error.help("JSON booleans are written `true` or `false`, without quotes")
         }
         (Kind::Number, Scalar::Bool) if matches!(tree.raw(i), "0" | "1") => {
@@ -152,7 +160,10 @@ fn wrong_kind(tree: &Tree, i: usize, ty: FieldType) -> ValueError {
 
 fn looks_numeric(text: &str) -> bool {
     let mut any = false;
-    for token in text.split([' ', ',', '\t', '\n', '\r']).filter(|t| !t.is_empty()) {
+    for token in text
+        .split([' ', ',', '\t', '\n', '\r'])
+        .filter(|t| !t.is_empty())
+    {
         if parse_f64(token.as_bytes()).is_none() {
             return false;
         }
@@ -186,7 +197,11 @@ fn check_count(tree: &Tree, array: usize, ty: FieldType, count: usize) -> Result
     if count == arity {
         return Ok(());
     }
-    let found = if count == 0 { "none".to_string() } else { count.to_string() };
+    let found = if count == 0 {
+        "none".to_string()
+    } else {
+        count.to_string()
+    };
     let span = if count > arity {
         // Point at the surplus.
         let surplus: Vec<usize> = tree.elements(array).skip(arity).collect();
@@ -197,7 +212,10 @@ fn check_count(tree: &Tree, array: usize, ty: FieldType, count: usize) -> Result
     } else {
         tree.full_span(array)
     };
-    Err(ValueError::new(span, format!("{ty} takes {}, found {found}", plural(arity, noun))))
+    Err(ValueError::new(
+        span,
+        format!("{ty} takes {}, found {found}", plural(arity, noun)),
+    ))
 }
 
 fn bools(tree: &Tree, i: usize, ty: FieldType) -> Result<Vec<bool>, ValueError> {
@@ -207,7 +225,9 @@ fn bools(tree: &Tree, i: usize, ty: FieldType) -> Result<Vec<bool>, ValueError> 
         _ => None,
     };
     if !ty.is_mf() {
-        return one(i).map(|b| vec![b]).ok_or_else(|| wrong_kind(tree, i, ty));
+        return one(i)
+            .map(|b| vec![b])
+            .ok_or_else(|| wrong_kind(tree, i, ty));
     }
     if tree.kind(i) != Kind::Array {
         return Err(wrong_kind(tree, i, ty));
@@ -230,9 +250,16 @@ fn element_error(tree: &Tree, e: usize, ty: FieldType, index: usize) -> ValueErr
         tree.full_span(e),
         format!("{ty} takes {}, found {}", noun.1, describe(tree, e)),
     );
-    let error = if ty.is_mf() { error.index(index / ty.arity()) } else { error };
+    let error = if ty.is_mf() {
+        error.index(index / ty.arity())
+    } else {
+        error
+    };
     match tree.kind(e) {
-        Kind::String if matches!(ty.scalar(), Scalar::Int32 | Scalar::Float | Scalar::Double) && looks_numeric(tree.raw(e)) => {
+        Kind::String
+            if matches!(ty.scalar(), Scalar::Int32 | Scalar::Float | Scalar::Double)
+                && looks_numeric(tree.raw(e)) =>
+        {
             error.help("JSON numbers are written without quotes")
         }
         Kind::Array if ty.arity() > 1 => error.help(format!(
@@ -250,14 +277,18 @@ fn int32(text: &str, integer_syntax: bool) -> Result<i32, String> {
         // Up to 19 digits fit an i64; longer is out of range anyway.
         return match text.parse::<i64>() {
             Ok(v) if i32::try_from(v).is_ok() => Ok(v as i32),
-            _ => Err(format!("{text} is out of range (-2147483648 to 2147483647)")),
+            _ => Err(format!(
+                "{text} is out of range (-2147483648 to 2147483647)"
+            )),
         };
     }
     let v = parse_f64(text.as_bytes()).unwrap_or(f64::NAN);
     if v.fract() != 0.0 || !v.is_finite() {
         Err(format!("whole numbers only, found {text}"))
     } else if v < i32::MIN as f64 || v > i32::MAX as f64 {
-        Err(format!("{text} is out of range (-2147483648 to 2147483647)"))
+        Err(format!(
+            "{text} is out of range (-2147483648 to 2147483647)"
+        ))
     } else {
         Ok(v as i32)
     }
@@ -278,9 +309,17 @@ fn scalar<T>(tree: &Tree, e: usize, read: Scalarize<T>) -> Option<Result<T, Stri
     (item.kind == Kind::Number).then(|| read(tree.raw(e), item.flags & NOT_INTEGER == 0))
 }
 
-fn numbers<T>(tree: &Tree, i: usize, ty: FieldType, read: Scalarize<T>) -> Result<Vec<T>, ValueError> {
+fn numbers<T>(
+    tree: &Tree,
+    i: usize,
+    ty: FieldType,
+    read: Scalarize<T>,
+) -> Result<Vec<T>, ValueError> {
     let bad_number = |e: usize, message: String, index: Option<usize>| {
-        let error = ValueError::new(tree.full_span(e), format!("{ty} takes {}: {message}", element_noun(ty).1));
+        let error = ValueError::new(
+            tree.full_span(e),
+            format!("{ty} takes {}: {message}", element_noun(ty).1),
+        );
         match index {
             Some(index) if ty.is_mf() => error.index(index / ty.arity()),
             _ => error,
@@ -386,7 +425,13 @@ fn images(tree: &Tree, i: usize, ty: FieldType) -> Result<Vec<Image>, ValueError
 
 /// An image size (`header`, an `i32`) or pixel (up to 0xFFFFFFFF; negative values down to
 /// −2^31 taken as their 32-bit pattern), as an `i64`.
-fn image_int(tree: &Tree, e: usize, ty: FieldType, header: bool, image: usize) -> Result<i64, ValueError> {
+fn image_int(
+    tree: &Tree,
+    e: usize,
+    ty: FieldType,
+    header: bool,
+    image: usize,
+) -> Result<i64, ValueError> {
     let what = if header { "size" } else { "pixel value" };
     let error = |message: String| {
         let error = ValueError::new(tree.full_span(e), message);
@@ -398,7 +443,10 @@ fn image_int(tree: &Tree, e: usize, ty: FieldType, header: bool, image: usize) -
     };
     let item = tree.item(e);
     if item.kind != Kind::Number {
-        return Err(error(format!("{ty} takes whole numbers, found {} as a {what}", describe(tree, e))));
+        return Err(error(format!(
+            "{ty} takes whole numbers, found {} as a {what}",
+            describe(tree, e)
+        )));
     }
     let text = tree.raw(e);
     let v = if item.flags & NOT_INTEGER == 0 {
@@ -409,8 +457,12 @@ fn image_int(tree: &Tree, e: usize, ty: FieldType, header: bool, image: usize) -
             .map(|v| v as i64)
     };
     let Some(v) = v else {
-        if item.flags & NOT_INTEGER != 0 && parse_f64(text.as_bytes()).is_some_and(|v| v.fract() != 0.0) {
-            return Err(error(format!("{ty} takes whole numbers, found {text} as a {what}")));
+        if item.flags & NOT_INTEGER != 0
+            && parse_f64(text.as_bytes()).is_some_and(|v| v.fract() != 0.0)
+        {
+            return Err(error(format!(
+                "{ty} takes whole numbers, found {text} as a {what}"
+            )));
         }
         return Err(error(format!("{text} is out of range for an {ty} {what}")));
     };
@@ -420,10 +472,20 @@ fn image_int(tree: &Tree, e: usize, ty: FieldType, header: bool, image: usize) -
         (i32::MIN as i64, u32::MAX as i64)
     };
     if v < min || v > max {
-        let limit = if header { "at most 2147483647" } else { "at most 4294967295 (0xFFFFFFFF)" };
-        return Err(error(format!("{text} is out of range for an {ty} {what} ({limit})")));
+        let limit = if header {
+            "at most 2147483647"
+        } else {
+            "at most 4294967295 (0xFFFFFFFF)"
+        };
+        return Err(error(format!(
+            "{text} is out of range for an {ty} {what} ({limit})"
+        )));
     }
-    Ok(if !header && v < 0 { (v as i32 as u32) as i64 } else { v })
+    Ok(if !header && v < 0 {
+        (v as i32 as u32) as i64
+    } else {
+        v
+    })
 }
 
 #[cfg(test)]
@@ -442,10 +504,19 @@ mod tests {
 
     #[test]
     fn booleans() {
-        assert_eq!(conv("true", FieldType::SFBool), Ok(Value::Bools(vec![true])));
-        assert_eq!(conv("[true, false]", FieldType::MFBool), Ok(Value::Bools(vec![true, false])));
+        assert_eq!(
+            conv("true", FieldType::SFBool),
+            Ok(Value::Bools(vec![true]))
+        );
+        assert_eq!(
+            conv("[true, false]", FieldType::MFBool),
+            Ok(Value::Bools(vec![true, false]))
+        );
         let e = err("\"true\"", FieldType::SFBool);
-        assert_eq!(e.message, "SFBool takes a boolean, found the string \"true\"");
+        assert_eq!(
+            e.message,
+            "SFBool takes a boolean, found the string \"true\""
+        );
         assert!(e.help.unwrap().contains("without quotes"));
         assert_eq!(e.span, (0, 6));
         let e = err("[true, 1]", FieldType::MFBool);
@@ -456,48 +527,85 @@ mod tests {
     #[test]
     fn int32s() {
         assert_eq!(conv("-7", FieldType::SFInt32), Ok(Value::Int32s(vec![-7])));
-        assert_eq!(conv("1e2", FieldType::SFInt32), Ok(Value::Int32s(vec![100])));
+        assert_eq!(
+            conv("1e2", FieldType::SFInt32),
+            Ok(Value::Int32s(vec![100]))
+        );
         assert_eq!(conv("2.0", FieldType::SFInt32), Ok(Value::Int32s(vec![2])));
         assert_eq!(
             conv("[0, 1, 2, -1, -2147483648, 2147483647]", FieldType::MFInt32),
             Ok(Value::Int32s(vec![0, 1, 2, -1, i32::MIN, i32::MAX]))
         );
         let e = err("1.5", FieldType::SFInt32);
-        assert_eq!(e.message, "SFInt32 takes whole numbers: whole numbers only, found 1.5");
+        assert_eq!(
+            e.message,
+            "SFInt32 takes whole numbers: whole numbers only, found 1.5"
+        );
         let e = err("[1, 2, 2147483648]", FieldType::MFInt32);
         assert!(e.message.contains("out of range"), "{}", e.message);
         assert_eq!(e.span, (7, 17));
         assert_eq!(e.index, Some(2));
-        assert!(err("99999999999999999999999", FieldType::SFInt32).message.contains("out of range"));
-        assert!(err("1e300", FieldType::SFInt32).message.contains("out of range"));
+        assert!(err("99999999999999999999999", FieldType::SFInt32)
+            .message
+            .contains("out of range"));
+        assert!(err("1e300", FieldType::SFInt32)
+            .message
+            .contains("out of range"));
     }
 
     #[test]
     fn floats_round_once_and_overflow_to_infinity() {
-        assert_eq!(conv("0.1", FieldType::SFFloat), Ok(Value::Floats(vec![0.1f32])));
-        assert_eq!(conv("1e39", FieldType::SFFloat), Ok(Value::Floats(vec![f32::INFINITY])));
-        assert_eq!(conv("-1e39", FieldType::SFFloat), Ok(Value::Floats(vec![f32::NEG_INFINITY])));
-        assert_eq!(conv("1e39", FieldType::SFDouble), Ok(Value::Doubles(vec![1e39])));
-        assert_eq!(conv("1e-50", FieldType::SFFloat), Ok(Value::Floats(vec![0.0])));
-        assert_eq!(conv("-0", FieldType::SFFloat), Ok(Value::Floats(vec![-0.0])));
+        assert_eq!(
+            conv("0.1", FieldType::SFFloat),
+            Ok(Value::Floats(vec![0.1f32]))
+        );
+        assert_eq!(
+            conv("1e39", FieldType::SFFloat),
+            Ok(Value::Floats(vec![f32::INFINITY]))
+        );
+        assert_eq!(
+            conv("-1e39", FieldType::SFFloat),
+            Ok(Value::Floats(vec![f32::NEG_INFINITY]))
+        );
+        assert_eq!(
+            conv("1e39", FieldType::SFDouble),
+            Ok(Value::Doubles(vec![1e39]))
+        );
+        assert_eq!(
+            conv("1e-50", FieldType::SFFloat),
+            Ok(Value::Floats(vec![0.0]))
+        );
+        assert_eq!(
+            conv("-0", FieldType::SFFloat),
+            Ok(Value::Floats(vec![-0.0]))
+        );
         // Correctly rounded directly to f32 (not through f64).
         assert_eq!(
             conv("1.00000005960464477539062501", FieldType::SFFloat),
             Ok(Value::Floats(vec![1.000_000_1_f32]))
         );
-        assert_eq!(conv("0.1", FieldType::SFTime), Ok(Value::Doubles(vec![0.1])));
+        assert_eq!(
+            conv("0.1", FieldType::SFTime),
+            Ok(Value::Doubles(vec![0.1]))
+        );
     }
 
     #[test]
     fn vectors_check_arity() {
-        assert_eq!(conv("[1, 0, 0]", FieldType::SFColor), Ok(Value::Floats(vec![1.0, 0.0, 0.0])));
+        assert_eq!(
+            conv("[1, 0, 0]", FieldType::SFColor),
+            Ok(Value::Floats(vec![1.0, 0.0, 0.0]))
+        );
         let e = err("[1, 0]", FieldType::SFColor);
         assert_eq!(e.message, "SFColor takes 3 numbers, found 2");
         assert_eq!(e.span, (0, 6));
         let e = err("[1, 0, 0, 1]", FieldType::SFColor);
         assert_eq!(e.message, "SFColor takes 3 numbers, found 4");
         assert_eq!(e.span, (10, 11));
-        assert_eq!(err("[]", FieldType::SFVec3f).message, "SFVec3f takes 3 numbers, found none");
+        assert_eq!(
+            err("[]", FieldType::SFVec3f).message,
+            "SFVec3f takes 3 numbers, found none"
+        );
         assert_eq!(
             conv("[0,0,0, 1,0,0]", FieldType::MFVec3f),
             Ok(Value::Floats(vec![0.0, 0.0, 0.0, 1.0, 0.0, 0.0]))
@@ -507,22 +615,44 @@ mod tests {
         assert_eq!(e.message, "MFVec3f takes a multiple of 3 numbers, found 5");
         assert_eq!(e.span, (8, 11));
         assert_eq!(e.index, Some(1));
-        assert_eq!(conv("[0,0,1,3.14]", FieldType::SFRotation).unwrap().len(), 4);
-        assert_eq!(conv("[1,2,3]", FieldType::SFVec3d), Ok(Value::Doubles(vec![1.0, 2.0, 3.0])));
-        assert_eq!(conv(&format!("[{}]", ["1"; 16].join(",")), FieldType::SFMatrix4f).unwrap().len(), 16);
+        assert_eq!(
+            conv("[0,0,1,3.14]", FieldType::SFRotation).unwrap().len(),
+            4
+        );
+        assert_eq!(
+            conv("[1,2,3]", FieldType::SFVec3d),
+            Ok(Value::Doubles(vec![1.0, 2.0, 3.0]))
+        );
+        assert_eq!(
+            conv(&format!("[{}]", ["1"; 16].join(",")), FieldType::SFMatrix4f)
+                .unwrap()
+                .len(),
+            16
+        );
     }
 
     #[test]
     fn json_slips_are_syntax_errors() {
         let e = err("\"1\"", FieldType::SFFloat);
         assert_eq!(e.message, "SFFloat takes a number, found the string \"1\"");
-        assert_eq!(e.help.as_deref(), Some("JSON numbers are written without quotes"));
+        assert_eq!(
+            e.help.as_deref(),
+            Some("JSON numbers are written without quotes")
+        );
         let e = err("\"1 0 0\"", FieldType::SFColor);
-        assert!(e.message.starts_with("SFColor takes an array of 3 numbers, found the string"));
+        assert!(e
+            .message
+            .starts_with("SFColor takes an array of 3 numbers, found the string"));
         assert!(e.help.is_some());
         let e = err("{\"a\": 1}", FieldType::MFFloat);
-        assert_eq!(e.message, "MFFloat takes an array of numbers, found an object");
-        assert_eq!(err("null", FieldType::SFVec3f).message, "SFVec3f takes an array of 3 numbers, found null");
+        assert_eq!(
+            e.message,
+            "MFFloat takes an array of numbers, found an object"
+        );
+        assert_eq!(
+            err("null", FieldType::SFVec3f).message,
+            "SFVec3f takes an array of 3 numbers, found null"
+        );
         let e = err("[1, \"2\", 3]", FieldType::SFVec3f);
         assert_eq!(e.message, "SFVec3f takes numbers, found the string \"2\"");
         assert_eq!(e.span, (4, 7));
@@ -530,22 +660,33 @@ mod tests {
         assert!(e.help.unwrap().contains("flat array"));
         let e = err("[1]", FieldType::SFFloat);
         assert!(e.help.unwrap().contains("drop the brackets"));
-        assert_eq!(err("5", FieldType::SFString).message, "SFString takes a string, found the number 5");
+        assert_eq!(
+            err("5", FieldType::SFString).message,
+            "SFString takes a string, found the number 5"
+        );
     }
 
     #[test]
     fn strings_and_lone_strings() {
-        assert_eq!(conv("\"a\\\"b\"", FieldType::SFString), Ok(Value::Strings(vec!["a\"b".into()])));
+        assert_eq!(
+            conv("\"a\\\"b\"", FieldType::SFString),
+            Ok(Value::Strings(vec!["a\"b".into()]))
+        );
         assert_eq!(
             conv("[\"EXAMINE\", \"ANY\"]", FieldType::MFString),
             Ok(Value::Strings(vec!["EXAMINE".into(), "ANY".into()]))
         );
-        assert_eq!(conv("\"x.png\"", FieldType::MFString), Ok(Value::Strings(vec!["x.png".into()])));
+        assert_eq!(
+            conv("\"x.png\"", FieldType::MFString),
+            Ok(Value::Strings(vec!["x.png".into()]))
+        );
         assert_eq!(conv("[]", FieldType::MFString), Ok(Value::Strings(vec![])));
         let e = err("[\"a\", 1]", FieldType::MFString);
         assert_eq!(e.message, "MFString takes strings, found the number 1");
         assert_eq!(e.index, Some(1));
-        assert!(err("[\"a\"]", FieldType::SFString).message.contains("found an array"));
+        assert!(err("[\"a\"]", FieldType::SFString)
+            .message
+            .contains("found an array"));
     }
 
     #[test]
@@ -567,11 +708,21 @@ mod tests {
         assert_eq!(images[1].pixels, vec![u32::MAX, 2]);
         assert_eq!(conv("[0, 0, 0]", FieldType::SFImage).unwrap().len(), 1);
         assert_eq!(conv("[]", FieldType::MFImage), Ok(Value::Images(vec![])));
-        assert!(err("[]", FieldType::SFImage).message.contains("empty array"));
-        assert!(err("[1, 1]", FieldType::SFImage).message.contains("components is missing"));
-        assert!(err("[1, 1, 1, 0.5]", FieldType::SFImage).message.contains("whole numbers"));
-        assert!(err("[1, 1, 1, 4294967296]", FieldType::SFImage).message.contains("out of range"));
-        assert!(err("\"1 1 1 0\"", FieldType::SFImage).message.contains("found the string"));
+        assert!(err("[]", FieldType::SFImage)
+            .message
+            .contains("empty array"));
+        assert!(err("[1, 1]", FieldType::SFImage)
+            .message
+            .contains("components is missing"));
+        assert!(err("[1, 1, 1, 0.5]", FieldType::SFImage)
+            .message
+            .contains("whole numbers"));
+        assert!(err("[1, 1, 1, 4294967296]", FieldType::SFImage)
+            .message
+            .contains("out of range"));
+        assert!(err("\"1 1 1 0\"", FieldType::SFImage)
+            .message
+            .contains("found the string"));
     }
 
     #[test]

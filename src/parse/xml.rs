@@ -51,18 +51,36 @@ enum Frame {
     Root,
     Head,
     Scene,
-    Node { id: NodeId, start: usize },
+    Node {
+        id: NodeId,
+        start: usize,
+    },
     /// A USE element: its children are reported and otherwise ignored.
     Use,
-    ProtoDeclare { proto: usize },
-    ProtoInterface { proto: usize },
+    ProtoDeclare {
+        proto: usize,
+    },
+    ProtoInterface {
+        proto: usize,
+    },
     ProtoBody,
-    ExternProtoDeclare { proto: usize },
+    ExternProtoDeclare {
+        proto: usize,
+    },
     /// A `field` declaration whose nodes (for SFNode/MFNode) form its initial value.
-    FieldDecl { owner: DeclOwner, field: String },
+    FieldDecl {
+        owner: DeclOwner,
+        field: String,
+    },
     /// A ProtoInstance `fieldValue` whose nodes form the value.
-    FieldValue { node: NodeId, field: String, name_span: Span },
-    Is { node: NodeId },
+    FieldValue {
+        node: NodeId,
+        field: String,
+        name_span: Span,
+    },
+    Is {
+        node: NodeId,
+    },
     /// Anything whose content is not part of the scene model (meta, ROUTE, unknown statements).
     Other,
 }
@@ -119,7 +137,10 @@ impl<'s> XmlReader<'s> {
             }
         }
         if !self.stack.is_empty() {
-            return Err(self.malformed(self.source.len(), "the document ends before its elements are closed"));
+            return Err(self.malformed(
+                self.source.len(),
+                "the document ends before its elements are closed",
+            ));
         }
         if !self.root_closed {
             return Err(self.malformed(0, "no root element"));
@@ -129,7 +150,11 @@ impl<'s> XmlReader<'s> {
 
     fn malformed(&self, at: usize, message: &str) -> Diagnostic {
         let at = at.min(self.source.len());
-        Diagnostic::new(&XML_MALFORMED, Span::new(at, at), format!("not well-formed XML: {message}"))
+        Diagnostic::new(
+            &XML_MALFORMED,
+            Span::new(at, at),
+            format!("not well-formed XML: {message}"),
+        )
     }
 
     fn span_of(&self, bytes: &[u8]) -> Option<Span> {
@@ -142,7 +167,9 @@ impl<'s> XmlReader<'s> {
     /// Text and CDATA: source code for Script and shader parts; elsewhere only whitespace
     /// is expected, and the root must be followed by nothing but whitespace.
     fn text(&mut self, start: usize, end: usize, cdata: bool) -> Result<(), Diagnostic> {
-        let blank = self.source[start..end].iter().all(|b| b.is_ascii_whitespace());
+        let blank = self.source[start..end]
+            .iter()
+            .all(|b| b.is_ascii_whitespace());
         if self.stack.is_empty() {
             if !blank {
                 return Err(self.malformed(start, "text outside the root element"));
@@ -160,18 +187,39 @@ impl<'s> XmlReader<'s> {
         Ok(())
     }
 
-    fn attributes<'a>(&self, element: &'a BytesStart<'a>, element_start: usize) -> Result<Vec<Attr<'a>>, Diagnostic> {
+    fn attributes<'a>(
+        &self,
+        element: &'a BytesStart<'a>,
+        element_start: usize,
+    ) -> Result<Vec<Attr<'a>>, Diagnostic> {
         let mut out = Vec::new();
         for attribute in element.attributes().with_checks(true) {
-            let attribute: Attribute<'a> = attribute.map_err(|e| self.malformed(element_start, &e.to_string()))?;
+            let attribute: Attribute<'a> =
+                attribute.map_err(|e| self.malformed(element_start, &e.to_string()))?;
             let name: &'a str = attribute.key.0;
-            let name_span = self.span_of(name.as_bytes()).unwrap_or(Span::new(element_start, element_start));
-            let raw: &str = &attribute.value;
+            let name_span = self
+                .span_of(name.as_bytes())
+                .unwrap_or(Span::new(element_start, element_start));
+            let raw: &'a str = match &attribute.value {
+                Cow::Borrowed(raw) => raw,
+                Cow::Owned(_) => {
+                    return Err(self.malformed(element_start, "attribute value not read in place"))
+                }
+            };
             let value_span = self.span_of(raw.as_bytes()).unwrap_or(name_span);
-            let value = attribute
-                .normalized_value(XmlVersion::Implicit1_0)
-                .map_err(|e| self.malformed(value_span.start as usize, &e.to_string()))?;
-            let verbatim = value.len() == raw.len() && !raw.contains('&');
+            // Entities need quick-xml's unescaping. Without them the raw text serves: the
+            // number parsers take any XML whitespace as a separator, and string fields
+            // get XML's whitespace normalization in `parse_attr_value`. This spares a copy
+            // of every multi-line coordinate list.
+            let (value, verbatim) = if raw.contains('&') {
+                let normalized = attribute
+                    .normalized_value(XmlVersion::Implicit1_0)
+                    .map_err(|e| self.malformed(value_span.start as usize, &e.to_string()))?;
+                let verbatim = normalized.len() == raw.len();
+                (normalized, verbatim)
+            } else {
+                (Cow::Borrowed(raw), true)
+            };
             out.push(Attr {
                 name,
                 name_span,
@@ -183,7 +231,13 @@ impl<'s> XmlReader<'s> {
         Ok(out)
     }
 
-    fn start(&mut self, element: &BytesStart, start: usize, end: usize, empty: bool) -> Result<(), Diagnostic> {
+    fn start(
+        &mut self,
+        element: &BytesStart,
+        start: usize,
+        end: usize,
+        empty: bool,
+    ) -> Result<(), Diagnostic> {
         let name = element.name().0.to_string();
         let name_span = Span::new(start + 1, start + 1 + name.len());
         let attrs = self.attributes(element, start)?;
@@ -285,7 +339,9 @@ impl<'s> XmlReader<'s> {
             (Context::ProtoInterface(proto) | Context::ExternProto(proto), "field") => {
                 self.field_decl(DeclOwner::Proto(proto), attrs, element)
             }
-            (Context::Nodes(Some(node)), "field") => self.field_decl(DeclOwner::Node(node), attrs, element),
+            (Context::Nodes(Some(node)), "field") => {
+                self.field_decl(DeclOwner::Node(node), attrs, element)
+            }
             (Context::Nodes(Some(node)), "fieldValue") => self.field_value(node, attrs),
             (Context::Nodes(Some(node)), "IS") => Frame::Is { node },
             (Context::FieldValue(node, ..), "IS") => Frame::Is { node },
@@ -296,7 +352,11 @@ impl<'s> XmlReader<'s> {
             (Context::Nodes(_), _) => self.node(hint, name, name_span, attrs, element, empty),
             (Context::FieldDecl(owner, field), _) => {
                 let parent = match owner {
-                    DeclOwner::Node(node) => Hint::Field { node, field, origin: Origin::Children },
+                    DeclOwner::Node(node) => Hint::Field {
+                        node,
+                        field,
+                        origin: Origin::Children,
+                    },
                     DeclOwner::Proto(proto) => Hint::ProtoField { proto, field },
                 };
                 self.node(parent, name, name_span, attrs, element, empty)
@@ -345,7 +405,14 @@ impl<'s> XmlReader<'s> {
                         span: attr.value_span,
                     })
                 }
-                "level" => level = attr.value.trim().parse::<i32>().ok().map(|l| (l, attr.value_span)),
+                "level" => {
+                    level = attr
+                        .value
+                        .trim()
+                        .parse::<i32>()
+                        .ok()
+                        .map(|l| (l, attr.value_span))
+                }
                 _ => {}
             }
         }
@@ -441,7 +508,9 @@ impl<'s> XmlReader<'s> {
             value,
         };
         match owner {
-            DeclOwner::Node(node) => self.builder.doc_mut().nodes[node.index()].declared.push(decl),
+            DeclOwner::Node(node) => self.builder.doc_mut().nodes[node.index()]
+                .declared
+                .push(decl),
             DeclOwner::Proto(proto) => self.builder.doc_mut().protos[proto].interface.push(decl),
         }
         Frame::FieldDecl { owner, field }
@@ -477,19 +546,36 @@ impl<'s> XmlReader<'s> {
     }
 
     fn connect(&mut self, node: NodeId, attrs: &[Attr], span: Span) {
-        let get = |key| named_attr(attrs, key).unwrap_or(Named { text: String::new(), span });
+        let get = |key| {
+            named_attr(attrs, key).unwrap_or(Named {
+                text: String::new(),
+                span,
+            })
+        };
         let connect = IsConnect {
             node_field: get("nodeField"),
             proto_field: get("protoField"),
             span,
         };
-        self.builder.doc_mut().nodes[node.index()].connects.push(connect);
+        self.builder.doc_mut().nodes[node.index()]
+            .connects
+            .push(connect);
     }
 
     /// A node element: a new node, or a USE of a DEF'd one.
-    fn node(&mut self, hint: Hint, name: &str, name_span: Span, attrs: &[Attr], element: Span, empty: bool) -> Frame {
+    fn node(
+        &mut self,
+        hint: Hint,
+        name: &str,
+        name_span: Span,
+        attrs: &[Attr],
+        element: Span,
+        empty: bool,
+    ) -> Frame {
         let kind = if name == "ProtoInstance" {
-            let proto_name = named_attr(attrs, "name").map(|n| n.text).unwrap_or_default();
+            let proto_name = named_attr(attrs, "name")
+                .map(|n| n.text)
+                .unwrap_or_default();
             NodeKind::ProtoInstance {
                 proto: self.builder.find_proto(&proto_name),
                 name: proto_name,
@@ -498,10 +584,12 @@ impl<'s> XmlReader<'s> {
             self.builder.node_kind(name)
         };
         let container = attrs.iter().find(|a| a.name == "containerField");
-        let field_name = container.map(|a| a.value.trim().to_string()).unwrap_or_else(|| match &kind {
-            NodeKind::Known { def, .. } => def.container_field.to_string(),
-            _ => "children".to_string(),
-        });
+        let field_name = container
+            .map(|a| a.value.trim().to_string())
+            .unwrap_or_else(|| match &kind {
+                NodeKind::Known { def, .. } => def.container_field.to_string(),
+                _ => "children".to_string(),
+            });
         let field_span = container.map(|a| a.value_span).unwrap_or(name_span);
         let parent = hint.parent(&field_name, field_span);
 
@@ -517,17 +605,22 @@ impl<'s> XmlReader<'s> {
                 .collect();
             if let Some(first) = extras.first() {
                 let names: Vec<String> = extras.iter().map(|a| format!("`{}`", a.name)).collect();
-                let mut diagnostic = Diagnostic::new(
-                    &USE_WITH_FIELDS,
-                    first.name_span,
-                    format!("USE `{}` also sets {}: a USE takes no fields", use_name.text, names.join(", ")),
-                )
-                .help("a USE is the DEF'd node itself; set the values on the DEF");
-                diagnostic.count = extras.len();
-                self.builder.report(diagnostic);
+                self.builder.report(
+                    Diagnostic::new(
+                        &USE_WITH_FIELDS,
+                        first.name_span,
+                        format!(
+                            "USE `{}` also sets {}: a USE takes no fields",
+                            use_name.text,
+                            names.join(", ")
+                        ),
+                    )
+                    .help("a USE is the DEF'd node itself; set the values on the DEF"),
+                );
             }
             let element_type = (name != "ProtoInstance").then_some(name);
-            self.builder.use_node(&use_name, element_type, element, parent);
+            self.builder
+                .use_node(&use_name, element_type, element, parent);
             return if empty { Frame::Other } else { Frame::Use };
         }
 
@@ -579,11 +672,19 @@ impl<'s> XmlReader<'s> {
             self.builder.report(Diagnostic::new(
                 &FIELD_VALUE_SYNTAX,
                 attr.value_span,
-                format!("`{}` is a {ty} field: its nodes are child elements, not attribute text", attr.name),
+                format!(
+                    "`{}` is a {ty} field: its nodes are child elements, not attribute text",
+                    attr.name
+                ),
             ));
             return Value::Unparsed(attr.value.to_string());
         }
-        match xml_value::parse_value(ty, &attr.value) {
+        let text = if ty.scalar() == Scalar::String {
+            normalize_whitespace(&attr.value)
+        } else {
+            Cow::Borrowed(&*attr.value)
+        };
+        match xml_value::parse_value(ty, &text) {
             Ok(value) => value,
             Err(error) => {
                 let span = if attr.verbatim {
@@ -593,8 +694,12 @@ impl<'s> XmlReader<'s> {
                     attr.value_span
                 };
                 self.builder.report(
-                    Diagnostic::new(&FIELD_VALUE_SYNTAX, span, format!("`{}`: {}", attr.name, error.message))
-                        .value(truncate(&attr.value, 80)),
+                    Diagnostic::new(
+                        &FIELD_VALUE_SYNTAX,
+                        span,
+                        format!("`{}`: {}", attr.name, error.message),
+                    )
+                    .value(truncate(&attr.value, 80)),
                 );
                 Value::Unparsed(attr.value.to_string())
             }
@@ -607,6 +712,15 @@ fn named_attr(attrs: &[Attr], key: &str) -> Option<Named> {
         text: a.value.to_string(),
         span: a.value_span,
     })
+}
+
+/// XML attribute-value normalization (XML 1.0 3.3.3): each line end (`\r\n`, `\r`, `\n`)
+/// and tab becomes one space. Applied to string fields, whose text is kept.
+fn normalize_whitespace(text: &str) -> Cow<'_, str> {
+    if !text.contains(['\t', '\r', '\n']) {
+        return Cow::Borrowed(text);
+    }
+    Cow::Owned(text.replace("\r\n", " ").replace(['\t', '\r', '\n'], " "))
 }
 
 fn truncate(text: &str, max: usize) -> String {
@@ -644,7 +758,11 @@ impl Context {
             Frame::ProtoInterface { proto } => Context::ProtoInterface(*proto),
             Frame::ExternProtoDeclare { proto } => Context::ExternProto(*proto),
             Frame::FieldDecl { owner, field } => Context::FieldDecl(*owner, field.clone()),
-            Frame::FieldValue { node, field, name_span } => Context::FieldValue(*node, field.clone(), *name_span),
+            Frame::FieldValue {
+                node,
+                field,
+                name_span,
+            } => Context::FieldValue(*node, field.clone(), *name_span),
             Frame::Is { node } => Context::Is(*node),
             Frame::Use => Context::Use,
             Frame::Other => Context::Other,
@@ -665,9 +783,20 @@ enum Hint {
     /// The Scene or the open ProtoBody (the builder knows which by its scope).
     TopLevel,
     Node(NodeId),
-    Field { node: NodeId, field: String, origin: Origin },
-    FieldValue { node: NodeId, field: String, name_span: Span },
-    ProtoField { proto: usize, field: String },
+    Field {
+        node: NodeId,
+        field: String,
+        origin: Origin,
+    },
+    FieldValue {
+        node: NodeId,
+        field: String,
+        name_span: Span,
+    },
+    ProtoField {
+        proto: usize,
+        field: String,
+    },
 }
 
 impl Hint {
@@ -680,19 +809,30 @@ impl Hint {
                 field_span,
                 origin: Origin::Children,
             },
-            Hint::Field { node, field, origin } => Parent::Field {
+            Hint::Field {
+                node,
+                field,
+                origin,
+            } => Parent::Field {
                 node: *node,
                 field,
                 field_span,
                 origin: *origin,
             },
-            Hint::FieldValue { node, field, name_span } => Parent::Field {
+            Hint::FieldValue {
+                node,
+                field,
+                name_span,
+            } => Parent::Field {
                 node: *node,
                 field,
                 field_span: *name_span,
                 origin: Origin::FieldValue,
             },
-            Hint::ProtoField { proto, field } => Parent::ProtoField { proto: *proto, field },
+            Hint::ProtoField { proto, field } => Parent::ProtoField {
+                proto: *proto,
+                field,
+            },
         }
     }
 }

@@ -31,22 +31,31 @@ pub fn render(report: &FileReport, source: &[u8], color: bool) -> String {
     if report.diagnostics.is_empty() && !report.truncated {
         return out;
     }
-    let lines = LineIndex::new(source);
     let theme = if color {
         GraphicalTheme::unicode()
     } else {
         GraphicalTheme::unicode_nocolor()
     };
-    let handler = GraphicalReportHandler::new_themed(theme)
-        .with_context_lines(1)
-        .without_primary_span_start()
-        .with_wrap_lines(false)
-        .with_links(false);
+    let renderer = Renderer {
+        handler: GraphicalReportHandler::new_themed(theme)
+            .with_context_lines(1)
+            .without_primary_span_start()
+            .with_wrap_lines(false)
+            .with_links(false),
+        path: &report.path,
+        source,
+        lines: LineIndex::new(source),
+        color,
+    };
     for diagnostic in &report.diagnostics {
-        render_one(&mut out, &handler, &report.path, diagnostic, source, &lines, color);
+        renderer.block(&mut out, diagnostic);
     }
     if report.truncated {
-        let _ = writeln!(out, "{}: further diagnostics not shown (--max-diagnostics)\n", report.path);
+        let path = &report.path;
+        let _ = writeln!(
+            out,
+            "{path}: further diagnostics not shown (--max-diagnostics)\n"
+        );
     }
     out
 }
@@ -64,44 +73,50 @@ pub fn summary_line(summary: &Summary) -> String {
     )
 }
 
-fn render_one(
-    out: &mut String,
-    handler: &GraphicalReportHandler,
-    path: &str,
-    d: &Resolved,
-    source: &[u8],
-    lines: &LineIndex,
+struct Renderer<'a> {
+    handler: GraphicalReportHandler,
+    path: &'a str,
+    source: &'a [u8],
+    lines: LineIndex<'a>,
     color: bool,
-) {
-    let (on, bold, off) = if color {
-        (severity_colour(d.severity), "\x1b[1m", "\x1b[0m")
-    } else {
-        ("", "", "")
-    };
-    let _ = writeln!(out, "{on}{bold}{}[{}]{off}{bold}: {}{off}", d.severity, d.code, d.message);
+}
 
-    let mut labels = vec![Label {
-        span: d.span,
-        text: None,
-        at: (d.line, d.column),
-    }];
-    labels.extend(d.related.iter().map(|r| Label {
-        span: r.span,
-        text: Some(r.label.clone()),
-        at: (r.line, r.column),
-    }));
-    let snippet = Snippet::new(path, &labels, source, lines, d.help.clone(), d.severity);
-    let mut drawn = String::new();
-    if snippet.labels.is_empty() || handler.render_report(&mut drawn, &snippet).is_err() {
-        let _ = writeln!(out, "  ╭─[{path}:{}:{}]", d.line, d.column);
-        if let Some(help) = &d.help {
-            let _ = writeln!(out, "  help: {help}");
+impl Renderer<'_> {
+    fn block(&self, out: &mut String, d: &Resolved) {
+        let (on, bold, off) = if self.color {
+            (severity_colour(d.severity), "\x1b[1m", "\x1b[0m")
+        } else {
+            ("", "", "")
+        };
+        let (severity, code, message) = (d.severity, d.code, &d.message);
+        let _ = writeln!(
+            out,
+            "{on}{bold}{severity}[{code}]{off}{bold}: {message}{off}"
+        );
+
+        let mut labels = vec![Label {
+            span: d.span,
+            text: None,
+            at: (d.line, d.column),
+        }];
+        labels.extend(d.related.iter().map(|r| Label {
+            span: r.span,
+            text: Some(r.label.clone()),
+            at: (r.line, r.column),
+        }));
+        let snippet = Snippet::new(self.path, &labels, self.source, &self.lines, d);
+        let mut drawn = String::new();
+        if snippet.labels.is_empty() || self.handler.render_report(&mut drawn, &snippet).is_err() {
+            let _ = writeln!(out, "  ╭─[{}:{}:{}]\n  ╰────", self.path, d.line, d.column);
+            if let Some(help) = &d.help {
+                let _ = writeln!(out, "  help: {help}");
+            }
+        } else {
+            // The report's message is empty, so miette's first line is empty: drop it.
+            out.push_str(drawn.strip_prefix('\n').unwrap_or(&drawn));
         }
-    } else {
-        // The report's message is empty, so miette's first line is empty: drop it.
-        out.push_str(drawn.strip_prefix('\n').unwrap_or(&drawn));
+        let _ = writeln!(out, "  = clause {}, at {}\n", d.clause, d.path);
     }
-    let _ = writeln!(out, "  = clause {}, at {}\n", d.clause, d.path);
 }
 
 fn severity_colour(severity: Severity) -> &'static str {
@@ -134,8 +149,7 @@ impl Snippet {
         labels: &[Label],
         source: &[u8],
         lines: &LineIndex,
-        help: Option<String>,
-        severity: Severity,
+        d: &Resolved,
     ) -> Snippet {
         let mut placed: Vec<Placed> = labels
             .iter()
@@ -147,8 +161,8 @@ impl Snippet {
         let mut snippet = Snippet {
             excerpts: Excerpts(Vec::new()),
             labels: Vec::new(),
-            help,
-            severity: match severity {
+            help: d.help.clone(),
+            severity: match d.severity {
                 Severity::Error => miette::Severity::Error,
                 Severity::Warning => miette::Severity::Warning,
                 Severity::Info | Severity::Hint => miette::Severity::Advice,
@@ -171,11 +185,18 @@ impl Snippet {
 
     /// One excerpt for a group of labels (see [`group_len`]), in the next free virtual range.
     fn add_excerpt(&mut self, path: &str, group: &[Placed], source: &[u8], lines: &LineIndex) {
-        let base = self.excerpts.0.last().map_or(0, |e| e.base + e.text.len() + 1);
+        let base = self
+            .excerpts
+            .0
+            .last()
+            .map_or(0, |e| e.base + e.text.len() + 1);
         let first = &group[0];
         let (window, prefix, suffix, first_line) = if group.len() == 1 && first.long {
             let line = lines.line_range(first.line);
-            let start = floor_boundary(source, first.span.start.saturating_sub(MARGIN).max(line.start));
+            let start = floor_boundary(
+                source,
+                first.span.start.saturating_sub(MARGIN).max(line.start),
+            );
             let end = ceil_boundary(source, (first.span.end + MARGIN).min(line.end));
             let prefix = if start > line.start { ELLIPSIS } else { "" };
             let suffix = if end < line.end { ELLIPSIS } else { "" };
@@ -232,10 +253,15 @@ struct Placed {
 
 impl Placed {
     fn new(label: &Label, primary: bool, source: &[u8], lines: &LineIndex) -> Placed {
-        let start = (label.span.start as usize).min(source.len());
-        let line = lines.line_col(start).line;
+        let at = (label.span.start as usize).min(source.len());
+        let empty = label.span.end <= label.span.start;
+        let mut line = lines.line_col(at).line;
+        if empty && line > 1 && lines.line_range(line).is_empty() {
+            // An empty line (the end of the file, say): point at the end of the one before.
+            line -= 1;
+        }
         let range = lines.line_range(line);
-        let mut start = floor_boundary(source, start.clamp(range.start, range.end));
+        let mut start = floor_boundary(source, at.clamp(range.start, range.end));
         let mut end = (label.span.end as usize).clamp(start, range.end);
         let long = range.len() > LONG_LINE;
         if long {
@@ -278,7 +304,9 @@ fn group_len(labels: &[Placed], lines: &LineIndex) -> usize {
 }
 
 fn all_short(range: std::ops::Range<usize>, lines: &LineIndex) -> bool {
-    range.into_iter().all(|l| lines.line_range(l).len() <= LONG_LINE)
+    range
+        .into_iter()
+        .all(|l| lines.line_range(l).len() <= LONG_LINE)
 }
 
 /// The bytes as UTF-8 of the same length: each byte of an invalid sequence becomes `?`, and
@@ -295,7 +323,11 @@ fn sanitize(bytes: &[u8]) -> String {
     let mut fixed = String::with_capacity(text.len());
     let mut chars = text.chars().peekable();
     while let Some(c) = chars.next() {
-        fixed.push(if c == '\r' && chars.peek() != Some(&'\n') { ' ' } else { c });
+        fixed.push(if c == '\r' && chars.peek() != Some(&'\n') {
+            ' '
+        } else {
+            c
+        });
     }
     fixed
 }
@@ -342,7 +374,9 @@ impl miette::Diagnostic for Snippet {
     }
 
     fn help<'a>(&'a self) -> Option<Box<dyn fmt::Display + 'a>> {
-        self.help.as_ref().map(|h| Box::new(h) as Box<dyn fmt::Display>)
+        self.help
+            .as_ref()
+            .map(|h| Box::new(h) as Box<dyn fmt::Display>)
     }
 
     fn source_code(&self) -> Option<&dyn SourceCode> {
@@ -384,10 +418,102 @@ impl SourceCode for Excerpts {
         Ok(Box::new(MietteSpanContents::new_named(
             excerpt.name.clone(),
             inner.data(),
-            SourceSpan::new((inner.span().offset() + excerpt.base).into(), inner.span().len()),
+            SourceSpan::new(
+                (inner.span().offset() + excerpt.base).into(),
+                inner.span().len(),
+            ),
             inner.line() + excerpt.first_line,
             inner.column(),
             inner.line_count(),
         )))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::report::{resolve, Diagnostic, Stats};
+    use crate::validate::document::def_duplicate::DEF_DUPLICATE;
+
+    fn render_one(source: &str, diagnostic: Diagnostic) -> String {
+        let report = FileReport {
+            path: "s.x3d".to_string(),
+            encoding: None,
+            x3d_version: None,
+            profile: None,
+            diagnostics: resolve(&[diagnostic], source.as_bytes(), None),
+            truncated: false,
+            stats: Stats::default(),
+        };
+        render(&report, source.as_bytes(), false)
+    }
+
+    fn span_of(source: &str, text: &str, nth: usize) -> Span {
+        let start = source.match_indices(text).nth(nth).unwrap().0;
+        Span::new(start, start + text.len())
+    }
+
+    #[test]
+    fn block_with_related_label() {
+        let source = "<X3D>\n<Group DEF='A'/>\n<Group DEF='A'/>\n</X3D>\n";
+        let d = Diagnostic::new(&DEF_DUPLICATE, span_of(source, "A", 1), "DEF `A` again")
+            .related(span_of(source, "A", 0), "first defined here")
+            .help("rename one");
+        let out = render_one(source, d);
+        assert!(
+            out.starts_with("error[DEF_DUPLICATE]: DEF `A` again\n"),
+            "{out}"
+        );
+        assert!(
+            out.contains("[s.x3d:3:13]") && out.contains("first defined here"),
+            "{out}"
+        );
+        assert!(
+            out.contains("help: rename one") && out.contains("= clause 4.4.3, at /X3D\n"),
+            "{out}"
+        );
+        assert!(!out.contains('\x1b'), "{out}");
+    }
+
+    #[test]
+    fn long_lines_are_cut_around_the_span() {
+        let source = format!("<X3D>{}<Bad/></X3D>", "1 ".repeat(500_000));
+        let d = Diagnostic::new(&DEF_DUPLICATE, span_of(&source, "Bad", 0), "bad");
+        let out = render_one(&source, d);
+        assert!(
+            out.len() < 1000 && out.contains("… 1 1 1") && out.contains("<Bad/>"),
+            "{out}"
+        );
+    }
+
+    #[test]
+    fn empty_span_at_the_end_points_at_the_last_char() {
+        let source = "<X3D>\r\n<Scene>\r\n";
+        let d = Diagnostic::new(
+            &DEF_DUPLICATE,
+            Span::new(source.len(), source.len()),
+            "ends",
+        );
+        let out = render_one(source, d);
+        assert!(
+            out.contains("[s.x3d:3:1]") && out.contains("2 │ <Scene>\n"),
+            "{out}"
+        );
+        assert!(out.contains("      ─\n"), "{out}");
+    }
+
+    #[test]
+    fn summary() {
+        let summary = Summary {
+            files: 1,
+            errors: 2,
+            warnings: 1,
+            infos: 0,
+            hints: 1,
+        };
+        assert_eq!(
+            summary_line(&summary),
+            "Checked 1 file: 2 errors, 1 warning, 0 infos, 1 hint"
+        );
     }
 }

@@ -38,7 +38,10 @@ pub fn node_path(doc: &Document, id: NodeId) -> String {
                 break format!("{}/ProtoBody", proto_declare(doc, proto));
             }
             Place::ProtoField { proto, field } => {
-                let decl = doc.protos.get(proto).and_then(|p| p.interface.get(field as usize));
+                let decl = doc
+                    .protos
+                    .get(proto)
+                    .and_then(|p| p.interface.get(field as usize));
                 let siblings = decl
                     .and_then(|f| f.value.as_ref())
                     .and_then(|(v, _)| v.as_nodes())
@@ -115,5 +118,122 @@ fn quote(text: &str) -> String {
         format!("\"{text}\"")
     } else {
         format!("'{text}'")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::builder::Parent;
+    use crate::model::{Builder, Encoding, Named, Origin, ProtoDecl, Span};
+
+    /// Builds nodes as a reader would: open, optionally DEF, close later.
+    struct Scene(Builder);
+
+    impl Scene {
+        fn new() -> Scene {
+            Scene(Builder::new(Encoding::Xml))
+        }
+
+        fn open(&mut self, ty: &str, parent: Option<(NodeId, &str)>, def: Option<&str>) -> NodeId {
+            let kind = self.0.node_kind(ty);
+            let id = self.0.begin_node(kind, Span::default(), parent_of(parent));
+            if let Some(name) = def {
+                self.0.define(id, named(name));
+            }
+            id
+        }
+
+        fn leaf(&mut self, ty: &str, parent: Option<(NodeId, &str)>, def: Option<&str>) -> NodeId {
+            let id = self.open(ty, parent, def);
+            self.0.end_node(id, Span::default());
+            id
+        }
+
+        fn reuse(&mut self, ty: &str, name: &str, parent: Option<(NodeId, &str)>) {
+            self.0
+                .use_node(&named(name), Some(ty), Span::default(), parent_of(parent));
+        }
+
+        fn path(&self, id: NodeId) -> String {
+            node_path(self.0.doc(), id)
+        }
+    }
+
+    fn parent_of(parent: Option<(NodeId, &str)>) -> Parent<'_> {
+        match parent {
+            None => Parent::TopLevel,
+            Some((node, field)) => Parent::Field {
+                node,
+                field,
+                field_span: Span::default(),
+                origin: Origin::Children,
+            },
+        }
+    }
+
+    fn named(text: &str) -> Named {
+        Named {
+            text: text.to_string(),
+            span: Span::default(),
+        }
+    }
+
+    #[test]
+    fn positions_among_same_type_siblings() {
+        let mut s = Scene::new();
+        s.leaf("Transform", None, None);
+        s.leaf("Group", None, None);
+        let t = s.open("Transform", None, None);
+        s.leaf("Shape", Some((t, "children")), None);
+        let shape = s.open("Shape", Some((t, "children")), None);
+        let appearance = s.open("Appearance", Some((shape, "appearance")), None);
+        let material = s.leaf("Material", Some((appearance, "material")), None);
+        s.0.end_node(appearance, Span::default());
+        s.0.end_node(shape, Span::default());
+        s.0.end_node(t, Span::default());
+        assert_eq!(s.path(t), "/X3D/Scene/Transform[2]");
+        assert_eq!(
+            s.path(material),
+            "/X3D/Scene/Transform[2]/Shape[2]/Appearance/Material"
+        );
+    }
+
+    #[test]
+    fn def_names_and_uses() {
+        let mut s = Scene::new();
+        let t = s.open("Transform", None, Some("T"));
+        let first = s.leaf("Shape", Some((t, "children")), Some("S"));
+        s.reuse("Shape", "S", Some((t, "children")));
+        let third = s.leaf("Shape", Some((t, "children")), None);
+        s.0.end_node(t, Span::default());
+        assert_eq!(
+            s.path(first),
+            "/X3D/Scene/Transform[@DEF='T']/Shape[@DEF='S']"
+        );
+        // The USE element counts, as XPath counts it.
+        assert_eq!(s.path(third), "/X3D/Scene/Transform[@DEF='T']/Shape[3]");
+    }
+
+    #[test]
+    fn proto_body() {
+        let mut s = Scene::new();
+        let proto = s.0.declare_proto(ProtoDecl {
+            name: named("Wheel"),
+            span: Span::default(),
+            external: false,
+            interface: Vec::new(),
+            body: Vec::new(),
+            url: Vec::new(),
+        });
+        s.0.begin_proto_body(proto);
+        let group = s.open("Group", None, None);
+        let shape = s.leaf("Shape", Some((group, "children")), Some("it's"));
+        s.0.end_node(group, Span::default());
+        s.0.end_proto_body();
+        assert_eq!(
+            s.path(shape),
+            "/X3D/Scene/ProtoDeclare[@name='Wheel']/ProtoBody/Group[1]/Shape[@DEF=\"it's\"]"
+        );
     }
 }

@@ -48,10 +48,17 @@ impl Stats {
         };
         for proto in &doc.protos {
             stats.uses += uses(&proto.body);
-            stats.uses += proto.interface.iter().map(|f| declared_uses(&f.value)).sum::<usize>();
+            stats.uses += proto
+                .interface
+                .iter()
+                .map(|f| declared_uses(&f.value))
+                .sum::<usize>();
         }
         for node in &doc.nodes {
-            *stats.node_types.entry(node.type_name().to_string()).or_default() += 1;
+            *stats
+                .node_types
+                .entry(node.type_name().to_string())
+                .or_default() += 1;
             stats.shapes += usize::from(node.is_a("X3DShapeNode"));
             stats.lights += usize::from(node.is_a("X3DLightNode"));
             stats.textures += usize::from(node.is_a("X3DTextureNode"));
@@ -62,7 +69,11 @@ impl Stats {
                 .filter_map(|f| f.value.as_nodes())
                 .map(uses)
                 .sum::<usize>();
-            stats.uses += node.declared.iter().map(|f| declared_uses(&f.value)).sum::<usize>();
+            stats.uses += node
+                .declared
+                .iter()
+                .map(|f| declared_uses(&f.value))
+                .sum::<usize>();
             let primitives = primitives(doc, node);
             stats.triangles = stats.triangles.saturating_add(primitives.triangles);
             stats.lines = stats.lines.saturating_add(primitives.lines);
@@ -101,26 +112,46 @@ fn primitives(doc: &Document, node: &Node) -> Primitives {
     };
     match def.name {
         "IndexedFaceSet" | "IndexedTriangleStripSet" | "IndexedTriangleFanSet" => {
-            let field = if def.name == "IndexedFaceSet" { "coordIndex" } else { "index" };
+            let field = if def.name == "IndexedFaceSet" {
+                "coordIndex"
+            } else {
+                "index"
+            };
             triangles(index_runs(ints(field)).map(|n| n.saturating_sub(2)).sum())
         }
         "IndexedTriangleSet" => triangles(ints("index").len() as u64 / 3),
         "TriangleSet" => triangles(coordinates(doc, node) / 3),
         "TriangleStripSet" | "TriangleFanSet" => {
-            let field = if def.name == "TriangleStripSet" { "stripCount" } else { "fanCount" };
+            let field = if def.name == "TriangleStripSet" {
+                "stripCount"
+            } else {
+                "fanCount"
+            };
             triangles(counts(ints(field)).map(|n| n.saturating_sub(2)).sum())
         }
         "ElevationGrid" => {
-            let dimension = |name| ints(name).first().map_or(0, |&d| u64::from(d.max(0) as u32));
+            let dimension = |name| {
+                ints(name)
+                    .first()
+                    .map_or(0, |&d| u64::from(d.max(0) as u32))
+            };
             let (x, z) = (dimension("xDimension"), dimension("zDimension"));
-            triangles(x.saturating_sub(1).saturating_mul(z.saturating_sub(1)).saturating_mul(2))
+            triangles(
+                x.saturating_sub(1)
+                    .saturating_mul(z.saturating_sub(1))
+                    .saturating_mul(2),
+            )
         }
         "IndexedLineSet" => Primitives {
-            lines: index_runs(ints("coordIndex")).map(|n| n.saturating_sub(1)).sum(),
+            lines: index_runs(ints("coordIndex"))
+                .map(|n| n.saturating_sub(1))
+                .sum(),
             ..Primitives::default()
         },
         "LineSet" => Primitives {
-            lines: counts(ints("vertexCount")).map(|n| n.saturating_sub(1)).sum(),
+            lines: counts(ints("vertexCount"))
+                .map(|n| n.saturating_sub(1))
+                .sum(),
             ..Primitives::default()
         },
         "PointSet" => Primitives {
@@ -152,5 +183,151 @@ fn coordinates(doc: &Document, node: &Node) -> u64 {
     match coord.value("point") {
         Some(v @ (Value::Floats(_) | Value::Doubles(_))) => v.len() as u64 / 3,
         _ => 0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::builder::Parent;
+    use crate::model::{Builder, Encoding, FieldEntry, Named, NodeId, Origin, Span};
+
+    struct Scene(Builder);
+
+    impl Scene {
+        fn node(
+            &mut self,
+            ty: &str,
+            parent: Option<(NodeId, &str)>,
+            fields: Vec<(&str, Value)>,
+        ) -> NodeId {
+            let kind = self.0.node_kind(ty);
+            let id = self.0.begin_node(kind, Span::default(), parent_of(parent));
+            for (name, value) in fields {
+                let field = self.0.field_ref(id, name);
+                let entry = FieldEntry {
+                    field,
+                    name_span: Span::default(),
+                    span: Span::default(),
+                    origin: Origin::Attribute,
+                    value,
+                };
+                self.0.add_field(id, entry);
+            }
+            self.0.end_node(id, Span::default());
+            id
+        }
+
+        fn with_coord(&mut self, ty: &str, coord: &str, point: Value) -> NodeId {
+            let kind = self.0.node_kind(ty);
+            let id = self.0.begin_node(kind, Span::default(), Parent::TopLevel);
+            self.node(coord, Some((id, "coord")), vec![("point", point)]);
+            self.0.end_node(id, Span::default());
+            id
+        }
+    }
+
+    fn parent_of(parent: Option<(NodeId, &str)>) -> Parent<'_> {
+        match parent {
+            None => Parent::TopLevel,
+            Some((node, field)) => Parent::Field {
+                node,
+                field,
+                field_span: Span::default(),
+                origin: Origin::Children,
+            },
+        }
+    }
+
+    fn named(text: &str) -> Named {
+        Named {
+            text: text.to_string(),
+            span: Span::default(),
+        }
+    }
+
+    #[test]
+    fn primitives_per_geometry() {
+        let mut s = Scene(Builder::new(Encoding::Xml));
+        let ints = |v: &[i32]| Value::Int32s(v.to_vec());
+        s.node(
+            "IndexedFaceSet",
+            None,
+            vec![(
+                "coordIndex",
+                ints(&[0, 1, 2, 3, -1, 0, 1, 2, -1, 5, 6, -1, 1, 2, 3, 4, 5]),
+            )],
+        );
+        s.node(
+            "IndexedTriangleSet",
+            None,
+            vec![("index", ints(&[0, 1, 2, 3, 4, 5, 6]))],
+        );
+        s.with_coord("TriangleSet", "Coordinate", Value::Floats(vec![0.0; 27]));
+        s.node(
+            "IndexedTriangleStripSet",
+            None,
+            vec![("index", ints(&[0, 1, 2, 3, -1, 4, 5]))],
+        );
+        s.node(
+            "TriangleFanSet",
+            None,
+            vec![("fanCount", ints(&[3, 5, -1, 2]))],
+        );
+        s.node(
+            "ElevationGrid",
+            None,
+            vec![("xDimension", ints(&[3])), ("zDimension", ints(&[4]))],
+        );
+        s.node(
+            "ElevationGrid",
+            None,
+            vec![("xDimension", ints(&[-5])), ("zDimension", ints(&[4]))],
+        );
+        s.node(
+            "IndexedLineSet",
+            None,
+            vec![("coordIndex", ints(&[0, 1, 2, -1, 3, 4, -1, 5]))],
+        );
+        s.node("LineSet", None, vec![("vertexCount", ints(&[2, 3, -4]))]);
+        s.with_coord(
+            "PointSet",
+            "CoordinateDouble",
+            Value::Doubles(vec![0.0; 12]),
+        );
+        s.node("Box", None, vec![]);
+        let stats = Stats::of(s.0.doc());
+        assert_eq!(stats.triangles, 6 + 2 + 3 + 2 + 4 + 12);
+        assert_eq!(stats.lines, 3 + 3);
+        assert_eq!(stats.points, 4);
+    }
+
+    #[test]
+    fn shared_nodes_count_once() {
+        let mut s = Scene(Builder::new(Encoding::Xml));
+        let kind = s.0.node_kind("Shape");
+        let shape = s.0.begin_node(kind, Span::default(), Parent::TopLevel);
+        s.0.define(shape, named("S"));
+        s.node(
+            "IndexedTriangleSet",
+            Some((shape, "geometry")),
+            vec![("index", Value::Int32s(vec![0, 1, 2]))],
+        );
+        s.0.end_node(shape, Span::default());
+        s.0.use_node(
+            &named("S"),
+            Some("Shape"),
+            Span::default(),
+            Parent::TopLevel,
+        );
+        s.node("DirectionalLight", None, vec![]);
+        s.node("ImageTexture", None, vec![]);
+        let stats = Stats::of(s.0.doc());
+        assert_eq!((stats.nodes, stats.shapes, stats.triangles), (4, 1, 1));
+        assert_eq!(
+            (stats.defs, stats.uses, stats.lights, stats.textures),
+            (1, 1, 1, 1)
+        );
+        assert_eq!(stats.node_types.get("Shape"), Some(&1));
     }
 }

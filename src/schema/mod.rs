@@ -1,5 +1,6 @@
-//! The X3D schema tables: node types, their fields and components, per version.
+//! The X3D schema tables: node types, their fields and components, and the profiles, per version.
 
+pub mod profiles;
 pub mod types;
 // Generated and checked for freshness byte for byte, so rustfmt must leave it alone.
 #[rustfmt::skip]

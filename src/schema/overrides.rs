@@ -10,9 +10,10 @@
 //! Which clause speaks for which version: `000_` (Shape) is 4.0, `001_` (Shape) is 4.1, and
 //! `002_` (Rendering), `003_` (Lighting) and `004_` (Texturing) are 4.0 (`004_` predates
 //! 4.1's RenderedTexture). Entries from them name 4.0 only, although the 4.1 UOM repeats
-//! most of the 4.0 entries they correct: nothing here speaks for 4.1 there. Two exceptions:
-//! `003_` shows the 3.x value of light `intensity` next to the 4.0 one, and the SpotLight
-//! angle bound π/2 is the same in every version (the UOMs all round it down).
+//! most of the 4.0 entries they correct: nothing here speaks for 4.1 there. Exceptions:
+//! `003_` shows the 3.x value of light `intensity` next to the 4.x one (those entries change
+//! nothing today; they pin the values), and the SpotLight angle bound π/2 is the same in
+//! every version (the UOMs all round it down).
 //!
 //! Not compiled into the checker (nothing there needs it); run `cargo run -p
 //! x3dcheck-codegen` after every change here.
@@ -43,6 +44,9 @@ pub enum Change {
     Default(&'static str),
     /// The component level the field needs above its node's; None for just the node's.
     Component(Option<ComponentLevel>),
+    /// The field's enumerated values are the only ones allowed (the clause's table is a
+    /// closed list) although the UOM marks them as suggestions.
+    Strict,
     /// The field does not exist in these versions although the UOM lists it.
     Remove,
     /// The field exists in these versions although the UOM does not list it.
@@ -340,6 +344,30 @@ pub static FIELD_OVERRIDES: &[FieldOverride] = &[
         clause: "18.4.9",
         why: "the table gives [0,1]; the UOM says [0,∞)",
     },
+    FieldOverride {
+        versions: ALL,
+        node: "MultiTexture",
+        field: "mode",
+        change: Change::Strict,
+        clause: "18.4.3 Table 18.3",
+        why: "the table lists the valid values of mode; the UOM has the same values but marks them as suggestions",
+    },
+    FieldOverride {
+        versions: ALL,
+        node: "MultiTexture",
+        field: "source",
+        change: Change::Strict,
+        clause: "18.4.3 Table 18.4",
+        why: "the table lists the valid values of source; the UOM has the same values but marks them as suggestions",
+    },
+    FieldOverride {
+        versions: ALL,
+        node: "MultiTexture",
+        field: "function",
+        change: Change::Strict,
+        clause: "18.4.3 Table 18.5",
+        why: "the table lists the valid values of function; the UOM has the same values but marks them as suggestions",
+    },
 ];
 
 pub static NODE_OVERRIDES: &[NodeOverride] = &[
@@ -387,10 +415,19 @@ pub static NODE_OVERRIDES: &[NodeOverride] = &[
     },
 ];
 
-pub static COMPONENT_OVERRIDES: &[ComponentOverride] = &[ComponentOverride {
-    versions: V4_0,
-    component: "Lighting",
-    max_level: 4,
-    clause: "17.6 (Table 17.6)",
-    why: "level 4 (all fields and capabilities fully supported) adds no node",
-}];
+pub static COMPONENT_OVERRIDES: &[ComponentOverride] = &[
+    ComponentOverride {
+        versions: V4_0,
+        component: "Lighting",
+        max_level: 4,
+        clause: "17.6 (Table 17.6)",
+        why: "level 4 (all fields and capabilities fully supported) adds no node",
+    },
+    ComponentOverride {
+        versions: &[Version::V3_3, Version::V4_0, Version::V4_1],
+        component: "VolumeRendering",
+        max_level: 4,
+        clause: "41.5; MedicalInterchange profile (Annex L, Table L.2)",
+        why: "the MedicalInterchange profile includes VolumeRendering level 4, a level that adds no node",
+    },
+];

@@ -34,7 +34,9 @@ impl Ctx<'_> {
     /// or the whole value when it cannot be told.
     pub fn scalar_span(&self, entry: &FieldEntry, k: usize) -> Span {
         let range = entry.span.range();
-        let Some(text) = self.source.get(range.clone()) else { return entry.span };
+        let Some(text) = self.source.get(range.clone()) else {
+            return entry.span;
+        };
         let is_separator = |b: u8| b.is_ascii_whitespace() || matches!(b, b',' | b'[' | b']');
         let (mut at, mut seen) = (0, 0);
         while at < text.len() {

@@ -34,6 +34,7 @@ pub static RULES: &[&Rule] = &[
     &sfnode_multiple::SFNODE_MULTIPLE,
     &node_deprecated::NODE_DEPRECATED,
     &field_deprecated::FIELD_DEPRECATED,
+    &component_level_insufficient::COMPONENT_LEVEL_INSUFFICIENT,
     &validation_incomplete::VALIDATION_INCOMPLETE,
 ];
 

@@ -2,8 +2,15 @@
 //! closest name within a small edit distance.
 
 /// The candidate the user most likely meant by `name`, if any is close enough.
-pub fn did_you_mean<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str> + Clone) -> Option<&'a str> {
-    if let Some(exact) = candidates.clone().into_iter().find(|c| c.eq_ignore_ascii_case(name)) {
+pub fn did_you_mean<'a>(
+    name: &str,
+    candidates: impl IntoIterator<Item = &'a str> + Clone,
+) -> Option<&'a str> {
+    if let Some(exact) = candidates
+        .clone()
+        .into_iter()
+        .find(|c| c.eq_ignore_ascii_case(name))
+    {
         return Some(exact);
     }
     let lower = name.to_ascii_lowercase();
@@ -17,7 +24,10 @@ pub fn did_you_mean<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str
 }
 
 /// `did you mean `x`?` as help text.
-pub fn help(name: &str, candidates: impl IntoIterator<Item = &'static str> + Clone) -> Option<String> {
+pub fn help(
+    name: &str,
+    candidates: impl IntoIterator<Item = &'static str> + Clone,
+) -> Option<String> {
     did_you_mean(name, candidates).map(|c| format!("did you mean `{c}`?"))
 }
 

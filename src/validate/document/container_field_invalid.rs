@@ -36,7 +36,9 @@ crate::declare_rule! {
 
 fn check(ctx: &mut Ctx) {
     for (id, node) in ctx.doc.iter() {
-        let NodeKind::Known { def, .. } = node.kind else { continue };
+        let NodeKind::Known { def, .. } = node.kind else {
+            continue;
+        };
         for entry in node.fields.iter().filter(|e| e.origin == Origin::Children) {
             let is_node_field = match &entry.field {
                 FieldRef::Schema { def, .. } => def.ty.scalar() == Scalar::Node,
@@ -45,15 +47,25 @@ fn check(ctx: &mut Ctx) {
             };
             // Unknown child nodes get NODE_UNKNOWN; their default placement is a guess.
             let children = entry.value.as_nodes().unwrap_or_default();
-            let any_known = children.iter().any(|c| ctx.doc.node(c.node).def().is_some());
+            let any_known = children
+                .iter()
+                .any(|c| ctx.doc.node(c.node).def().is_some());
             if is_node_field || !any_known {
                 continue;
             }
-            let node_fields = def.fields.iter().filter(|f| f.ty.scalar() == Scalar::Node).map(|f| f.name);
+            let node_fields = def
+                .fields
+                .iter()
+                .filter(|f| f.ty.scalar() == Scalar::Node)
+                .map(|f| f.name);
             let mut diagnostic = Diagnostic::new(
                 &CONTAINER_FIELD_INVALID,
                 entry.name_span,
-                format!("containerField `{}` names no node field of {}", entry.name(), def.name),
+                format!(
+                    "containerField `{}` names no node field of {}",
+                    entry.name(),
+                    def.name
+                ),
             )
             .node(id)
             .value(entry.name().to_string())
@@ -61,7 +73,8 @@ fn check(ctx: &mut Ctx) {
             if diagnostic.help.is_none() {
                 let all: Vec<&str> = node_fields.collect();
                 if !all.is_empty() {
-                    diagnostic = diagnostic.help(format!("{}'s node fields: {}", def.name, all.join(", ")));
+                    diagnostic =
+                        diagnostic.help(format!("{}'s node fields: {}", def.name, all.join(", ")));
                 }
             }
             ctx.report(diagnostic);

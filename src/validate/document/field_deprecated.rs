@@ -33,12 +33,19 @@ fn check(ctx: &mut Ctx) {
     }
     for id in ctx.doc.nodes_of_type("TextureProperties") {
         let node = ctx.doc.node(id);
-        for entry in node.fields.iter().filter(|e| matches!(e.name(), "borderColor" | "borderWidth")) {
+        for entry in node
+            .fields
+            .iter()
+            .filter(|e| matches!(e.name(), "borderColor" | "borderWidth"))
+        {
             ctx.report(
                 Diagnostic::new(
                     &FIELD_DEPRECATED,
                     entry.name_span,
-                    format!("TextureProperties.{} is deprecated in X3D 4 and ignored", entry.name()),
+                    format!(
+                        "TextureProperties.{} is deprecated in X3D 4 and ignored",
+                        entry.name()
+                    ),
                 )
                 .node(id),
             );

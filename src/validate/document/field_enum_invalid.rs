@@ -38,8 +38,12 @@ crate::declare_rule! {
 fn check(ctx: &mut Ctx) {
     for (id, node) in ctx.doc.iter() {
         for entry in &node.fields {
-            let Some(def) = entry.schema_def() else { continue };
-            let (true, Value::Strings(strings)) = (def.enumeration_strict, &entry.value) else { continue };
+            let Some(def) = entry.schema_def() else {
+                continue;
+            };
+            let (true, Value::Strings(strings)) = (def.enumeration_strict, &entry.value) else {
+                continue;
+            };
             let allowed = allowed_values(def);
             for (i, string) in strings.iter().enumerate() {
                 if allowed.contains(&string.as_str()) {
@@ -48,7 +52,11 @@ fn check(ctx: &mut Ctx) {
                 let mut diagnostic = Diagnostic::new(
                     &FIELD_ENUM_INVALID,
                     entry.span,
-                    format!("{}.{}: `{string}` is not one of its values", node.type_name(), def.name),
+                    format!(
+                        "{}.{}: `{string}` is not one of its values",
+                        node.type_name(),
+                        def.name
+                    ),
                 )
                 .node(id)
                 .value(string.clone())

@@ -40,7 +40,9 @@ fn check(ctx: &mut Ctx) {
             continue;
         }
         for entry in &node.fields {
-            let FieldRef::Schema { def, version } = entry.field else { continue };
+            let FieldRef::Schema { def, version } = entry.field else {
+                continue;
+            };
             if version != ctx.version {
                 ctx.report(
                     Diagnostic::new(

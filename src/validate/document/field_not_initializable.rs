@@ -32,7 +32,9 @@ crate::declare_rule! {
 fn check(ctx: &mut Ctx) {
     for (id, node) in ctx.doc.iter() {
         for entry in &node.fields {
-            let FieldRef::Schema { def, .. } = entry.field else { continue };
+            let FieldRef::Schema { def, .. } = entry.field else {
+                continue;
+            };
             if !def.access.is_initializable() {
                 ctx.report(
                     Diagnostic::new(

@@ -42,7 +42,9 @@ crate::declare_rule! {
 fn check(ctx: &mut Ctx) {
     for (id, node) in ctx.doc.iter() {
         for entry in &node.fields {
-            let Some(def) = entry.schema_def() else { continue };
+            let Some(def) = entry.schema_def() else {
+                continue;
+            };
             if def.min.is_none() && def.max.is_none() {
                 continue;
             }
@@ -59,9 +61,18 @@ fn check(ctx: &mut Ctx) {
     }
 }
 
-fn report(ctx: &mut Ctx, id: NodeId, type_name: &str, entry: &FieldEntry, def: &FieldDef, first: usize, count: usize) {
+fn report(
+    ctx: &mut Ctx,
+    id: NodeId,
+    type_name: &str,
+    entry: &FieldEntry,
+    def: &FieldDef,
+    first: usize,
+    count: usize,
+) {
     let span = ctx.scalar_span(entry, first);
-    let text = String::from_utf8_lossy(ctx.source.get(span.range()).unwrap_or_default()).into_owned();
+    let text =
+        String::from_utf8_lossy(ctx.source.get(span.range()).unwrap_or_default()).into_owned();
     let arity = def.ty.arity();
     let place = match (def.ty.is_mf(), arity) {
         (true, 1) => format!("[{first}]"),
@@ -69,7 +80,11 @@ fn report(ctx: &mut Ctx, id: NodeId, type_name: &str, entry: &FieldEntry, def: &
         (false, 1) => String::new(),
         (false, _) => format!(" component {first}"),
     };
-    let more = if count > 1 { format!(" ({count} values out of range in all)") } else { String::new() };
+    let more = if count > 1 {
+        format!(" ({count} values out of range in all)")
+    } else {
+        String::new()
+    };
     let mut diagnostic = Diagnostic::new(
         &FIELD_OUT_OF_RANGE,
         span,
@@ -90,14 +105,38 @@ fn report(ctx: &mut Ctx, id: NodeId, type_name: &str, entry: &FieldEntry, def: &
 /// Single-precision values are compared with the bound rounded to f32, the precision
 /// the field has; NaN compares false everywhere and so is never in range.
 pub fn in_range_f32(value: f32, def: &FieldDef) -> bool {
-    let above = |b: Bound| if b.inclusive { value >= b.value as f32 } else { value > b.value as f32 };
-    let below = |b: Bound| if b.inclusive { value <= b.value as f32 } else { value < b.value as f32 };
+    let above = |b: Bound| {
+        if b.inclusive {
+            value >= b.value as f32
+        } else {
+            value > b.value as f32
+        }
+    };
+    let below = |b: Bound| {
+        if b.inclusive {
+            value <= b.value as f32
+        } else {
+            value < b.value as f32
+        }
+    };
     def.min.is_none_or(above) && def.max.is_none_or(below) && !value.is_nan()
 }
 
 pub fn in_range_f64(value: f64, def: &FieldDef) -> bool {
-    let above = |b: Bound| if b.inclusive { value >= b.value } else { value > b.value };
-    let below = |b: Bound| if b.inclusive { value <= b.value } else { value < b.value };
+    let above = |b: Bound| {
+        if b.inclusive {
+            value >= b.value
+        } else {
+            value > b.value
+        }
+    };
+    let below = |b: Bound| {
+        if b.inclusive {
+            value <= b.value
+        } else {
+            value < b.value
+        }
+    };
     def.min.is_none_or(above) && def.max.is_none_or(below) && !value.is_nan()
 }
 
@@ -145,21 +184,36 @@ mod tests {
 
     #[test]
     fn bounds_are_compared_in_f32() {
-        let half_pi = Bound { value: std::f64::consts::FRAC_PI_2, inclusive: true };
-        let zero_open = Bound { value: 0.0, inclusive: false };
+        let half_pi = Bound {
+            value: std::f64::consts::FRAC_PI_2,
+            inclusive: true,
+        };
+        let zero_open = Bound {
+            value: 0.0,
+            inclusive: false,
+        };
         let d = def(Some(zero_open), Some(half_pi));
         assert!(in_range_f32("1.570796327".parse().unwrap(), &d));
         assert!(!in_range_f32("1.571".parse().unwrap(), &d));
         assert!(!in_range_f32(0.0, &d));
         assert!(!in_range_f32(-0.0, &d));
-        assert!(in_range_f32(f32::from_bits(1), &d), "the smallest denormal is above 0");
+        assert!(
+            in_range_f32(f32::from_bits(1), &d),
+            "the smallest denormal is above 0"
+        );
         assert!(!in_range_f32(f32::NAN, &d));
         assert_eq!(range_text(&d), "(0,π/2]");
     }
 
     #[test]
     fn unbounded_sides_accept_everything_finite_and_infinite() {
-        let d = def(Some(Bound { value: 0.0, inclusive: true }), None);
+        let d = def(
+            Some(Bound {
+                value: 0.0,
+                inclusive: true,
+            }),
+            None,
+        );
         assert!(in_range_f32(f32::MAX, &d));
         assert!(in_range_f32(f32::INFINITY, &d));
         assert!(in_range_f32(-0.0, &d));

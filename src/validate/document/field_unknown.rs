@@ -32,18 +32,26 @@ crate::declare_rule! {
 
 fn check(ctx: &mut Ctx) {
     for (id, node) in ctx.doc.iter() {
-        let NodeKind::Known { def, .. } = node.kind else { continue };
+        let NodeKind::Known { def, .. } = node.kind else {
+            continue;
+        };
         for entry in &node.fields {
-            let FieldRef::Unknown { name } = &entry.field else { continue };
+            let FieldRef::Unknown { name } = &entry.field else {
+                continue;
+            };
             if entry.origin == Origin::Children {
                 continue;
             }
             let names = def.fields.iter().map(|f| f.name);
             ctx.report(
-                Diagnostic::new(&FIELD_UNKNOWN, entry.name_span, format!("{} has no field `{name}`", def.name))
-                    .node(id)
-                    .value(name.clone())
-                    .help_opt(suggest::help(name, names)),
+                Diagnostic::new(
+                    &FIELD_UNKNOWN,
+                    entry.name_span,
+                    format!("{} has no field `{name}`", def.name),
+                )
+                .node(id)
+                .value(name.clone())
+                .help_opt(suggest::help(name, names)),
             );
         }
     }

@@ -40,14 +40,27 @@ fn check(ctx: &mut Ctx) {
                 Value::Doubles(v) => failures(v.iter().map(|x| x.is_finite())),
                 _ => continue,
             };
-            let Some((first, count)) = failures else { continue };
-            let text = ctx.source.get(ctx.scalar_span(entry, first).range()).unwrap_or_default();
+            let Some((first, count)) = failures else {
+                continue;
+            };
+            let text = ctx
+                .source
+                .get(ctx.scalar_span(entry, first).range())
+                .unwrap_or_default();
             let text = String::from_utf8_lossy(text).into_owned();
-            let more = if count > 1 { format!(" ({count} values in all)") } else { String::new() };
+            let more = if count > 1 {
+                format!(" ({count} values in all)")
+            } else {
+                String::new()
+            };
             let mut diagnostic = Diagnostic::new(
                 &FIELD_VALUE_NONFINITE,
                 ctx.scalar_span(entry, first),
-                format!("{}.{}: `{text}` is not a finite number{more}", node.type_name(), entry.name()),
+                format!(
+                    "{}.{}: `{text}` is not a finite number{more}",
+                    node.type_name(),
+                    entry.name()
+                ),
             )
             .node(id)
             .index(first)

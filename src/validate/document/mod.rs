@@ -1,5 +1,6 @@
 //! Encoding and document rules (RULES.md §1): syntax, schema, DEF/USE. All at the fast level.
 
+pub mod component_level_insufficient;
 pub mod component_unknown;
 pub mod container_field_invalid;
 pub mod def_duplicate;

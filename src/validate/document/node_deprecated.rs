@@ -46,9 +46,13 @@ fn check(ctx: &mut Ctx) {
             "separateBackColor is FALSE: a Material with the same front values does the same"
         };
         ctx.report(
-            Diagnostic::new(&NODE_DEPRECATED, node.name_span, "TwoSidedMaterial is deprecated in X3D 4")
-                .node(id)
-                .help(help),
+            Diagnostic::new(
+                &NODE_DEPRECATED,
+                node.name_span,
+                "TwoSidedMaterial is deprecated in X3D 4",
+            )
+            .node(id)
+            .help(help),
         );
     }
 }

@@ -39,7 +39,10 @@ fn check(ctx: &mut Ctx) {
                     Diagnostic::new(
                         &NODE_NOT_IN_VERSION,
                         node.name_span,
-                        format!("{} is not in X3D {}; X3D {version} has it", def.name, ctx.version),
+                        format!(
+                            "{} is not in X3D {}; X3D {version} has it",
+                            def.name, ctx.version
+                        ),
                     )
                     .node(id),
                 );

@@ -49,9 +49,13 @@ fn check(ctx: &mut Ctx) {
         check_child(ctx, child, "Scene", "children", SCENE_ACCEPTS);
     }
     for (_, node) in ctx.doc.iter() {
-        let NodeKind::Known { def, .. } = node.kind else { continue };
+        let NodeKind::Known { def, .. } = node.kind else {
+            continue;
+        };
         for entry in &node.fields {
-            let Some(field) = entry.schema_def() else { continue };
+            let Some(field) = entry.schema_def() else {
+                continue;
+            };
             if field.acceptable.is_empty() {
                 continue;
             }
@@ -63,7 +67,9 @@ fn check(ctx: &mut Ctx) {
 }
 
 fn check_child(ctx: &mut Ctx, child: ChildRef, parent: &str, field: &str, acceptable: &[&str]) {
-    let Some(def) = node_type(ctx.doc, child, 0) else { return };
+    let Some(def) = node_type(ctx.doc, child, 0) else {
+        return;
+    };
     if acceptable.iter().any(|a| def.is_a(a)) {
         return;
     }
@@ -74,7 +80,10 @@ fn check_child(ctx: &mut Ctx, child: ChildRef, parent: &str, field: &str, accept
             format!("{parent}.{field} does not accept {} nodes", def.name),
         )
         .node(child.node)
-        .help(format!("{parent}.{field} takes {}", acceptable.join(" or "))),
+        .help(format!(
+            "{parent}.{field} takes {}",
+            acceptable.join(" or ")
+        )),
     );
 }
 

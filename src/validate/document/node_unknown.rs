@@ -34,10 +34,14 @@ fn check(ctx: &mut Ctx) {
     for (id, node) in ctx.doc.iter() {
         if let NodeKind::Unknown { name } = &node.kind {
             ctx.report(
-                Diagnostic::new(&NODE_UNKNOWN, node.name_span, format!("`{name}` is not an X3D node"))
-                    .node(id)
-                    .value(name.clone())
-                    .help_opt(suggest::help(name, names.clone())),
+                Diagnostic::new(
+                    &NODE_UNKNOWN,
+                    node.name_span,
+                    format!("`{name}` is not an X3D node"),
+                )
+                .node(id)
+                .value(name.clone())
+                .help_opt(suggest::help(name, names.clone())),
             );
         }
     }

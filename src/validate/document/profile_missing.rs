@@ -31,8 +31,12 @@ crate::declare_rule! {
 fn check(ctx: &mut Ctx) {
     if ctx.doc.profile.is_none() {
         ctx.report(
-            Diagnostic::new(&PROFILE_MISSING, ctx.doc.root_span, "the X3D root has no `profile`; Full is assumed")
-                .help("add profile='Interchange' (or the smallest profile the scene fits)"),
+            Diagnostic::new(
+                &PROFILE_MISSING,
+                ctx.doc.root_span,
+                "the X3D root has no `profile`; Full is assumed",
+            )
+            .help("add profile='Interchange' (or the smallest profile the scene fits)"),
         );
     }
 }

@@ -41,13 +41,19 @@ crate::declare_rule! {
 }
 
 fn check(ctx: &mut Ctx) {
-    let Some(profile) = &ctx.doc.profile else { return };
+    let Some(profile) = &ctx.doc.profile else {
+        return;
+    };
     if PROFILES.contains(&profile.text.as_str()) {
         return;
     }
     ctx.report(
-        Diagnostic::new(&PROFILE_UNKNOWN, profile.span, format!("`{}` is not an X3D profile", profile.text))
-            .value(profile.text.clone())
-            .help_opt(suggest::help(&profile.text, PROFILES)),
+        Diagnostic::new(
+            &PROFILE_UNKNOWN,
+            profile.span,
+            format!("`{}` is not an X3D profile", profile.text),
+        )
+        .value(profile.text.clone())
+        .help_opt(suggest::help(&profile.text, PROFILES)),
     );
 }

@@ -33,7 +33,9 @@ crate::declare_rule! {
 fn check(ctx: &mut Ctx) {
     for (id, node) in ctx.doc.iter() {
         for entry in &node.fields {
-            let (Some(FieldType::SFNode), Value::Nodes(children)) = (entry.field_type(), &entry.value) else {
+            let (Some(FieldType::SFNode), Value::Nodes(children)) =
+                (entry.field_type(), &entry.value)
+            else {
                 continue;
             };
             if let [first, second, ..] = children.as_slice() {

@@ -37,18 +37,28 @@ fn check(ctx: &mut Ctx) {
     for (id, node) in ctx.doc.iter() {
         let what = if node.is_a("Script") {
             "Script code is not checked"
-        } else if node.is_a("X3DShaderNode") || node.is_a("ShaderPart") || node.is_a("ShaderProgram") {
+        } else if node.is_a("X3DShaderNode")
+            || node.is_a("ShaderPart")
+            || node.is_a("ShaderProgram")
+        {
             "shader source is not checked"
         } else if node.is_a("Inline") {
             "the inlined scene is not checked"
         } else {
             continue;
         };
-        found.push((node.name_span, Some(id), format!("{}: {what}", node.type_name())));
+        found.push((
+            node.name_span,
+            Some(id),
+            format!("{}: {what}", node.type_name()),
+        ));
     }
     for proto in &ctx.doc.protos {
         let what = if proto.external {
-            format!("ExternProtoDeclare {}: its body is in another file and is not checked", proto.name.text)
+            format!(
+                "ExternProtoDeclare {}: its body is in another file and is not checked",
+                proto.name.text
+            )
         } else {
             format!(
                 "ProtoDeclare {}: the body is checked as written, without the values its instances pass through IS",

@@ -29,7 +29,9 @@ crate::declare_rule! {
 }
 
 fn check(ctx: &mut Ctx) {
-    let Some(text) = &ctx.doc.version_text else { return };
+    let Some(text) = &ctx.doc.version_text else {
+        return;
+    };
     if ctx.doc.version.is_some() {
         return;
     }
@@ -37,8 +39,12 @@ fn check(ctx: &mut Ctx) {
     let help = suggest::help(text.text.trim(), known)
         .unwrap_or_else(|| format!("known versions: {}; checking against 4.1", known.join(", ")));
     ctx.report(
-        Diagnostic::new(&X3D_VERSION_UNKNOWN, text.span, format!("`{}` is not a known X3D version", text.text))
-            .value(text.text.clone())
-            .help(help),
+        Diagnostic::new(
+            &X3D_VERSION_UNKNOWN,
+            text.span,
+            format!("`{}` is not a known X3D version", text.text),
+        )
+        .value(text.text.clone())
+        .help(help),
     );
 }
