@@ -2,6 +2,7 @@
 //! report, and the exit code — 0 nothing at or above the fail level, 1 something is,
 //! 2 usage, I/O or internal failure ("could not be checked" is never "invalid").
 
+use std::borrow::Cow;
 use std::fs;
 use std::io::{self, IsTerminal, Read, Write};
 use std::path::{Path, PathBuf};
@@ -307,14 +308,11 @@ type Outcome = Result<(FileReport, String), String>;
 
 fn check_input(input: &Input, config: &CheckConfig, format: Format, color: bool) -> Outcome {
     let (name, bytes) = match input {
-        Input::Stdin(bytes) => (
-            "<stdin>".to_string(),
-            std::borrow::Cow::Borrowed(&bytes[..]),
-        ),
+        Input::Stdin(bytes) => ("<stdin>".to_string(), Cow::Borrowed(&bytes[..])),
         Input::File(path) => {
             let name = path.display().to_string();
             match read_file(path) {
-                Ok(bytes) => (name, std::borrow::Cow::Owned(bytes)),
+                Ok(bytes) => (name, Cow::Owned(bytes)),
                 Err(e) => return Err(format!("cannot read {name}: {e}")),
             }
         }
@@ -345,35 +343,33 @@ fn write_output(output: Option<&Path>, text: &str) -> Result<(), String> {
 }
 
 fn rules(code: Option<&str>) -> Result<ExitCode, String> {
-    let mut out = String::new();
-    match code {
-        None => {
-            let mut rows = vec![["CODE", "SEVERITY", "LEVEL", "VERSIONS", "CLAUSE", "SUMMARY"]];
-            rows.extend(RULES.iter().map(|r| {
-                [
-                    r.code,
-                    r.severity.as_str(),
-                    r.level.as_str(),
-                    r.versions,
-                    r.clause,
-                    r.summary(),
-                ]
-            }));
-            let widths: Vec<usize> = (0..5)
-                .map(|column| rows.iter().map(|row| row[column].len()).max().unwrap_or(0))
-                .collect();
-            for row in rows {
-                for (cell, width) in row.iter().zip(&widths) {
-                    out.push_str(&format!("{cell:width$}  "));
-                }
-                out.push_str(row[5]);
-                out.push('\n');
-            }
-        }
-        Some(code) => out = explain(known_rule(code, "rules")?),
-    }
-    write_output(None, &out)?;
+    let text = match code {
+        None => rule_table(),
+        Some(code) => explain(known_rule(code, "rules")?),
+    };
+    write_output(None, &text)?;
     Ok(ExitCode::SUCCESS)
+}
+
+fn rule_table() -> String {
+    let summaries: Vec<String> = RULES.iter().map(|r| r.summary()).collect();
+    let mut rows = vec![["CODE", "SEVERITY", "LEVEL", "VERSIONS", "CLAUSE", "SUMMARY"]];
+    rows.extend(RULES.iter().zip(&summaries).map(|(r, summary)| {
+        let (severity, level) = (r.severity.as_str(), r.level.as_str());
+        [r.code, severity, level, r.versions, r.clause, summary.as_str()]
+    }));
+    let widths: Vec<usize> = (0..5)
+        .map(|column| rows.iter().map(|row| row[column].len()).max().unwrap_or(0))
+        .collect();
+    let mut out = String::new();
+    for row in rows {
+        for (cell, width) in row.iter().zip(&widths) {
+            out.push_str(&format!("{cell:width$}  "));
+        }
+        out.push_str(row[5]);
+        out.push('\n');
+    }
+    out
 }
 
 fn explain(rule: &Rule) -> String {

@@ -222,3 +222,49 @@ fn empty_directory_checks_nothing() {
     assert_eq!(output.status.code(), Some(0));
     assert!(stdout(&output).contains("Checked 0 files"));
 }
+
+#[cfg(unix)]
+#[test]
+fn symlinked_directories_are_not_followed() {
+    let dir = scratch("links", &[("a.x3d", VALID)]);
+    std::os::unix::fs::symlink(&dir, dir.join("loop")).unwrap();
+    let output = x3dcheck(&dir, &["."]);
+    assert_eq!(output.status.code(), Some(0));
+    assert!(stdout(&output).contains("Checked 1 file:"));
+}
+
+#[test]
+fn stdin() {
+    use std::io::Write;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_x3dcheck"))
+        .args(["--format", "concise", "-"])
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(DUPLICATE.as_bytes())
+        .unwrap();
+    let output = child.wait_with_output().unwrap();
+    assert_eq!(output.status.code(), Some(1));
+    assert!(stdout(&output).starts_with("<stdin>:5:39: error[DEF_DUPLICATE] "));
+}
+
+#[test]
+fn max_diagnostics_truncates() {
+    let three = DUPLICATE.replace("  </Scene>", "    <Group DEF='Red'/>\n  </Scene>");
+    let dir = scratch("max", &[("three.x3d", &three)]);
+    let output = x3dcheck(
+        &dir,
+        &["--format", "json", "--max-diagnostics", "1", "three.x3d"],
+    );
+    let report: serde_json::Value = serde_json::from_str(&stdout(&output)).unwrap();
+    assert_eq!(
+        report["files"][0]["diagnostics"].as_array().unwrap().len(),
+        1
+    );
+    assert_eq!(report["files"][0]["truncated"], true);
+}

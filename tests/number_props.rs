@@ -2,7 +2,10 @@
 //! parsers.
 
 use proptest::prelude::*;
+use x3dcheck::model::Value;
 use x3dcheck::parse::number::{parse_f32, parse_f64, parse_i32};
+use x3dcheck::parse::xml_value::parse_value;
+use x3dcheck::schema::FieldType;
 
 fn check_f32(text: &str) {
     let ours = parse_f32(text.as_bytes()).map(f32::to_bits);
@@ -73,5 +76,29 @@ proptest! {
         prop_assert_eq!(parse_i32(text.as_bytes()), text.parse::<i32>().ok());
         let small = (x as i32).to_string();
         prop_assert_eq!(parse_i32(small.as_bytes()), Some(x as i32));
+    }
+
+    /// Numbers inside a longer text (where digits are read eight bytes at a time) come
+    /// out as when parsed alone.
+    #[test]
+    fn numbers_in_text(
+        tokens in prop::collection::vec("[+-]?[0-9]{1,12}(\\.[0-9]{0,20})?([eE][+-]?[0-9]{1,2})?", 0..40),
+        separators in prop::collection::vec("[ ,\t\r\n]{1,3}", 40),
+    ) {
+        let mut text = String::new();
+        for (token, separator) in tokens.iter().zip(&separators) {
+            text.push_str(token);
+            text.push_str(separator);
+        }
+        let Ok(Value::Floats(floats)) = parse_value(FieldType::MFFloat, &text) else {
+            panic!("{text:?}")
+        };
+        let Ok(Value::Doubles(doubles)) = parse_value(FieldType::MFDouble, &text) else {
+            panic!("{text:?}")
+        };
+        let expected32: Vec<u32> = tokens.iter().map(|t| t.parse::<f32>().unwrap().to_bits()).collect();
+        let expected64: Vec<u64> = tokens.iter().map(|t| t.parse::<f64>().unwrap().to_bits()).collect();
+        prop_assert_eq!(floats.iter().map(|v| v.to_bits()).collect::<Vec<_>>(), expected32);
+        prop_assert_eq!(doubles.iter().map(|v| v.to_bits()).collect::<Vec<_>>(), expected64);
     }
 }

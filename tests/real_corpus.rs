@@ -88,3 +88,8 @@ fn check_all(extensions: &[&str]) {
 fn every_xml_scene_is_checked_cleanly() {
     check_all(&["x3d"]);
 }
+
+#[test]
+fn every_json_scene_is_checked_cleanly() {
+    check_all(&["json", "x3dj"]);
+}

@@ -251,6 +251,16 @@ impl Builder {
             return None;
         };
         if self.open.contains(&target) {
+            // A Script (or shader) field may hold its own Script or an ancestor: scripts
+            // reach nodes through such fields, which the scene graph does not traverse
+            // (19775-1 clause 29 Scripting; the VRML97 Annex C example
+            // `field SFNode myself USE Example`).
+            // The reference is left out of the model all the same, so it stays acyclic.
+            if let Parent::Field { node, field, .. } = parent {
+                if matches!(self.field_ref(node, field), FieldRef::Declared { .. }) {
+                    return None;
+                }
+            }
             self.report(
                 Diagnostic::new(
                     &USE_CYCLE,

@@ -20,6 +20,12 @@
 //!
 //! A node object's `@` members are read before its other members, as an XML element's
 //! attributes come before its children, whatever the member order.
+//!
+//! Variants real exporters write, read as the XML reader reads their XML counterparts:
+//! `#sourceText` (an older name of `#sourceCode`), `IS` inside a `fieldValue` (connects
+//! the ProtoInstance), a lone string for an MFString (a list of one). Duplicate keys are
+//! kept by the scanner and reported (FIELD_DUPLICATE); values that do not fit their
+//! field's type are reported (FIELD_VALUE_SYNTAX) and kept unparsed.
 
 #[path = "json_tree.rs"]
 pub mod tree;
@@ -94,6 +100,7 @@ fn malformed(at: usize, len: usize, message: &str) -> Diagnostic {
 }
 
 /// The `"X3D"` member of the top-level object: its key and value.
+#[allow(clippy::result_large_err)]
 fn root(t: &Tree) -> Result<(usize, usize), Diagnostic> {
     let top = 0;
     let not_x3d = |message: String| {
@@ -118,7 +125,7 @@ fn root(t: &Tree) -> Result<(usize, usize), Diagnostic> {
         let found = if keys.is_empty() {
             "no member".to_string()
         } else {
-            format!("{}", keys.join(", "))
+            keys.join(", ")
         };
         return not_x3d(format!(
             "the top-level object has no `X3D` member (found {found})"
@@ -289,7 +296,10 @@ impl<'t, 's> JsonReader<'t, 's> {
     /// Pushes the nodes of a node-valued member: one node object, or an array of them.
     fn push_nodes(&mut self, ctx: Ctx<'s>, value: usize, what: &str) {
         match self.t.kind(value) {
-            Kind::Object => self.push(Task::Statements(ctx), value),
+            Kind::Object => {
+                self.duplicate_keys(value, |_| true);
+                self.push(Task::Statements(ctx), value);
+            }
             Kind::Array => self.push(Task::List(ctx), value),
             _ => {
                 let found = value::describe(self.t, value);
@@ -724,15 +734,14 @@ impl<'t, 's> JsonReader<'t, 's> {
         for (k, v) in t.members(value) {
             let member = t.str(k);
             match member.as_ref() {
-                "@DEF" => {
-                    if !defined {
-                        defined = true;
-                        if let Some(def) = self.string_member(k, v) {
-                            self.builder.define(id, def);
-                        }
+                "@DEF" if !defined => {
+                    defined = true;
+                    if let Some(def) = self.string_member(k, v) {
+                        self.builder.define(id, def);
                     }
                 }
-                "@containerField" | "@class" | "@id" | "@style" => {}
+                // A repeated `@DEF` is reported as a duplicate key; the first one names.
+                "@DEF" | "@containerField" | "@class" | "@id" | "@style" => {}
                 "@name" if is_proto_instance => {
                     self.string_member(k, v);
                 }
@@ -1141,5 +1150,476 @@ fn truncate(text: &str, max: usize) -> String {
     match text.char_indices().nth(max) {
         Some((cut, _)) => format!("{}…", &text[..cut]),
         None => text.to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn read_str(source: &str) -> Parsed {
+        read(source.as_bytes())
+    }
+
+    /// `(code, text at the span)` of every diagnostic.
+    fn findings(source: &str) -> Vec<(&'static str, String)> {
+        read_str(source)
+            .diagnostics
+            .iter()
+            .map(|d| {
+                (
+                    d.rule.code,
+                    source
+                        .get(d.span.range())
+                        .unwrap_or("<bad span>")
+                        .to_string(),
+                )
+            })
+            .collect()
+    }
+
+    fn scene(children: &str) -> String {
+        format!(
+            r##"{{ "X3D": {{ "@profile": "Immersive", "@version": "4.0", "head": {{}}, "Scene": {{ "-children": [ {children} ] }} }} }}"##
+        )
+    }
+
+    fn doc(source: &str) -> Document {
+        let parsed = read_str(source);
+        assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
+        parsed.document.expect("a document")
+    }
+
+    #[test]
+    fn reads_a_scene() {
+        let source = scene(
+            r##"{ "Shape": { "@DEF": "S", "-appearance": { "Appearance": { "-material": { "Material": { "@diffuseColor": [1,0,0], "@transparency": 0.5 } } } }, "-geometry": { "Box": {} } } },
+               { "Shape": { "@USE": "S" } },
+               { "ROUTE": { "@fromNode": "A", "@fromField": "b", "@toNode": "C", "@toField": "d" } },
+               { "#comment": "ignored" }"##,
+        );
+        let d = doc(&source);
+        assert_eq!(d.encoding, Encoding::Json);
+        assert_eq!(d.version, Some(Version::V4_0));
+        assert_eq!(d.profile.as_ref().unwrap().text, "Immersive");
+        let types: Vec<&str> = d.nodes.iter().map(|n| n.type_name()).collect();
+        assert_eq!(types, ["Shape", "Appearance", "Material", "Box"]);
+        assert_eq!(d.scene.len(), 2);
+        assert!(d.scene[1].is_use && d.scene[1].node == d.scene[0].node);
+        let shape = d.node(d.scene[0].node);
+        assert_eq!(shape.def_name.as_ref().unwrap().text, "S");
+        let material = d.node(d.nodes_of_type("Material").next().unwrap());
+        assert_eq!(
+            material.value("diffuseColor"),
+            Some(&Value::Floats(vec![1.0, 0.0, 0.0]))
+        );
+        assert_eq!(
+            material.value("transparency"),
+            Some(&Value::Floats(vec![0.5]))
+        );
+        let entry = material.entry("diffuseColor").unwrap();
+        assert_eq!(&source[entry.name_span.range()], "@diffuseColor");
+        assert_eq!(&source[entry.span.range()], "[1,0,0]");
+        assert_eq!(entry.origin, Origin::Member);
+        // Spans: a node from its key to the end of its object; its name is the key.
+        assert!(source[shape.span.range()].starts_with("\"Shape\": {"));
+        assert!(source[shape.span.range()].ends_with('}'));
+        assert_eq!(&source[shape.name_span.range()], "Shape");
+        assert_eq!(d.scene[0].span, shape.span);
+        assert_eq!(
+            &source[d.scene[1].span.range()],
+            r##""Shape": { "@USE": "S" }"##
+        );
+        assert_eq!(d.routes.len(), 1);
+        assert_eq!(&source[d.routes[0].to_field.span.range()], "d");
+        assert!(source[d.root_span.range()].starts_with("\"X3D\""));
+        assert!(source[d.scene_span.unwrap().range()].starts_with("\"Scene\""));
+    }
+
+    #[test]
+    fn members_come_in_any_order_as_xml_attributes_do() {
+        // DEF after the children: still defined before them, as an XML attribute would be.
+        let d = doc(&scene(
+            r##"{ "Transform": { "-children": [ { "Shape": {} } ], "@translation": [1,2,3], "@DEF": "T" } }"##,
+        ));
+        let transform = d.node(d.scene[0].node);
+        assert_eq!(transform.def_name.as_ref().unwrap().text, "T");
+        let names: Vec<&str> = transform.fields.iter().map(|f| f.name()).collect();
+        assert_eq!(names, ["translation", "children"]);
+    }
+
+    #[test]
+    fn head_and_statements() {
+        let source = r##"{ "X3D": { "encoding": "UTF-8", "@profile": "Interchange", "@version": "3.3",
+            "head": { "component": [ { "@name": "Shape", "@level": 4 } ], "unit": [ {"@category": "length"} ], "meta": [ {}, {} ] },
+            "Scene": { "-children": [ { "IMPORT": { "@inlineDEF": "I" } }, { "EXPORT": {} } ] } } }"##;
+        let d = doc(source);
+        assert_eq!(d.version, Some(Version::V3_3));
+        assert_eq!(d.head.components.len(), 1);
+        assert_eq!(d.head.components[0].name.text, "Shape");
+        assert_eq!(d.head.components[0].level.map(|l| l.0), Some(4));
+        assert_eq!((d.head.units, d.head.metas), (1, 2));
+        assert_eq!(d.imports_exports.len(), 2);
+    }
+
+    #[test]
+    fn protos_fields_and_instances() {
+        let source = scene(
+            r##"{ "ProtoDeclare": { "@name": "P",
+                  "ProtoInterface": { "field": [
+                    { "@name": "c", "@accessType": "inputOutput", "@type": "SFColor", "@value": [1,0,0] },
+                    { "@name": "n", "@accessType": "initializeOnly", "@type": "SFNode", "-children": [ { "Box": {} } ] } ] },
+                  "ProtoBody": { "-children": [ { "Material": { "@DEF": "M", "IS": { "connect": [ { "@nodeField": "diffuseColor", "@protoField": "c" } ] } } } ] } } },
+               { "ExternProtoDeclare": { "@name": "E", "@url": ["e.x3d#E", "f.x3d"], "field": [ { "@name": "x", "@type": "SFFloat", "@accessType": "inputOutput" } ] } },
+               { "ProtoInstance": { "@name": "P", "@DEF": "I", "fieldValue": [
+                   { "@name": "c", "@value": [0,1,0] },
+                   { "@name": "n", "-children": [ { "Sphere": {} } ] } ] } },
+               { "Script": { "@DEF": "Sc", "field": [ { "@name": "t", "@type": "SFTime", "@accessType": "inputOnly" },
+                   { "@name": "k", "@type": "MFNode", "@accessType": "initializeOnly", "-children": [ { "Group": {} } ] } ],
+                   "#sourceCode": ["ecmascript:", "function t() {}"] } }"##,
+        );
+        let d = doc(&source);
+        assert_eq!(d.protos.len(), 2);
+        let p = &d.protos[0];
+        assert_eq!(p.name.text, "P");
+        assert_eq!(p.interface.len(), 2);
+        assert_eq!(
+            p.interface[0].value.as_ref().unwrap().0,
+            Value::Floats(vec![1.0, 0.0, 0.0])
+        );
+        assert!(matches!(&p.interface[1].value, Some((Value::Nodes(n), _)) if n.len() == 1));
+        assert_eq!(p.body.len(), 1);
+        let material = d.node(p.body[0].node);
+        assert_eq!(material.scope, Scope::Proto(0));
+        assert_eq!(material.connects.len(), 1);
+        assert_eq!(material.connects[0].proto_field.text, "c");
+        assert!(d.protos[1].external);
+        assert_eq!(d.protos[1].url, ["e.x3d#E", "f.x3d"]);
+        assert_eq!(d.protos[1].interface[0].ty, Some(FieldType::SFFloat));
+        let instance = d.node(d.scene[0].node);
+        assert!(
+            matches!(&instance.kind, NodeKind::ProtoInstance { name, proto: Some(0) } if name == "P")
+        );
+        assert_eq!(
+            instance.value("c"),
+            Some(&Value::Floats(vec![0.0, 1.0, 0.0]))
+        );
+        assert_eq!(instance.entry("c").unwrap().origin, Origin::FieldValue);
+        assert_eq!(instance.children("n").len(), 1);
+        let script = d.node(d.scene[1].node);
+        assert_eq!(script.declared.len(), 2);
+        assert_eq!(script.children("k").len(), 1);
+        assert!(source[script.source_code.unwrap().range()].starts_with("[\"ecmascript:\""));
+        assert_eq!(d.scope_count(), 2);
+    }
+
+    trait ScopeCount {
+        fn scope_count(&self) -> usize;
+    }
+
+    impl ScopeCount for Document {
+        fn scope_count(&self) -> usize {
+            let mut scopes: Vec<Scope> = self.nodes.iter().map(|n| n.scope).collect();
+            scopes.dedup();
+            scopes.sort_by_key(|s| match s {
+                Scope::Scene => 0,
+                Scope::Proto(p) => p + 1,
+            });
+            scopes.dedup();
+            scopes.len()
+        }
+    }
+
+    #[test]
+    fn unknown_nodes_and_fields_are_kept_for_the_rules() {
+        let d = doc(&scene(
+            r##"{ "Materiall": { "@x": 1 } }, { "Box": { "@sizee": [1,2,3], "-metadataa": { "MetadataString": {} } } }"##,
+        ));
+        assert!(matches!(&d.nodes[0].kind, NodeKind::Unknown { name } if name == "Materiall"));
+        assert!(matches!(&d.nodes[0].fields[0].field, FieldRef::Unknown { name } if name == "x"));
+        assert_eq!(d.nodes[0].fields[0].value, Value::Unparsed("1".into()));
+        let b = &d.nodes[1];
+        assert!(matches!(&b.fields[0].field, FieldRef::Unknown { name } if name == "sizee"));
+        assert_eq!(b.fields[0].value, Value::Unparsed("[1,2,3]".into()));
+        assert!(matches!(&b.fields[1].field, FieldRef::Unknown { name } if name == "metadataa"));
+        assert_eq!(b.fields[1].value.len(), 1);
+    }
+
+    #[test]
+    fn syntax_errors_point_at_the_value() {
+        let source = scene(
+            r##"{ "Material": { "@diffuseColor": [1, 0], "@transparency": "0.5", "@shininess": null } },
+               { "IndexedFaceSet": { "@coordIndex": [0, 1, 2.5, -1], "@solid": "false" } },
+               { "Coordinate": { "@point": [0,0,0, 1,0] } }"##,
+        );
+        let f = findings(&source);
+        assert_eq!(
+            f,
+            vec![
+                ("FIELD_VALUE_SYNTAX", "[1, 0]".to_string()),
+                ("FIELD_VALUE_SYNTAX", "\"0.5\"".to_string()),
+                ("FIELD_VALUE_SYNTAX", "null".to_string()),
+                ("FIELD_VALUE_SYNTAX", "2.5".to_string()),
+                ("FIELD_VALUE_SYNTAX", "\"false\"".to_string()),
+                ("FIELD_VALUE_SYNTAX", "1,0".to_string()),
+            ]
+        );
+        let parsed = read_str(&source);
+        let messages: Vec<&str> = parsed
+            .diagnostics
+            .iter()
+            .map(|d| d.message.as_str())
+            .collect();
+        assert_eq!(
+            messages[0],
+            "`@diffuseColor`: SFColor takes 3 numbers, found 2"
+        );
+        assert_eq!(
+            messages[1],
+            "`@transparency`: SFFloat takes a number, found the string \"0.5\""
+        );
+        assert_eq!(
+            parsed.diagnostics[1].help.as_deref(),
+            Some("JSON numbers are written without quotes")
+        );
+        assert!(messages[3].starts_with("`@coordIndex`: MFInt32 takes whole numbers"));
+        assert_eq!(parsed.diagnostics[3].index, Some(2));
+        assert_eq!(
+            messages[5],
+            "`@point`: MFVec3f takes a multiple of 3 numbers, found 5"
+        );
+        // The values that did not parse are kept unparsed: the document is still there.
+        let d = parsed.document.unwrap();
+        assert!(matches!(
+            d.nodes[0].entry("diffuseColor").unwrap().value,
+            Value::Unparsed(_)
+        ));
+    }
+
+    #[test]
+    fn huge_numbers_are_values_not_errors() {
+        let d = doc(&scene(
+            r##"{ "Material": { "@transparency": 1e39, "@shininess": -1e400 } }, { "TimeSensor": { "@cycleInterval": 1e400 } }"##,
+        ));
+        assert_eq!(
+            d.nodes[0].value("transparency"),
+            Some(&Value::Floats(vec![f32::INFINITY]))
+        );
+        assert_eq!(
+            d.nodes[0].value("shininess"),
+            Some(&Value::Floats(vec![f32::NEG_INFINITY]))
+        );
+        assert_eq!(
+            d.nodes[1].value("cycleInterval"),
+            Some(&Value::Doubles(vec![f64::INFINITY]))
+        );
+    }
+
+    #[test]
+    fn json_slips_in_structure() {
+        let source = scene(
+            r##"{ "Shape": { "-geometry": 5, "appearance": {}, "-children": [ "x" ] } },
+               { "@DEF": "X" },
+               { "Box": [] },
+               { "Material": { "@material": {} } },
+               { "Appearance": { "@material": [] } }"##,
+        );
+        let f = findings(&source);
+        let codes: Vec<&str> = f.iter().map(|(c, _)| *c).collect();
+        assert!(codes.iter().all(|c| *c == "FIELD_VALUE_SYNTAX"), "{f:?}");
+        let places: Vec<&str> = f.iter().map(|(_, t)| t.as_str()).collect();
+        // Material has no `material` field: that one is an unknown field for a rule to report.
+        assert_eq!(places, ["5", "appearance", "\"x\"", "@DEF", "[]", "[]"]);
+        let parsed = read_str(&source);
+        assert!(
+            parsed.diagnostics[5]
+                .message
+                .contains("give its nodes as `-material`"),
+            "{}",
+            parsed.diagnostics[5].message
+        );
+    }
+
+    #[test]
+    fn use_with_fields() {
+        let source = scene(
+            r##"{ "Material": { "@DEF": "M" } },
+               { "Material": { "@USE": "M", "@containerField": "material", "@class": "c", "#comment": "ok" } },
+               { "Material": { "@USE": "M", "@transparency": 0.5, "@DEF": "N" } },
+               { "Group": { "@DEF": "G" } },
+               { "Group": { "@USE": "G", "-children": [ { "#comment": "fine" } ] } },
+               { "Group": { "@USE": "G", "-children": [ { "Shape": {} }, { "Box": {} } ] } },
+               { "ProtoInstance": { "@USE": "G", "@name": "Group" } }"##,
+        );
+        let f = findings(&source);
+        assert_eq!(
+            f,
+            vec![
+                ("USE_WITH_FIELDS", "@transparency".to_string()),
+                ("USE_WITH_FIELDS", "Shape".to_string()),
+                ("USE_WITH_FIELDS", "Box".to_string()),
+            ]
+        );
+        let parsed = read_str(&source);
+        assert_eq!(
+            parsed.diagnostics[0].message,
+            "USE `M` also sets `@transparency`, `@DEF`: a USE takes no fields"
+        );
+        // The USEs still refer to their nodes.
+        let d = parsed.document.unwrap();
+        assert_eq!(d.scene.iter().filter(|c| c.is_use).count(), 5);
+    }
+
+    #[test]
+    fn def_use_diagnostics_come_from_the_builder() {
+        let f = findings(&scene(
+            r##"{ "Group": { "@DEF": "A", "-children": [ { "Group": { "@USE": "A" } } ] } },
+               { "Box": { "@USE": "Nope" } },
+               { "Box": { "@DEF": "A" } },
+               { "Sphere": { "@DEF": "S" } }, { "Box": { "@USE": "S" } }"##,
+        ));
+        let codes: Vec<&str> = f.iter().map(|(c, _)| *c).collect();
+        assert_eq!(
+            codes,
+            [
+                "USE_CYCLE",
+                "USE_UNDEFINED",
+                "DEF_DUPLICATE",
+                "USE_TYPE_MISMATCH"
+            ]
+        );
+        assert_eq!(f[1].1, "Nope");
+    }
+
+    #[test]
+    fn duplicates() {
+        let source = scene(
+            r##"{ "Material": { "@diffuseColor": [1,0,0], "@diffuseColor": [0,1,0] } },
+               { "Group": { "-children": [], "-children": [ { "Box": {} } ], "@DEF": "G", "@DEF": "H" } },
+               { "Appearance": { "@material": null, "-material": { "Material": {} } } },
+               { "Script": { "IS": { "connect": [], "connect": [] } } }"##,
+        );
+        let f = findings(&source);
+        assert_eq!(
+            f,
+            vec![
+                ("FIELD_DUPLICATE", "@diffuseColor".to_string()),
+                ("FIELD_DUPLICATE", "-children".to_string()),
+                ("FIELD_DUPLICATE", "@DEF".to_string()),
+                ("FIELD_VALUE_SYNTAX", "null".to_string()),
+                ("FIELD_DUPLICATE", "-material".to_string()),
+                ("FIELD_DUPLICATE", "connect".to_string()),
+            ]
+        );
+        let d = read_str(&source).document.unwrap();
+        // The first value is kept; both `-children` members give their nodes; the first DEF names.
+        assert_eq!(
+            d.nodes[0].value("diffuseColor"),
+            Some(&Value::Floats(vec![1.0, 0.0, 0.0]))
+        );
+        assert_eq!(d.nodes[1].children("children").len(), 1);
+        assert_eq!(d.nodes[1].def_name.as_ref().unwrap().text, "G");
+    }
+
+    #[test]
+    fn malformed_json_has_a_position_and_no_document() {
+        let source = "{ \"X3D\": {\n  \"Scene\": { \"-children\": [ 1, ] }\n} }";
+        let parsed = read_str(source);
+        assert!(parsed.document.is_none());
+        assert_eq!(parsed.diagnostics.len(), 1);
+        let d = &parsed.diagnostics[0];
+        assert_eq!(d.rule.code, "JSON_MALFORMED");
+        assert_eq!(d.span.start as usize, source.find("]").unwrap());
+        assert_eq!(
+            d.message,
+            "not valid JSON: a trailing comma before `]` is not allowed in JSON"
+        );
+    }
+
+    #[test]
+    fn invalid_utf8_is_malformed_at_the_first_bad_byte() {
+        let mut source =
+            br##"{ "X3D": { "Scene": { "-children": [ { "WorldInfo": { "@title": "x"##.to_vec();
+        let at = source.len();
+        source.extend_from_slice(b"\xff\xfe\" } } ] } } }");
+        let parsed = read(&source);
+        assert!(parsed.document.is_none());
+        assert_eq!(parsed.diagnostics[0].rule.code, "JSON_MALFORMED");
+        assert_eq!(parsed.diagnostics[0].span.start as usize, at);
+        assert!(parsed.diagnostics[0].message.contains("UTF-8"));
+    }
+
+    #[test]
+    fn root_must_be_an_x3d_object() {
+        for source in ["[1, 2]", "{\"x3d\": {}}", "{}", "\"X3D\"", "{\"X3D\": []}"] {
+            let parsed = read_str(source);
+            assert!(parsed.document.is_none(), "{source}");
+            assert_eq!(parsed.diagnostics.len(), 1);
+            assert_eq!(parsed.diagnostics[0].rule.code, "ROOT_NOT_X3D", "{source}");
+        }
+        let parsed = read_str("  {\"x3d\": {}}");
+        assert_eq!(parsed.diagnostics[0].span, Span::new(2, 13));
+        assert!(parsed.diagnostics[0].message.contains("`x3d`"));
+    }
+
+    #[test]
+    fn a_minimal_document_reads() {
+        let d = doc(r##"{"X3D": {}}"##);
+        assert!(d.version.is_none() && d.profile.is_none() && d.scene_span.is_none());
+        assert!(d.nodes.is_empty());
+    }
+
+    /// Nodes nested as deep as the scanner allows are read without deep recursion, on a
+    /// thread with the 2 MB stack of the checker's worker threads.
+    #[test]
+    fn deeply_nested_nodes_do_not_overflow_the_stack() {
+        let depth = tree::MAX_DEPTH / 3 - 5;
+        let mut source = String::from(r##"{"X3D": {"Scene": {"-children": ["##);
+        for _ in 0..depth {
+            source.push_str(r##"{"Group": {"-children": ["##);
+        }
+        source.push_str(&"]}}".repeat(depth));
+        source.push_str("]}}}");
+        let handle = std::thread::Builder::new()
+            .stack_size(2 << 20)
+            .spawn(move || {
+                let parsed = read(source.as_bytes());
+                (
+                    parsed.diagnostics.len(),
+                    parsed.document.map(|d| d.nodes.len()),
+                )
+            })
+            .unwrap();
+        assert_eq!(handle.join().unwrap(), (0, Some(depth)));
+        // Deeper than the cap: refused, not overflowed.
+        let too_deep = format!(r##"{{"X3D": {}"##, "[".repeat(tree::MAX_DEPTH + 10));
+        let parsed = read(too_deep.as_bytes());
+        assert!(parsed.diagnostics[0].message.contains("nested too deeply"));
+    }
+
+    #[test]
+    fn every_prefix_and_byte_flip_of_a_scene_is_handled() {
+        let source = scene(
+            r##"{ "ProtoDeclare": { "@name": "P", "ProtoInterface": { "field": [ { "@name": "c", "@type": "SFColor", "@accessType": "inputOutput", "@value": [1,0,0] } ] }, "ProtoBody": { "-children": [ { "Material": { "IS": { "connect": [ { "@nodeField": "diffuseColor", "@protoField": "c" } ] } } } ] } } },
+               { "Transform": { "@DEF": "T", "@rotation": [0,1,0,1.5e0], "-children": [ { "Shape": { "-geometry": { "IndexedFaceSet": { "@coordIndex": [0,1,2,-1], "-coord": { "Coordinate": { "@point": [0,0,0,1,0,0,0,1,0] } } } } } }, { "PixelTexture": { "@image": [1,1,3,255] } } ] } },
+               { "ProtoInstance": { "@name": "P", "fieldValue": [ { "@name": "c", "@value": [0,1,0] } ] } },
+               { "Script": { "field": [ { "@name": "x", "@type": "SFNode", "@accessType": "initializeOnly", "-children": [ { "Transform": { "@USE": "T" } } ] } ], "#sourceCode": "ecmascript:" } },
+               { "ROUTE": { "@fromNode": "T", "@fromField": "translation_changed", "@toNode": "T", "@toField": "set_translation" } }"##,
+        );
+        assert!(read_str(&source).document.is_some());
+        let bytes = source.as_bytes();
+        for cut in 0..bytes.len() {
+            let _ = read(&bytes[..cut]);
+        }
+        let replacements = [
+            b'"', b'{', b'}', b'[', b']', b',', b':', b'0', b'-', b'e', b'\\', 0xC3, 0xFF,
+        ];
+        for i in 0..bytes.len() {
+            for &r in &replacements {
+                let mut mutated = bytes.to_vec();
+                mutated[i] = r;
+                let _ = read(&mutated);
+            }
+        }
     }
 }

@@ -100,6 +100,13 @@ impl<'s> Tree<'s> {
         &self.src[s..e]
     }
 
+    /// [`Tree::raw`] as bytes (no character-boundary checks: for numbers).
+    #[inline]
+    pub fn raw_bytes(&self, i: usize) -> &'s [u8] {
+        let it = &self.items[i];
+        &self.src.as_bytes()[it.start as usize..it.end as usize]
+    }
+
     /// The whole token's text as written, quotes included: the JSON text of the value.
     pub fn raw_full(&self, i: usize) -> &'s str {
         let (s, e) = self.full_span(i);
@@ -207,6 +214,35 @@ enum State {
     /// `,` or the closing bracket of the innermost container, or the end at the top.
     AfterValue,
 }
+
+const DIGIT: u8 = 1;
+const DOT: u8 = 2;
+/// `e`, `E`, `+`, `-`: parts of an exponent.
+const EXP_SIGN: u8 = 4;
+/// Other ASCII letters and `_`: never right after a number.
+const LETTER: u8 = 8;
+
+/// What each byte can be in a number.
+static NUMBER_CLASS: [u8; 256] = {
+    let mut table = [0u8; 256];
+    let mut b = 0;
+    while b < 256 {
+        let c = b as u8;
+        table[b] = if c.is_ascii_digit() {
+            DIGIT
+        } else if c == b'.' {
+            DOT
+        } else if matches!(c, b'e' | b'E' | b'+' | b'-') {
+            EXP_SIGN
+        } else if c.is_ascii_alphabetic() || c == b'_' {
+            LETTER
+        } else {
+            0
+        };
+        b += 1;
+    }
+    table
+};
 
 /// Reads `src` as one JSON text. A leading UTF-8 byte order mark is skipped.
 pub fn parse(src: &str) -> Result<Tree<'_>, Error> {
@@ -348,12 +384,20 @@ impl<'s> Scanner<'s> {
                         (b',', false) => {
                             self.i += 1;
                             self.skip_ws();
-                            if self.s.get(self.i) == Some(&b']') {
-                                return Err(self.error_here(
-                                    "a trailing comma before `]` is not allowed in JSON",
-                                ));
+                            match self.s.get(self.i) {
+                                Some(b']') => {
+                                    return Err(self.error_here(
+                                        "a trailing comma before `]` is not allowed in JSON",
+                                    ));
+                                }
+                                // The common case of big arrays: the next number, without
+                                // going round the state machine.
+                                Some(b'-' | b'0'..=b'9') => {
+                                    self.items[top as usize].len += 1;
+                                    self.number()?;
+                                }
+                                _ => state = State::Value,
                             }
-                            state = State::Value;
                         }
                         (b'}', true) | (b']', false) => {
                             self.i += 1;
@@ -606,8 +650,56 @@ impl<'s> Scanner<'s> {
         }
     }
 
-    /// `-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?` starting at the cursor.
+    /// A number starting at the cursor: `-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?`.
+    ///
+    /// One pass over the token's characters (big arrays of numbers are most of a large
+    /// scene), then a cheap check of the common shape `-?digits(.digits)?`; anything else
+    /// goes through the full grammar.
     fn number(&mut self) -> Result<(), Error> {
+        let s = self.s;
+        let n = s.len();
+        let start = self.i;
+        let mut i = start + 1;
+        let mut mask = 0u8;
+        let mut dots = 0usize;
+        let mut dot = 0usize;
+        while i < n {
+            let class = NUMBER_CLASS[s[i] as usize];
+            if class & (DIGIT | DOT) == 0 {
+                break;
+            }
+            mask |= class;
+            let is_dot = class == DOT;
+            dots += usize::from(is_dot);
+            dot = if is_dot { i } else { dot };
+            i += 1;
+        }
+        let end = i;
+        let glued = end < n && NUMBER_CLASS[s[end] as usize] & (EXP_SIGN | LETTER | DOT) != 0;
+        let int_start = start + usize::from(s[start] == b'-');
+        let simple = !glued
+            && int_start < end
+            && s[int_start].is_ascii_digit()
+            && match dots {
+                0 => s[int_start] != b'0' || end - int_start == 1,
+                1 => {
+                    dot > int_start
+                        && dot + 1 < end
+                        && (s[int_start] != b'0' || dot - int_start == 1)
+                }
+                _ => false,
+            };
+        if simple {
+            let flags = if mask & DOT != 0 { NOT_INTEGER } else { 0 };
+            self.i = end;
+            self.push(Kind::Number, flags, start, end);
+            return Ok(());
+        }
+        self.number_full()
+    }
+
+    /// [`Scanner::number`] for exponents and errors: the grammar step by step.
+    fn number_full(&mut self) -> Result<(), Error> {
         let s = self.s;
         let start = self.i;
         let mut i = start;
@@ -815,8 +907,7 @@ mod tests {
     #[test]
     fn spans_of_keys_and_values() {
         let src = r#"{ "a": [1, -2.5e3, true], "b": {"c": null}, "s": "x\ny" }"#;
-        let src = src.replace("\\n", "\\n");
-        let t = parse(&src).unwrap();
+        let t = parse(src).unwrap();
         assert_eq!(
             kinds(&t),
             vec![

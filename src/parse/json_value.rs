@@ -270,43 +270,56 @@ fn element_error(tree: &Tree, e: usize, ty: FieldType, index: usize) -> ValueErr
 }
 
 /// Reads the number item `e` as one scalar; `Err(message)` when it does not fit.
-type Scalarize<T> = fn(&str, bool) -> Result<T, String>;
+type Scalarize<T> = fn(&[u8], bool) -> Result<T, String>;
 
-fn int32(text: &str, integer_syntax: bool) -> Result<i32, String> {
-    if integer_syntax {
-        // Up to 19 digits fit an i64; longer is out of range anyway.
-        return match text.parse::<i64>() {
-            Ok(v) if i32::try_from(v).is_ok() => Ok(v as i32),
-            _ => Err(format!(
-                "{text} is out of range (-2147483648 to 2147483647)"
-            )),
-        };
-    }
-    let v = parse_f64(text.as_bytes()).unwrap_or(f64::NAN);
-    if v.fract() != 0.0 || !v.is_finite() {
-        Err(format!("whole numbers only, found {text}"))
-    } else if v < i32::MIN as f64 || v > i32::MAX as f64 {
+fn int32(text: &[u8], integer_syntax: bool) -> Result<i32, String> {
+    let out_of_range = || {
         Err(format!(
-            "{text} is out of range (-2147483648 to 2147483647)"
+            "{} is out of range (-2147483648 to 2147483647)",
+            String::from_utf8_lossy(text)
         ))
+    };
+    if integer_syntax {
+        // JSON integer syntax: `-?` and digits. Ten digits fit an i64 with room to spare.
+        let (negative, digits) = match text.split_first() {
+            Some((b'-', rest)) => (true, rest),
+            _ => (false, text),
+        };
+        if digits.len() > 10 {
+            return out_of_range();
+        }
+        let magnitude = digits
+            .iter()
+            .fold(0i64, |m, &d| m * 10 + i64::from(d.wrapping_sub(b'0')));
+        let v = if negative { -magnitude } else { magnitude };
+        return i32::try_from(v).or_else(|_| out_of_range());
+    }
+    let v = parse_f64(text).unwrap_or(f64::NAN);
+    if v.fract() != 0.0 || !v.is_finite() {
+        Err(format!(
+            "whole numbers only, found {}",
+            String::from_utf8_lossy(text)
+        ))
+    } else if v < i32::MIN as f64 || v > i32::MAX as f64 {
+        out_of_range()
     } else {
         Ok(v as i32)
     }
 }
 
-fn float32(text: &str, _: bool) -> Result<f32, String> {
+fn float32(text: &[u8], _: bool) -> Result<f32, String> {
     // The scanner checked the JSON number syntax, which the number parser accepts.
-    Ok(parse_f32(text.as_bytes()).unwrap_or_else(|| text.parse().unwrap_or(f32::NAN)))
+    Ok(parse_f32(text).unwrap_or(f32::NAN))
 }
 
-fn float64(text: &str, _: bool) -> Result<f64, String> {
-    Ok(parse_f64(text.as_bytes()).unwrap_or_else(|| text.parse().unwrap_or(f64::NAN)))
+fn float64(text: &[u8], _: bool) -> Result<f64, String> {
+    Ok(parse_f64(text).unwrap_or(f64::NAN))
 }
 
 #[inline(always)]
 fn scalar<T>(tree: &Tree, e: usize, read: Scalarize<T>) -> Option<Result<T, String>> {
     let item = tree.item(e);
-    (item.kind == Kind::Number).then(|| read(tree.raw(e), item.flags & NOT_INTEGER == 0))
+    (item.kind == Kind::Number).then(|| read(tree.raw_bytes(e), item.flags & NOT_INTEGER == 0))
 }
 
 fn numbers<T>(

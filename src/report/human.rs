@@ -255,7 +255,7 @@ impl Placed {
     fn new(label: &Label, primary: bool, source: &[u8], lines: &LineIndex) -> Placed {
         let at = (label.span.start as usize).min(source.len());
         let empty = label.span.end <= label.span.start;
-        let mut line = lines.line_col(at).line;
+        let mut line = lines.line_of(at);
         if empty && line > 1 && lines.line_range(line).is_empty() {
             // An empty line (the end of the file, say): point at the end of the one before.
             line -= 1;

@@ -1,5 +1,6 @@
 //! Byte offset → line and column, for the few positions that are reported. Built once per
-//! file (one memchr pass); a lookup is a binary search plus a walk over one line's chars.
+//! file (one memchr pass); offsets are looked up together, in ascending order, so that even
+//! a one-line 86 MB file is scanned once for its columns.
 
 use memchr::memchr_iter;
 
@@ -23,20 +24,44 @@ impl<'a> LineIndex<'a> {
         LineIndex { source, starts }
     }
 
-    /// The position of `offset`, clamped to the end of the input. A `\r` before `\n` belongs
-    /// to its line; an offset inside a multi-byte character counts as that character.
-    pub fn line_col(&self, offset: usize) -> LineCol {
-        let mut offset = offset.min(self.source.len());
-        while offset > 0 && offset < self.source.len() && is_continuation(self.source[offset]) {
-            offset -= 1;
-        }
-        let line = self.starts.partition_point(|&s| s <= offset) - 1;
-        let text = &self.source[self.starts[line]..offset];
-        let chars = text.iter().filter(|&&b| !is_continuation(b)).count();
-        LineCol {
-            line: line + 1,
-            column: chars + 1,
-        }
+    /// The positions of `offsets`, each clamped to the end of the input. A `\r` before `\n`
+    /// belongs to its line; an offset inside a multi-byte character counts as that character.
+    /// Give them in ascending order: then each line is scanned once, however many offsets
+    /// fall on it (an 86 MB single-line file with many findings stays linear).
+    pub fn line_cols(&self, offsets: &[usize]) -> Vec<LineCol> {
+        let mut previous: Option<(usize, LineCol)> = None;
+        offsets
+            .iter()
+            .map(|&offset| {
+                let mut offset = offset.min(self.source.len());
+                while offset > 0
+                    && offset < self.source.len()
+                    && is_continuation(self.source[offset])
+                {
+                    offset -= 1;
+                }
+                let line = self.line_of(offset);
+                let (from, column) = match previous {
+                    Some((from, at)) if at.line == line && from <= offset => (from, at.column),
+                    _ => (self.starts[line - 1], 1),
+                };
+                let chars = self.source[from..offset]
+                    .iter()
+                    .filter(|&&b| !is_continuation(b))
+                    .count();
+                let at = LineCol {
+                    line,
+                    column: column + chars,
+                };
+                previous = Some((offset, at));
+                at
+            })
+            .collect()
+    }
+
+    /// The 1-based line of `offset`.
+    pub fn line_of(&self, offset: usize) -> usize {
+        self.starts.partition_point(|&s| s <= offset)
     }
 
     /// The byte range of a 1-based line, without its line break.
@@ -67,7 +92,7 @@ mod tests {
     use super::*;
 
     fn at(source: &str, offset: usize) -> (usize, usize) {
-        let p = LineIndex::new(source.as_bytes()).line_col(offset);
+        let p = LineIndex::new(source.as_bytes()).line_cols(&[offset])[0];
         (p.line, p.column)
     }
 
@@ -107,6 +132,33 @@ mod tests {
         // Inside a multi-byte character: that character's column.
         let e = s.find('€').unwrap();
         assert_eq!(at(s, e + 1), (1, 8));
+    }
+
+    #[test]
+    fn ascending_offsets_share_the_scan() {
+        let s = "aé\nbcd€e\nf";
+        let offsets = [0, 1, 4, 5, 9, 10, 12, 99, 99];
+        let one_by_one: Vec<_> = offsets.iter().map(|&o| at(s, o)).collect();
+        let together: Vec<_> = LineIndex::new(s.as_bytes())
+            .line_cols(&offsets)
+            .iter()
+            .map(|p| (p.line, p.column))
+            .collect();
+        assert_eq!(together, one_by_one);
+        assert_eq!(
+            together,
+            [
+                (1, 1),
+                (1, 2),
+                (2, 1),
+                (2, 2),
+                (2, 4),
+                (2, 5),
+                (3, 1),
+                (3, 2),
+                (3, 2)
+            ]
+        );
     }
 
     #[test]

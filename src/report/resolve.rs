@@ -42,12 +42,25 @@ pub fn resolve(diagnostics: &[Diagnostic], source: &[u8], doc: Option<&Document>
     if diagnostics.is_empty() {
         return Vec::new();
     }
-    let lines = LineIndex::new(source);
+    // Every offset at once, ascending, so that a long line is scanned once.
+    let mut offsets: Vec<usize> = diagnostics
+        .iter()
+        .flat_map(|d| {
+            let related = d.related.iter().map(|(span, _)| span.start as usize);
+            [d.span.start as usize, d.span.end.max(d.span.start) as usize]
+                .into_iter()
+                .chain(related)
+        })
+        .collect();
+    offsets.sort_unstable();
+    offsets.dedup();
+    let positions = LineIndex::new(source).line_cols(&offsets);
+    let at = |offset: u32| positions[offsets.binary_search(&(offset as usize)).unwrap_or(0)];
     diagnostics
         .iter()
         .map(|d| {
-            let start = lines.line_col(d.span.start as usize);
-            let end = lines.line_col(d.span.end.max(d.span.start) as usize);
+            let start = at(d.span.start);
+            let end = at(d.span.end.max(d.span.start));
             let path = match (doc, d.node) {
                 (Some(doc), Some(node)) => node_path(doc, node),
                 _ => ROOT.to_string(),
@@ -69,10 +82,10 @@ pub fn resolve(diagnostics: &[Diagnostic], source: &[u8], doc: Option<&Document>
                     .related
                     .iter()
                     .map(|(span, label)| {
-                        let at = lines.line_col(span.start as usize);
+                        let place = at(span.start);
                         Related {
-                            line: at.line,
-                            column: at.column,
+                            line: place.line,
+                            column: place.column,
                             label: label.clone(),
                             span: *span,
                         }

@@ -368,6 +368,15 @@ pub static FIELD_OVERRIDES: &[FieldOverride] = &[
         clause: "18.4.3 Table 18.5",
         why: "the table lists the valid values of function; the UOM has the same values but marks them as suggestions",
     },
+    // ---- 26 Humanoid animation ----
+    FieldOverride {
+        versions: V4,
+        node: "HAnimJoint",
+        field: "children",
+        change: Change::Acceptable(&["HAnimJoint", "HAnimSegment", "HAnimSite"]),
+        clause: "26.3.2 HAnimJoint (HAnim v2, ISO/IEC 19774-1:2019)",
+        why: "the 4.1 XML Schema documents HAnimJoint's content model as [HAnimJoint,HAnimSegment,HAnimSite] children although its element list, like the UOM, omits HAnimSite",
+    },
 ];
 
 pub static NODE_OVERRIDES: &[NodeOverride] = &[

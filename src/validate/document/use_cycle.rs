@@ -5,6 +5,10 @@ crate::declare_rule! {
     /// ## What it does
     /// Reports a node that is `USE`d inside itself.
     ///
+    /// A Script or shader whose own `field` holds a USE of the Script itself or of a node
+    /// around it is not a cycle: scripts reach nodes through such fields, and the scene
+    /// graph does not traverse them (19775-1 clause 29, Scripting).
+    ///
     /// ## Why it matters
     /// The scene graph is a directed acyclic graph; a cycle makes traversal endless and
     /// browsers reject or hang on it.
