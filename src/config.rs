@@ -14,6 +14,10 @@ pub struct CheckConfig {
     pub severity: HashMap<String, Severity>,
     /// Per file: further diagnostics are dropped and the report says it truncated.
     pub max_diagnostics: Option<usize>,
+    /// Fold repeats of one code on one field into one diagnostic (`--no-fold` clears it).
+    pub fold: bool,
+    /// How far a normal's length may differ from 1 before NORMAL_NOT_UNIT (deep level).
+    pub normal_tolerance: f64,
 }
 
 impl Default for CheckConfig {
@@ -24,6 +28,8 @@ impl Default for CheckConfig {
             ignore: HashSet::new(),
             severity: HashMap::new(),
             max_diagnostics: None,
+            fold: true,
+            normal_tolerance: 0.01,
         }
     }
 }

@@ -63,7 +63,7 @@ fn report(path: &Path) -> (Vec<String>, String) {
 #[test]
 fn every_rule_has_docs() {
     let mut missing = Vec::new();
-    for rule in RULES {
+    for rule in RULES.iter() {
         for section in DOC_SECTIONS {
             if !rule.doc.contains(section) {
                 missing.push(format!("{}: no `{section}`", rule.code));
@@ -83,7 +83,7 @@ fn every_rule_has_docs() {
 #[test]
 fn every_rule_has_a_failing_and_a_passing_scene() {
     let mut problems = Vec::new();
-    for rule in RULES {
+    for rule in RULES.iter() {
         let failing = scenes(rule.code, "fail");
         let passing = scenes(rule.code, "pass");
         if failing.is_empty() {
@@ -129,7 +129,7 @@ fn every_rule_has_a_failing_and_a_passing_scene() {
 
 #[test]
 fn failing_scene_reports_are_pinned() {
-    for rule in RULES {
+    for rule in RULES.iter() {
         for path in scenes(rule.code, "fail") {
             let (_, text) = report(&path);
             let name = format!(

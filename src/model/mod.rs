@@ -4,6 +4,7 @@
 //! Defaults are not stored: they come from the schema when asked for.
 
 pub mod builder;
+mod fields;
 mod value;
 
 pub use builder::Builder;

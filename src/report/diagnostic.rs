@@ -14,6 +14,8 @@ pub struct Diagnostic {
     pub node: Option<NodeId>,
     /// The MF element index, where one element is at fault.
     pub index: Option<usize>,
+    /// For a folded diagnostic: the first indices of the repeats it stands for.
+    pub indices: Vec<usize>,
     /// The offending value as text.
     pub value: Option<String>,
     /// A suggestion ("did you mean `diffuseColor`?").
@@ -33,6 +35,7 @@ impl Diagnostic {
             span,
             node: None,
             index: None,
+            indices: Vec::new(),
             value: None,
             help: None,
             related: Vec::new(),

@@ -40,6 +40,8 @@ struct Diagnostic<'a> {
     clause: &'static str,
     #[serde(skip_serializing_if = "Option::is_none")]
     index: Option<usize>,
+    #[serde(skip_serializing_if = "<[usize]>::is_empty")]
+    indices: &'a [usize],
     #[serde(skip_serializing_if = "Option::is_none")]
     value: Option<&'a str>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -65,6 +67,7 @@ impl<'a> From<&'a Resolved> for Diagnostic<'a> {
             path: &d.path,
             clause: d.clause,
             index: d.index,
+            indices: &d.indices,
             value: d.value.as_deref(),
             help: d.help.as_deref(),
             count: d.count,

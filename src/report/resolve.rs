@@ -22,6 +22,8 @@ pub struct Resolved {
     pub path: String,
     pub clause: &'static str,
     pub index: Option<usize>,
+    /// For a folded diagnostic, the first indices it stands for.
+    pub indices: Vec<usize>,
     pub value: Option<String>,
     pub help: Option<String>,
     pub related: Vec<Related>,
@@ -76,6 +78,7 @@ pub fn resolve(diagnostics: &[Diagnostic], source: &[u8], doc: Option<&Document>
                 path,
                 clause: d.rule.clause,
                 index: d.index,
+                indices: d.indices.clone(),
                 value: d.value.clone(),
                 help: d.help.clone(),
                 related: d

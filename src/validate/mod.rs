@@ -3,15 +3,22 @@
 //! the readers and the model builder and only filtered here.
 
 pub mod document;
+pub mod events;
+pub mod lighting;
 mod registry;
+pub mod rendering;
 mod rule;
+pub mod shape;
 pub mod suggest;
+pub mod texturing;
 
 pub use registry::{find_rule, RULES};
 pub use rule::{Level, Rule, Severity};
 
 use crate::config::CheckConfig;
-use crate::model::{Document, FieldEntry, Span};
+use std::collections::HashMap;
+
+use crate::model::{Document, FieldEntry, NodeId, Span};
 use crate::report::Diagnostic;
 use crate::schema::Version;
 
@@ -23,13 +30,61 @@ pub struct Ctx<'a> {
     pub version: Version,
     pub config: &'a CheckConfig,
     diagnostics: Vec<Diagnostic>,
+    /// Folded findings: (code, node, field) → index in `diagnostics`.
+    folded: HashMap<(&'static str, NodeId, String), usize>,
 }
+
+/// How many element indices a folded diagnostic lists.
+pub const FOLDED_INDICES: usize = 10;
 
 impl Ctx<'_> {
     pub fn report(&mut self, diagnostic: Diagnostic) {
         self.diagnostics.push(diagnostic);
     }
 
+    /// Reports a finding that can repeat along one field (a bad index, a short polygon).
+    /// With folding on (the default; `--no-fold` turns it off) the repeats of one code on
+    /// one node's field become the first diagnostic with a count and the first indices,
+    /// and `make` runs only for that first one, so a million bad indices cost a counter.
+    pub fn report_repeated(
+        &mut self,
+        rule: &'static Rule,
+        node: NodeId,
+        field: &str,
+        index: usize,
+        make: impl FnOnce() -> Diagnostic,
+    ) {
+        if !self.config.fold {
+            self.diagnostics.push(make().index(index));
+            return;
+        }
+        let key = (rule.code, node, field.to_string());
+        if let Some(&at) = self.folded.get(&key) {
+            let folded = &mut self.diagnostics[at];
+            folded.count += 1;
+            if folded.indices.len() < FOLDED_INDICES {
+                folded.indices.push(index);
+            }
+            return;
+        }
+        let mut diagnostic = make().index(index);
+        diagnostic.indices.push(index);
+        self.folded.insert(key, self.diagnostics.len());
+        self.diagnostics.push(diagnostic);
+    }
+
+    /// Says in each folded diagnostic's message how many it stands for.
+    fn finish(mut self) -> Vec<Diagnostic> {
+        for &at in self.folded.values() {
+            let d = &mut self.diagnostics[at];
+            if d.count > 1 {
+                let shown: Vec<String> = d.indices.iter().map(usize::to_string).collect();
+                let more = if d.count > d.indices.len() { ", …" } else { "" };
+                d.message = format!("{} ({} in all, at indices {}{more})", d.message, d.count, shown.join(", "));
+            }
+        }
+        self.diagnostics
+    }
     /// The place of the `k`-th number of a field's value (XML attribute text or JSON array),
     /// or the whole value when it cannot be told.
     pub fn scalar_span(&self, entry: &FieldEntry, k: usize) -> Span {
@@ -65,13 +120,14 @@ pub fn check(doc: &Document, source: &[u8], config: &CheckConfig) -> Vec<Diagnos
         version: doc.schema_version(),
         config,
         diagnostics: Vec::new(),
+        folded: HashMap::new(),
     };
-    for rule in RULES {
+    for rule in RULES.iter() {
         if let Some(check) = rule.check {
             if config.runs(rule) {
                 check(&mut ctx);
             }
         }
     }
-    ctx.diagnostics
+    ctx.finish()
 }
