@@ -6,7 +6,7 @@ use super::*;
 use crate::report::Diagnostic;
 use crate::schema::{self, Version};
 use crate::validate::document::{
-    def_duplicate::DEF_DUPLICATE, field_duplicate::FIELD_DUPLICATE, use_cycle::USE_CYCLE,
+    def_duplicate::DEF_DUPLICATE, field_duplicate::FIELD_DUPLICATE, limit_exceeded::LIMIT_EXCEEDED, use_cycle::USE_CYCLE,
     use_type_mismatch::USE_TYPE_MISMATCH, use_undefined::USE_UNDEFINED,
 };
 
@@ -33,7 +33,13 @@ pub struct Builder {
     scopes: Vec<Scope>,
     /// Nodes whose element is still open, innermost last: a USE of one of them is a cycle.
     open: Vec<NodeId>,
+    depth_reported: bool,
 }
+
+/// The deepest chain of nodes (through USE too) the model holds. Walkers may recurse over
+/// the scene graph: this bounds their stack, and real scenes stay far below it (HAnim
+/// skeletons, the deepest common case, nest about 60 levels).
+pub const MAX_DEPTH: usize = 1000;
 
 impl Builder {
     pub fn new(encoding: Encoding) -> Builder {
@@ -42,6 +48,7 @@ impl Builder {
             diagnostics: Vec::new(),
             scopes: vec![Scope::Scene],
             open: Vec::new(),
+            depth_reported: false,
         }
     }
 
@@ -142,7 +149,13 @@ impl Builder {
     }
 
     /// Adds a new node under `parent` and opens it; close it with [`Builder::end_node`].
-    pub fn begin_node(&mut self, kind: NodeKind, name_span: Span, parent: Parent) -> NodeId {
+    /// None when the node would stand deeper than [`MAX_DEPTH`]: the reader then skips it
+    /// and everything inside it.
+    pub fn begin_node(&mut self, kind: NodeKind, name_span: Span, parent: Parent) -> Option<NodeId> {
+        if self.open.len() >= MAX_DEPTH {
+            self.too_deep(name_span);
+            return None;
+        }
         let id = NodeId(self.doc.nodes.len() as u32);
         let span = Span {
             start: name_span.start,
@@ -167,16 +180,40 @@ impl Builder {
             declared: Vec::new(),
             connects: Vec::new(),
             source_code: None,
+            height: 0,
+            instances: 1,
         });
         self.open.push(id);
-        id
+        Some(id)
+    }
+
+    /// Reports the depth limit, once per document.
+    fn too_deep(&mut self, span: Span) {
+        if !self.depth_reported {
+            self.depth_reported = true;
+            self.report(Diagnostic::new(
+                &LIMIT_EXCEEDED,
+                span,
+                format!("the scene graph is nested deeper than {MAX_DEPTH} nodes here; deeper nodes are not read"),
+            ));
+        }
     }
 
     /// Closes the innermost open node; `span` is its whole element or object.
     pub fn end_node(&mut self, id: NodeId, span: Span) {
         debug_assert_eq!(self.open.last(), Some(&id));
         self.open.pop();
+        // Every child is closed by now (a USE names an earlier, closed node), so the
+        // height and the instance count below this node are final.
+        let (mut height, mut instances) = (0u32, 1u64);
+        for child in self.doc.nodes[id.index()].fields.iter().filter_map(|f| f.value.as_nodes()).flatten() {
+            let child = &self.doc.nodes[child.node.index()];
+            height = height.max(child.height + 1);
+            instances = instances.saturating_add(child.instances);
+        }
         let node = &mut self.doc.nodes[id.index()];
+        node.height = height;
+        node.instances = instances;
         node.span = span;
         // The reference in the parent was made at the start tag; give it the whole span.
         let siblings: &mut [ChildRef] = match node.place {
@@ -273,6 +310,10 @@ impl Builder {
                 .node(target)
                 .value(name.text.clone()),
             );
+            return None;
+        }
+        if self.open.len() + 1 + self.doc.node(target).height as usize > MAX_DEPTH {
+            self.too_deep(name.span);
             return None;
         }
         let target_type = self.doc.node(target).type_name().to_string();

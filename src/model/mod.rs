@@ -111,6 +111,12 @@ pub struct Node {
     pub connects: Vec<IsConnect>,
     /// Source text (Script, ShaderPart CDATA or `#sourceCode`); not checked.
     pub source_code: Option<Span>,
+    /// The longest chain of node references below this node (0 for a leaf).
+    pub height: u32,
+    /// How many node instances this node stands for with every USE expanded, itself
+    /// included (saturating). DEF/USE can make this exponential in the file size, so
+    /// whatever visits instances (bounds, the renderer) checks it first.
+    pub instances: u64,
 }
 
 impl Node {
@@ -335,6 +341,13 @@ impl Document {
 
     pub fn node_ids(&self) -> impl Iterator<Item = NodeId> {
         (0..self.nodes.len() as u32).map(NodeId)
+    }
+
+    /// Node instances in the scene with every USE expanded (saturating).
+    pub fn instances(&self) -> u64 {
+        self.scene
+            .iter()
+            .fold(0u64, |sum, c| sum.saturating_add(self.node(c.node).instances))
     }
 
     /// Nodes of a given concrete type, in document order.

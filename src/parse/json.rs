@@ -729,7 +729,9 @@ impl<'t, 's> JsonReader<'t, 's> {
             return;
         }
 
-        let id = self.builder.begin_node(kind, name_span, ctx.parent());
+        let Some(id) = self.builder.begin_node(kind, name_span, ctx.parent()) else {
+            return;
+        };
         let mut defined = false;
         for (k, v) in t.members(value) {
             let member = t.str(k);

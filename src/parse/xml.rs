@@ -624,7 +624,9 @@ impl<'s> XmlReader<'s> {
             return if empty { Frame::Other } else { Frame::Use };
         }
 
-        let id = self.builder.begin_node(kind, name_span, parent);
+        let Some(id) = self.builder.begin_node(kind, name_span, parent) else {
+            return Frame::Other;
+        };
         for attr in attrs {
             match attr.name {
                 "DEF" => self.builder.define(

@@ -17,6 +17,7 @@ pub mod field_unknown;
 pub mod field_value_nonfinite;
 pub mod field_value_syntax;
 pub mod json_malformed;
+pub mod limit_exceeded;
 pub mod node_deprecated;
 pub mod node_not_in_version;
 pub mod node_type_not_allowed;
@@ -60,6 +61,7 @@ pub static RULES: &[&Rule] = &[
     &use_with_fields::USE_WITH_FIELDS,
     &use_cycle::USE_CYCLE,
     &use_type_mismatch::USE_TYPE_MISMATCH,
+    &limit_exceeded::LIMIT_EXCEEDED,
     &node_type_not_allowed::NODE_TYPE_NOT_ALLOWED,
     &container_field_invalid::CONTAINER_FIELD_INVALID,
     &sfnode_multiple::SFNODE_MULTIPLE,
