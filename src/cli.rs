@@ -12,9 +12,11 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use rayon::prelude::*;
 
 use x3dcheck::config::CheckConfig;
+use x3dcheck::config_file::{known_code, Effective, Resolver, Settings};
 use x3dcheck::model::MAX_INPUT_BYTES;
-use x3dcheck::report::{concise, human, json, FileReport, Summary};
-use x3dcheck::validate::{find_rule, Level, Rule, Severity, RULES};
+use x3dcheck::report::{concise, github, human, json, junit, sarif, statistics};
+use x3dcheck::report::{FileReport, Summary};
+use x3dcheck::validate::{Level, Rule, Severity, RULES};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -45,9 +47,9 @@ struct CheckArgs {
     /// Files, or directories searched recursively for .x3d, .x3dj and .json files; `-` reads stdin
     #[arg(value_name = "PATH", required = true)]
     paths: Vec<PathBuf>,
-    /// What to check
-    #[arg(long, value_enum, default_value_t = Level::Standard)]
-    level: Level,
+    /// What to check [default: standard]
+    #[arg(long, value_enum)]
+    level: Option<Level>,
     /// Report format
     #[arg(long, value_enum, default_value_t = Format::Human)]
     format: Format,
@@ -63,18 +65,34 @@ struct CheckArgs {
     /// Change the severity of codes (error, warning, info, hint)
     #[arg(long, value_delimiter = ',', value_name = "CODE=LEVEL,...")]
     severity: Vec<String>,
-    /// Exit with 1 when a diagnostic of this severity or above is reported
-    #[arg(long, value_enum, default_value_t = FailOn::Error)]
-    fail_on: FailOn,
+    /// Exit with 1 when a diagnostic of this severity or above is reported [default: error]
+    #[arg(long, value_enum)]
+    fail_on: Option<FailOn>,
     /// At most N diagnostics per file
     #[arg(long, value_name = "N")]
     max_diagnostics: Option<usize>,
+    /// Report each repeat of a finding on one field on its own instead of folding them
+    #[arg(long)]
+    no_fold: bool,
+    /// Print per code how many findings and files instead of the findings (human, concise
+    /// or json format)
+    #[arg(long)]
+    statistics: bool,
+    /// Use this configuration for every input instead of the x3dcheck.toml found upward
+    /// from each file
+    #[arg(long, value_name = "FILE")]
+    config: Option<PathBuf>,
+    /// How far a normal's length may differ from 1 (NORMAL_NOT_UNIT, deep level) [default: 0.01]
+    #[arg(long, value_name = "F")]
+    normal_tolerance: Option<f64>,
     /// Files checked in parallel (default: all cores)
     #[arg(short, long, value_name = "N")]
     jobs: Option<usize>,
     /// No colours in the human format
     #[arg(long)]
     no_color: bool,
+    #[command(flatten)]
+    render: x3dcheck::render::RenderArgs,
 }
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
@@ -82,6 +100,12 @@ enum Format {
     Human,
     Concise,
     Json,
+    /// SARIF 2.1.0, for code-scanning services
+    Sarif,
+    /// GitHub Actions workflow commands (annotations)
+    Github,
+    /// JUnit XML, for CI test dashboards
+    Junit,
 }
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
@@ -107,12 +131,32 @@ pub fn run(cli: Cli) -> ExitCode {
 }
 
 fn check(args: &CheckArgs) -> Result<ExitCode, String> {
-    let config = config(args)?;
+    if args.statistics && !matches!(args.format, Format::Human | Format::Concise | Format::Json) {
+        return Err("--statistics prints with the human, concise or json format".to_string());
+    }
+    let mut resolver =
+        Resolver::new(args.config.as_deref(), settings(args)?).map_err(|e| e.to_string())?;
     let color = !args.no_color
         && args.output.is_none()
         && io::stdout().is_terminal()
         && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty());
     let (inputs, mut failed) = find_inputs(&args.paths);
+    // Configuration errors stop the run before anything is checked.
+    let configs = inputs
+        .iter()
+        .map(|input| match input {
+            Input::Stdin(_) => resolver.for_file(None),
+            Input::File { path, root } => resolver.for_file(Some(path)).map(|mut effective| {
+                effective.check.root = Some(root.clone());
+                effective
+            }),
+        })
+        .collect::<Result<Vec<Effective>, _>>()
+        .map_err(|e| e.to_string())?;
+    let text_format = (!args.statistics).then_some(args.format);
+    if args.render.render.is_some() && inputs.len() != 1 {
+        return Err("--render takes exactly one input scene".to_string());
+    }
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(args.jobs.unwrap_or(0))
         .build()
@@ -120,17 +164,22 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
     let outcomes: Vec<Outcome> = pool.install(|| {
         inputs
             .par_iter()
-            .map(|input| check_input(input, &config, args.format, color))
+            .zip(&configs)
+            .map(|(input, config)| {
+                check_input(input, &config.check, text_format, color, &args.render)
+            })
             .collect()
     });
 
     let mut reports = Vec::with_capacity(outcomes.len());
+    let mut fail_levels = Vec::with_capacity(outcomes.len());
     let mut text = String::new();
-    for outcome in outcomes {
+    for (outcome, config) in outcomes.into_iter().zip(&configs) {
         match outcome {
             Ok((report, rendered)) => {
                 text.push_str(&rendered);
                 reports.push(report);
+                fail_levels.push(config.fail_on);
             }
             Err(message) => {
                 eprintln!("x3dcheck: {message}");
@@ -139,75 +188,85 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
         }
     }
     let summary = Summary::of(&reports);
-    match args.format {
-        Format::Json => text = json::render(&reports),
-        Format::Human | Format::Concise => {
+    match (args.statistics, args.format) {
+        (true, Format::Json) => text = statistics::render_json(&statistics::of(&reports), &reports),
+        (true, _) => {
+            text = statistics::render_text(&statistics::of(&reports));
+            text.push_str(&human::summary_line(&summary));
+            text.push('\n');
+        }
+        (false, Format::Json) => text = json::render(&reports),
+        (false, Format::Sarif) => text = sarif::render(&reports),
+        (false, Format::Junit) => text = junit::render(&reports, &fail_levels),
+        (false, Format::Github) => {}
+        (false, Format::Human | Format::Concise) => {
             text.push_str(&human::summary_line(&summary));
             text.push('\n');
         }
     }
     write_output(args.output.as_deref(), &text)?;
 
-    let fail_level = match args.fail_on {
-        FailOn::Error => Severity::Error,
-        FailOn::Warning => Severity::Warning,
-    };
     let fails = reports
         .iter()
-        .flat_map(|r| &r.diagnostics)
-        .any(|d| d.severity >= fail_level);
+        .zip(&fail_levels)
+        .any(|(r, &level)| r.diagnostics.iter().any(|d| d.severity >= level));
     Ok(ExitCode::from(if failed { USAGE } else { u8::from(fails) }))
 }
 
-fn config(args: &CheckArgs) -> Result<CheckConfig, String> {
-    let mut config = CheckConfig {
-        level: args.level,
-        max_diagnostics: args.max_diagnostics,
-        ..CheckConfig::default()
+/// The settings the command line gives; they win over x3dcheck.toml.
+fn settings(args: &CheckArgs) -> Result<Settings, String> {
+    let code = |code: &str, option: &str| {
+        known_code(code)
+            .map(|r| r.code.to_string())
+            .map_err(|e| format!("{option}: {e}"))
     };
-    for code in &args.select {
-        config
-            .select
-            .insert(known_rule(code, "--select")?.code.to_string());
+    let mut settings = Settings {
+        level: args.level,
+        fail_on: args.fail_on.map(|f| match f {
+            FailOn::Error => Severity::Error,
+            FailOn::Warning => Severity::Warning,
+        }),
+        max_diagnostics: args.max_diagnostics,
+        fold: args.no_fold.then_some(false),
+        ..Settings::default()
+    };
+    if !args.select.is_empty() {
+        let select = args.select.iter().map(|c| code(c, "--select"));
+        settings.select = Some(select.collect::<Result<_, _>>()?);
     }
-    for code in &args.ignore {
-        config
-            .ignore
-            .insert(known_rule(code, "--ignore")?.code.to_string());
+    for c in &args.ignore {
+        settings.ignore.push(code(c, "--ignore")?);
     }
     for item in &args.severity {
-        let (code, level) = item
+        let (c, level) = item
             .split_once('=')
             .ok_or_else(|| format!("--severity takes CODE=LEVEL, not `{item}`"))?;
-        let code = known_rule(code, "--severity")?.code;
+        let c = code(c, "--severity")?;
         let level = Severity::parse(level).ok_or_else(|| {
-            format!("unknown severity `{level}` for {code} (error, warning, info or hint)")
+            format!("unknown severity `{level}` for {c} (error, warning, info or hint)")
         })?;
-        config.severity.insert(code.to_string(), level);
+        settings.severity.push((c, level));
     }
-    Ok(config)
+    if let Some(tolerance) = args.normal_tolerance {
+        if !(tolerance.is_finite() && tolerance >= 0.0) {
+            return Err(format!(
+                "--normal-tolerance takes a finite number ≥ 0, not {tolerance}"
+            ));
+        }
+        settings.normal_tolerance = Some(tolerance);
+    }
+    Ok(settings)
 }
 
 /// The rule of a code, or a usage error naming the nearest code.
 fn known_rule(code: &str, option: &str) -> Result<&'static Rule, String> {
-    if let Some(rule) = find_rule(code) {
-        return Ok(rule);
-    }
-    let wanted = code.to_ascii_uppercase();
-    let nearest = RULES
-        .iter()
-        .map(|r| (strsim::jaro_winkler(&wanted, r.code), r.code))
-        .filter(|(score, _)| *score > 0.8)
-        .max_by(|a, b| a.0.total_cmp(&b.0));
-    let hint = nearest.map_or(String::new(), |(_, c)| format!(" (did you mean `{c}`?)"));
-    Err(format!(
-        "{option}: unknown rule code `{code}`{hint}; `x3dcheck rules` lists the codes"
-    ))
+    known_code(code).map_err(|e| format!("{option}: {e}"))
 }
 
 enum Input {
     Stdin(Vec<u8>),
-    File(PathBuf),
+    /// A file, with the directory tree its references (textures, Inlines) may be read from.
+    File { path: PathBuf, root: PathBuf },
 }
 
 /// The inputs in argument order, each directory's files sorted by path. Unreadable paths
@@ -232,13 +291,24 @@ fn find_inputs(paths: &[PathBuf]) -> (Vec<Input>, bool) {
                 let mut files = Vec::new();
                 walk(path, &mut files, &mut fail);
                 files.sort();
-                inputs.extend(files.into_iter().map(Input::File));
+                inputs.extend(files.into_iter().map(|file| Input::File { path: file, root: path.clone() }));
             }
-            Ok(_) => inputs.push(Input::File(path.clone())),
+            Ok(_) => inputs.push(Input::File { path: path.clone(), root: file_root(path) }),
             Err(e) => fail(path, e),
         }
     }
     (inputs, failed)
+}
+
+/// The tree a file named on the command line may read references from: the current
+/// directory when the file lies in it (textures in a sibling `../textures` folder are
+/// common), else the file's own directory. A directory argument is its own root.
+fn file_root(file: &Path) -> PathBuf {
+    let directory = file.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    match (std::env::current_dir(), directory.canonicalize()) {
+        (Ok(current), Ok(directory)) if directory.starts_with(&current) => current,
+        _ => directory.to_path_buf(),
+    }
 }
 
 /// Collects X3D files under `dir`. Symlinked directories are not followed (no loops);
@@ -306,10 +376,17 @@ fn too_large() -> io::Error {
 /// A checked file with its rendered text, or why it could not be checked.
 type Outcome = Result<(FileReport, String), String>;
 
-fn check_input(input: &Input, config: &CheckConfig, format: Format, color: bool) -> Outcome {
+/// `format` is the format rendered per file (`None`: nothing, `--statistics`).
+fn check_input(
+    input: &Input,
+    config: &CheckConfig,
+    format: Option<Format>,
+    color: bool,
+    render: &x3dcheck::render::RenderArgs,
+) -> Outcome {
     let (name, bytes) = match input {
         Input::Stdin(bytes) => ("<stdin>".to_string(), Cow::Borrowed(&bytes[..])),
-        Input::File(path) => {
+        Input::File { path, .. } => {
             let name = path.display().to_string();
             match read_file(path) {
                 Ok(bytes) => (name, Cow::Owned(bytes)),
@@ -319,15 +396,17 @@ fn check_input(input: &Input, config: &CheckConfig, format: Format, color: bool)
     };
     // A panic in a rule is an internal failure of this file, not of the run.
     std::panic::catch_unwind(|| {
-        let report = x3dcheck::check_source(&name, &bytes, config);
+        let (mut report, doc) = x3dcheck::check::check_document(&name, &bytes, config);
+        x3dcheck::render::run(render, Path::new(&name), &bytes, doc.as_ref(), &mut report)?;
         let text = match format {
-            Format::Human => human::render(&report, &bytes, color),
-            Format::Concise => concise::render(&report),
-            Format::Json => String::new(),
+            Some(Format::Human) => human::render(&report, &bytes, color),
+            Some(Format::Concise) => concise::render(&report),
+            Some(Format::Github) => github::render(&report),
+            Some(Format::Json | Format::Sarif | Format::Junit) | None => String::new(),
         };
-        (report, text)
+        Ok((report, text))
     })
-    .map_err(|_| format!("internal error while checking {name}"))
+    .map_err(|_| format!("internal error while checking {name}"))?
 }
 
 fn write_output(output: Option<&Path>, text: &str) -> Result<(), String> {
@@ -356,7 +435,14 @@ fn rule_table() -> String {
     let mut rows = vec![["CODE", "SEVERITY", "LEVEL", "VERSIONS", "CLAUSE", "SUMMARY"]];
     rows.extend(RULES.iter().zip(&summaries).map(|(r, summary)| {
         let (severity, level) = (r.severity.as_str(), r.level.as_str());
-        [r.code, severity, level, r.versions, r.clause, summary.as_str()]
+        [
+            r.code,
+            severity,
+            level,
+            r.versions,
+            r.clause,
+            summary.as_str(),
+        ]
     }));
     let widths: Vec<usize> = (0..5)
         .map(|column| rows.iter().map(|row| row[column].len()).max().unwrap_or(0))

@@ -18,6 +18,9 @@ pub struct CheckConfig {
     pub fold: bool,
     /// How far a normal's length may differ from 1 before NORMAL_NOT_UNIT (deep level).
     pub normal_tolerance: f64,
+    /// The directory tree the deep level may read referenced files from (textures,
+    /// Inlines). None: the checked file's own directory and below.
+    pub root: Option<std::path::PathBuf>,
 }
 
 impl Default for CheckConfig {
@@ -30,6 +33,7 @@ impl Default for CheckConfig {
             max_diagnostics: None,
             fold: true,
             normal_tolerance: 0.01,
+            root: None,
         }
     }
 }

@@ -5,8 +5,10 @@
 
 pub mod check;
 pub mod config;
+pub mod config_file;
 pub mod model;
 pub mod parse;
+pub mod render;
 pub mod report;
 pub mod schema;
 pub mod validate;

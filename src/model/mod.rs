@@ -3,7 +3,10 @@
 //! children per node field. `USE` is a second [`ChildRef`] to the DEF'd node, never a copy.
 //! Defaults are not stored: they come from the schema when asked for.
 
+pub mod bounds;
 pub mod builder;
+pub mod faces;
+pub mod texture_mapping;
 mod fields;
 mod value;
 

@@ -1592,7 +1592,9 @@ mod tests {
                 )
             })
             .unwrap();
-        assert_eq!(handle.join().unwrap(), (0, Some(depth)));
+        // The scanner reads all of it; the model keeps the first MAX_DEPTH nodes and says so.
+        let max_nodes = crate::model::builder::MAX_DEPTH;
+        assert_eq!(handle.join().unwrap(), (1, Some(max_nodes)));
         // Deeper than the cap: refused, not overflowed.
         let too_deep = format!(r##"{{"X3D": {}"##, "[".repeat(tree::MAX_DEPTH + 10));
         let parsed = read(too_deep.as_bytes());

@@ -3,11 +3,15 @@
 
 pub mod concise;
 mod diagnostic;
+pub mod github;
 pub mod human;
 pub mod json;
+pub mod junit;
 mod line_index;
 mod path;
 mod resolve;
+pub mod sarif;
+pub mod statistics;
 mod stats;
 
 pub use diagnostic::Diagnostic;

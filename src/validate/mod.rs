@@ -29,6 +29,9 @@ pub struct Ctx<'a> {
     /// The version whose rules apply (the document's, or the latest when it names none).
     pub version: Version,
     pub config: &'a CheckConfig,
+    /// The directory of the checked file, against which relative URLs resolve; None for
+    /// standard input.
+    pub base: Option<&'a std::path::Path>,
     diagnostics: Vec<Diagnostic>,
     /// Folded findings: (code, node, field) → index in `diagnostics`.
     folded: HashMap<(&'static str, NodeId, String), usize>,
@@ -113,12 +116,18 @@ impl Ctx<'_> {
 }
 
 /// Runs every enabled rule with a check on `doc`.
-pub fn check(doc: &Document, source: &[u8], config: &CheckConfig) -> Vec<Diagnostic> {
+pub fn check(
+    doc: &Document,
+    source: &[u8],
+    base: Option<&std::path::Path>,
+    config: &CheckConfig,
+) -> Vec<Diagnostic> {
     let mut ctx = Ctx {
         doc,
         source,
         version: doc.schema_version(),
         config,
+        base,
         diagnostics: Vec::new(),
         folded: HashMap::new(),
     };

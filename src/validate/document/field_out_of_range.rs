@@ -1,7 +1,7 @@
 //! FIELD_OUT_OF_RANGE: a value outside the range of the node's interface table.
 
 use super::failures;
-use crate::model::{FieldEntry, NodeId, Value};
+use crate::model::{FieldEntry, Node, NodeId, Value};
 use crate::report::Diagnostic;
 use crate::schema::{Bound, FieldDef};
 use crate::validate::Ctx;
@@ -17,7 +17,8 @@ crate::declare_rule! {
     /// Values are compared at the field's precision: SFFloat-based values as the f32 the
     /// text rounds to, against the bound rounded to f32 (so `1.570796327` passes a
     /// (0,π/2] bound and `1.571` does not); SFDouble and SFTime values in f64; integers
-    /// exactly. NaN is never in range; -0 equals 0.
+    /// exactly. NaN is never in range; -0 equals 0. Geometry index fields (`coordIndex`,
+    /// `index`, …) are INDEX_NEGATIVE's: it knows the -1 separator.
     ///
     /// ## Why it matters
     /// Browsers clamp, wrap or reject out-of-range values, each differently, so the scene
@@ -45,7 +46,7 @@ fn check(ctx: &mut Ctx) {
             let Some(def) = entry.schema_def() else {
                 continue;
             };
-            if def.min.is_none() && def.max.is_none() {
+            if def.min.is_none() && def.max.is_none() || is_geometry_index(node, def.name) {
                 continue;
             }
             let outside = match &entry.value {
@@ -59,6 +60,12 @@ fn check(ctx: &mut Ctx) {
             }
         }
     }
+}
+
+/// Index fields of geometry (coordIndex, index, …) have the more specific INDEX_NEGATIVE,
+/// which knows the -1 separator; reporting them here too would say the same twice.
+fn is_geometry_index(node: &Node, field: &str) -> bool {
+    (field == "index" || field.ends_with("Index")) && node.is_a("X3DGeometryNode")
 }
 
 fn report(

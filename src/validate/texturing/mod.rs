@@ -1,6 +1,38 @@
 //! Texturing component (clause 18), RULES.md §5.
 
+mod files;
+pub mod image_format_unsupported;
+pub mod image_unreadable;
+pub mod image_url_empty;
+pub mod multitexture_coords_short;
+pub mod multitexture_extra_modes;
+pub mod pixel_texture_size_mismatch;
+pub mod texgen_parameter_count;
+pub mod texture_mipmap_required;
+pub mod texture_repeat_ignored;
+pub mod texture_transform_singular;
+pub mod url_unresolved;
+
 use super::Rule;
+use crate::model::Node;
 
 /// This group's rules, in catalogue order.
-pub static RULES: &[&Rule] = &[];
+pub static RULES: &[&Rule] = &[
+    &multitexture_extra_modes::MULTITEXTURE_EXTRA_MODES,
+    &multitexture_coords_short::MULTITEXTURE_COORDS_SHORT,
+    &texgen_parameter_count::TEXGEN_PARAMETER_COUNT,
+    &texture_mipmap_required::TEXTURE_MIPMAP_REQUIRED,
+    &texture_repeat_ignored::TEXTURE_REPEAT_IGNORED,
+    &texture_transform_singular::TEXTURE_TRANSFORM_SINGULAR,
+    &pixel_texture_size_mismatch::PIXEL_TEXTURE_SIZE_MISMATCH,
+    &image_url_empty::IMAGE_URL_EMPTY,
+    &url_unresolved::URL_UNRESOLVED,
+    &image_unreadable::IMAGE_UNREADABLE,
+    &image_format_unsupported::IMAGE_FORMAT_UNSUPPORTED,
+];
+
+/// Whether a field of a node inside a ProtoBody takes its value through `IS`: the value
+/// written is then not the one used.
+fn is_connected(node: &Node, field: &str) -> bool {
+    node.connects.iter().any(|c| c.node_field.text == field)
+}

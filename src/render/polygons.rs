@@ -1,0 +1,569 @@
+//! Polygonal geometry (IndexedFaceSet and the triangle/quad sets of clause 11) turned into
+//! a triangle mesh: polygons triangulated (ear clipping, so concave ones come out right),
+//! attributes bound per vertex or per face, normals generated when the node gives none
+//! and the material needs them (flat, smooth, or by creaseAngle).
+
+use super::draw_list::Primitive;
+use super::geometry::LocalMesh;
+
+/// Where a vertex attribute's values come from.
+#[derive(Clone, Copy)]
+#[allow(clippy::enum_variant_names)] // "by" is what each variant says
+pub enum Binding<'a> {
+    /// The attribute's own index list, parallel to the coordinate index list (slot).
+    BySlot(&'a [i32]),
+    /// The same index as the coordinate.
+    ByCoord,
+    /// One value per face: the face's entry of the index list, or the face number.
+    ByFace(Option<&'a [i32]>),
+}
+
+/// An attribute: flat values, values per element, and their binding.
+#[derive(Clone, Copy)]
+pub struct Attribute<'a> {
+    pub values: &'a [f32],
+    pub arity: usize,
+    pub binding: Binding<'a>,
+}
+
+#[derive(Clone, Copy, PartialEq)]
+pub enum NormalGeneration {
+    Flat,
+    /// Averaged over every face sharing the coordinate index.
+    Smooth,
+    /// Averaged over the faces around the vertex within this angle (radians).
+    Crease(f64),
+}
+
+/// Faces as lists of corners; each corner is its coordinate index and its slot (position
+/// in the index list the document gave, for per-vertex attribute index lists).
+#[derive(Default)]
+pub struct Faces {
+    pub corner_coords: Vec<u32>,
+    pub corner_slots: Vec<u32>,
+    /// Face k is corners `starts[k]..starts[k + 1]`.
+    pub starts: Vec<usize>,
+}
+
+impl Faces {
+    pub fn new() -> Faces {
+        Faces {
+            starts: vec![0],
+            ..Faces::default()
+        }
+    }
+
+    pub fn push_corner(&mut self, coord: u32, slot: usize) {
+        self.corner_coords.push(coord);
+        self.corner_slots.push(slot as u32);
+    }
+
+    /// Ends a face; faces with fewer than three corners are dropped.
+    pub fn end_face(&mut self) {
+        let start = *self.starts.last().unwrap_or(&0);
+        if self.corner_coords.len() - start < 3 {
+            self.corner_coords.truncate(start);
+            self.corner_slots.truncate(start);
+        } else {
+            self.starts.push(self.corner_coords.len());
+        }
+    }
+
+    pub fn face_count(&self) -> usize {
+        self.starts.len() - 1
+    }
+
+    fn face(&self, k: usize) -> std::ops::Range<usize> {
+        self.starts[k]..self.starts[k + 1]
+    }
+
+    /// Faces delimited by −1 (or the end) in an index list; faces with an index out of
+    /// `0..point_count` are dropped.
+    pub fn from_index_list(index: &[i32], point_count: usize) -> Faces {
+        let mut faces = Faces::new();
+        let mut valid = true;
+        for (slot, &i) in index.iter().enumerate() {
+            if i < 0 {
+                if valid {
+                    faces.end_face();
+                } else {
+                    faces.discard_open_face();
+                }
+                valid = true;
+            } else if (i as usize) < point_count {
+                faces.push_corner(i as u32, slot);
+            } else {
+                valid = false;
+            }
+        }
+        if valid {
+            faces.end_face();
+        } else {
+            faces.discard_open_face();
+        }
+        faces
+    }
+
+    fn discard_open_face(&mut self) {
+        let start = *self.starts.last().unwrap_or(&0);
+        self.corner_coords.truncate(start);
+        self.corner_slots.truncate(start);
+    }
+
+    /// Reverses every face (ccw FALSE), so that what follows can assume counterclockwise.
+    pub fn reverse_each(&mut self) {
+        for k in 0..self.face_count() {
+            let r = self.face(k);
+            self.corner_coords[r.clone()].reverse();
+            self.corner_slots[r].reverse();
+        }
+    }
+}
+
+pub struct Inputs<'a> {
+    pub points: &'a [f32],
+    pub faces: Faces,
+    pub normals: Option<Attribute<'a>>,
+    pub generation: NormalGeneration,
+    pub need_normals: bool,
+    pub colors: Option<Attribute<'a>>,
+    pub tex_coords: Option<Attribute<'a>>,
+    /// Texture coordinates needed but not given: the bounding-box default mapping.
+    pub default_tex_coords: bool,
+}
+
+/// Builds the triangle mesh. Vertices are shared by coordinate index when every attribute
+/// is bound by coordinate (the common IndexedTriangleSet case); otherwise one per corner.
+pub fn build(inputs: Inputs) -> LocalMesh {
+    let point = |i: u32| -> [f64; 3] {
+        let p = &inputs.points[i as usize * 3..i as usize * 3 + 3];
+        [f64::from(p[0]), f64::from(p[1]), f64::from(p[2])]
+    };
+    let faces = &inputs.faces;
+    let generate = inputs.need_normals && inputs.normals.is_none();
+    let face_normals: Vec<[f64; 3]> =
+        if generate || faces.starts.windows(2).any(|w| w[1] - w[0] > 3) {
+            (0..faces.face_count())
+                .map(|k| newell(faces.corner_coords[faces.face(k)].iter().map(|&c| point(c))))
+                .collect()
+        } else {
+            Vec::new()
+        };
+    let mut triangles: Vec<[u32; 3]> = Vec::with_capacity(faces.corner_coords.len());
+    for k in 0..faces.face_count() {
+        let range = faces.face(k);
+        if range.len() == 3 {
+            triangles.push([
+                range.start as u32,
+                range.start as u32 + 1,
+                range.start as u32 + 2,
+            ]);
+        } else {
+            let corners: Vec<[f64; 3]> = range
+                .clone()
+                .map(|c| point(faces.corner_coords[c]))
+                .collect();
+            for [a, b, c] in ear_clip(&corners, face_normals[k]) {
+                let s = range.start as u32;
+                triangles.push([s + a, s + b, s + c]);
+            }
+        }
+    }
+
+    let by_coord = |a: &Option<Attribute>| {
+        a.as_ref()
+            .is_none_or(|a| matches!(a.binding, Binding::ByCoord))
+    };
+    let shared = by_coord(&inputs.normals)
+        && by_coord(&inputs.colors)
+        && by_coord(&inputs.tex_coords)
+        && (!generate || inputs.generation == NormalGeneration::Smooth)
+        && !inputs.default_tex_coords;
+    let point_count = inputs.points.len() / 3;
+    if shared {
+        let indices: Vec<u32> = triangles
+            .iter()
+            .flat_map(|t| t.map(|c| faces.corner_coords[c as usize]))
+            .collect();
+        let positions: Vec<[f32; 3]> = inputs
+            .points
+            .chunks_exact(3)
+            .map(|p| [p[0], p[1], p[2]])
+            .collect();
+        let normals = if !inputs.need_normals {
+            None
+        } else if let Some(n) = &inputs.normals {
+            Some(per_coord(n, point_count, [0.0, 0.0, 1.0]))
+        } else {
+            Some(smooth_by_coord(faces, &face_normals, point_count))
+        };
+        return LocalMesh {
+            primitive: Primitive::Triangles,
+            positions,
+            normals,
+            colors: inputs
+                .colors
+                .as_ref()
+                .map(|c| rgba_with_arity(&per_coord_any(c, point_count), c.arity)),
+            tex_coords: inputs.tex_coords.as_ref().map(|t| {
+                per_coord_any(t, point_count)
+                    .chunks_exact(2)
+                    .map(|v| [v[0], v[1]])
+                    .collect()
+            }),
+            indices,
+        };
+    }
+
+    // One vertex per corner.
+    let corner_count = faces.corner_coords.len();
+    let face_of: Vec<usize> = (0..faces.face_count())
+        .flat_map(|k| std::iter::repeat_n(k, faces.face(k).len()))
+        .collect();
+    let positions: Vec<[f32; 3]> = faces
+        .corner_coords
+        .iter()
+        .map(|&c| {
+            let p = &inputs.points[c as usize * 3..c as usize * 3 + 3];
+            [p[0], p[1], p[2]]
+        })
+        .collect();
+    let gather = |a: &Attribute, fallback: &[f32]| -> Vec<f32> {
+        let mut out = Vec::with_capacity(corner_count * a.arity);
+        for corner in 0..corner_count {
+            let element = match a.binding {
+                Binding::ByCoord => Some(faces.corner_coords[corner] as i64),
+                Binding::BySlot(index) => index
+                    .get(faces.corner_slots[corner] as usize)
+                    .map(|&i| i64::from(i)),
+                Binding::ByFace(Some(index)) => index.get(face_of[corner]).map(|&i| i64::from(i)),
+                Binding::ByFace(None) => Some(face_of[corner] as i64),
+            };
+            out.extend_from_slice(value_at(a, element).unwrap_or(fallback));
+        }
+        out
+    };
+    let normals = if !inputs.need_normals {
+        None
+    } else if let Some(n) = &inputs.normals {
+        Some(to_vec3(&gather(n, &[0.0, 0.0, 1.0])))
+    } else {
+        Some(generated_per_corner(
+            faces,
+            &face_of,
+            &face_normals,
+            inputs.generation,
+            point_count,
+        ))
+    };
+    let tex_coords = if let Some(t) = &inputs.tex_coords {
+        Some(
+            gather(t, &[0.0, 0.0])
+                .chunks_exact(2)
+                .map(|v| [v[0], v[1]])
+                .collect(),
+        )
+    } else if inputs.default_tex_coords {
+        Some(bounding_box_mapping(&positions))
+    } else {
+        None
+    };
+    LocalMesh {
+        primitive: Primitive::Triangles,
+        positions,
+        normals,
+        colors: inputs
+            .colors
+            .as_ref()
+            .map(|c| rgba_with_arity(&gather(c, &WHITE[..c.arity]), c.arity)),
+        tex_coords,
+        indices: triangles.iter().flatten().copied().collect(),
+    }
+}
+
+const WHITE: [f32; 4] = [1.0; 4];
+
+fn value_at<'a>(a: &Attribute<'a>, element: Option<i64>) -> Option<&'a [f32]> {
+    let e = usize::try_from(element?).ok()?;
+    a.values.get(e * a.arity..e * a.arity + a.arity)
+}
+
+fn per_coord_any(a: &Attribute, count: usize) -> Vec<f32> {
+    let fallback = &WHITE[..a.arity];
+    let mut out = Vec::with_capacity(count * a.arity);
+    for i in 0..count {
+        out.extend_from_slice(value_at(a, Some(i as i64)).unwrap_or(fallback));
+    }
+    out
+}
+
+fn per_coord(a: &Attribute, count: usize, fallback: [f32; 3]) -> Vec<[f32; 3]> {
+    (0..count)
+        .map(|i| value_at(a, Some(i as i64)).map_or(fallback, |v| [v[0], v[1], v[2]]))
+        .collect()
+}
+
+fn to_vec3(flat: &[f32]) -> Vec<[f32; 3]> {
+    flat.chunks_exact(3).map(|v| [v[0], v[1], v[2]]).collect()
+}
+
+/// RGB (alpha 1) or RGBA values, clamped to [0, 1].
+pub fn rgba_with_arity(flat: &[f32], arity: usize) -> Vec<[f32; 4]> {
+    let u = super::fields::unit;
+    flat.chunks_exact(arity)
+        .map(|c| {
+            [
+                u(c[0]),
+                u(c[1]),
+                u(c[2]),
+                if arity == 4 { u(c[3]) } else { 1.0 },
+            ]
+        })
+        .collect()
+}
+
+/// The polygon's normal by Newell's method (robust for concave and slightly non-planar
+/// polygons), unnormalized: its length is twice the area.
+pub fn newell(points: impl Iterator<Item = [f64; 3]>) -> [f64; 3] {
+    let points: Vec<[f64; 3]> = points.collect();
+    let mut n = [0.0; 3];
+    for (i, p) in points.iter().enumerate() {
+        let q = points[(i + 1) % points.len()];
+        n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+        n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+        n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+    }
+    n
+}
+
+pub fn normalize(v: [f64; 3]) -> [f32; 3] {
+    let length = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    if length > 0.0 && length.is_finite() {
+        [
+            (v[0] / length) as f32,
+            (v[1] / length) as f32,
+            (v[2] / length) as f32,
+        ]
+    } else {
+        [0.0; 3]
+    }
+}
+
+fn add(a: &mut [f64; 3], b: [f64; 3]) {
+    a[0] += b[0];
+    a[1] += b[1];
+    a[2] += b[2];
+}
+
+fn smooth_by_coord(faces: &Faces, face_normals: &[[f64; 3]], count: usize) -> Vec<[f32; 3]> {
+    let mut sums = vec![[0.0f64; 3]; count];
+    for k in 0..faces.face_count() {
+        for c in faces.face(k) {
+            add(&mut sums[faces.corner_coords[c] as usize], face_normals[k]);
+        }
+    }
+    sums.into_iter().map(normalize).collect()
+}
+
+fn generated_per_corner(
+    faces: &Faces,
+    face_of: &[usize],
+    face_normals: &[[f64; 3]],
+    generation: NormalGeneration,
+    point_count: usize,
+) -> Vec<[f32; 3]> {
+    match generation {
+        NormalGeneration::Flat => face_of
+            .iter()
+            .map(|&k| normalize(face_normals[k]))
+            .collect(),
+        NormalGeneration::Smooth => {
+            let smooth = smooth_by_coord(faces, face_normals, point_count);
+            faces
+                .corner_coords
+                .iter()
+                .map(|&c| smooth[c as usize])
+                .collect()
+        }
+        NormalGeneration::Crease(angle) => {
+            // Faces around each coordinate index.
+            let mut around: Vec<Vec<u32>> = vec![Vec::new(); point_count];
+            for (corner, &c) in faces.corner_coords.iter().enumerate() {
+                let list = &mut around[c as usize];
+                let face = face_of[corner] as u32;
+                if list.last() != Some(&face) {
+                    list.push(face);
+                }
+            }
+            let unit: Vec<[f32; 3]> = face_normals.iter().map(|&n| normalize(n)).collect();
+            let cos_limit = angle.min(std::f64::consts::PI).cos();
+            faces
+                .corner_coords
+                .iter()
+                .zip(face_of)
+                .map(|(&c, &k)| {
+                    let own = unit[k];
+                    let mut sum = [0.0f64; 3];
+                    for &other in &around[c as usize] {
+                        let o = unit[other as usize];
+                        let cos = f64::from(own[0] * o[0] + own[1] * o[1] + own[2] * o[2]);
+                        if other as usize == k || cos > cos_limit {
+                            add(&mut sum, face_normals[other as usize]);
+                        }
+                    }
+                    normalize(sum)
+                })
+                .collect()
+        }
+    }
+}
+
+/// The default mapping of 18.2.4 for IndexedFaceSet and the composed sets: S along the
+/// longest side of the bounding box from 0 to 1, T along the second longest, with the
+/// same scale.
+pub fn bounding_box_mapping(positions: &[[f32; 3]]) -> Vec<[f32; 2]> {
+    let mut lo = [f32::INFINITY; 3];
+    let mut hi = [f32::NEG_INFINITY; 3];
+    for p in positions {
+        for k in 0..3 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    let size = [0, 1, 2].map(|k| f64::from(hi[k]) - f64::from(lo[k]));
+    let mut axes = [0usize, 1, 2];
+    // Stable: ties keep X before Y before Z.
+    axes.sort_by(|&a, &b| size[b].total_cmp(&size[a]));
+    let (s_axis, t_axis) = (axes[0], axes[1]);
+    let scale = if size[s_axis] > 0.0 {
+        1.0 / size[s_axis]
+    } else {
+        0.0
+    };
+    positions
+        .iter()
+        .map(|p| {
+            [
+                ((f64::from(p[s_axis]) - f64::from(lo[s_axis])) * scale) as f32,
+                ((f64::from(p[t_axis]) - f64::from(lo[t_axis])) * scale) as f32,
+            ]
+        })
+        .collect()
+}
+
+/// Triangulates a simple polygon (counterclockwise about `normal`) by ear clipping.
+/// Degenerate or self-intersecting input, and very large polygons (quadratic cost),
+/// fall back to a fan.
+pub fn ear_clip(points: &[[f64; 3]], normal: [f64; 3]) -> Vec<[u32; 3]> {
+    let n = points.len();
+    let fan = || (1..n as u32 - 1).map(|i| [0, i, i + 1]).collect::<Vec<_>>();
+    let abs = normal.map(f64::abs);
+    let spread = abs[0] + abs[1] + abs[2];
+    if n > 1024 || spread.is_nan() || spread <= 0.0 {
+        return fan();
+    }
+    // Project onto the plane most facing the normal, keeping the orientation.
+    let drop = if abs[0] >= abs[1] && abs[0] >= abs[2] {
+        0
+    } else if abs[1] >= abs[2] {
+        1
+    } else {
+        2
+    };
+    let (u, v) = match drop {
+        0 => (1, 2),
+        1 => (2, 0),
+        _ => (0, 1),
+    };
+    let flip = normal[drop] < 0.0;
+    let p2: Vec<[f64; 2]> = points
+        .iter()
+        .map(|p| if flip { [p[v], p[u]] } else { [p[u], p[v]] })
+        .collect();
+    let cross = |a: [f64; 2], b: [f64; 2], c: [f64; 2]| {
+        (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+    };
+    let mut remaining: Vec<u32> = (0..n as u32).collect();
+    let mut out = Vec::with_capacity(n - 2);
+    let mut guard = 0;
+    while remaining.len() > 3 {
+        let m = remaining.len();
+        let mut clipped = false;
+        for i in 0..m {
+            let (ia, ib, ic) = (
+                remaining[(i + m - 1) % m],
+                remaining[i],
+                remaining[(i + 1) % m],
+            );
+            let (a, b, c) = (p2[ia as usize], p2[ib as usize], p2[ic as usize]);
+            if cross(a, b, c) <= 0.0 {
+                continue; // reflex or degenerate corner
+            }
+            let contains_other = remaining.iter().any(|&j| {
+                if j == ia || j == ib || j == ic {
+                    return false;
+                }
+                let p = p2[j as usize];
+                cross(a, b, p) >= 0.0 && cross(b, c, p) >= 0.0 && cross(c, a, p) >= 0.0
+            });
+            if !contains_other {
+                out.push([ia, ib, ic]);
+                remaining.remove(i);
+                clipped = true;
+                break;
+            }
+        }
+        guard += 1;
+        if !clipped || guard > n {
+            return fan();
+        }
+    }
+    out.push([remaining[0], remaining[1], remaining[2]]);
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn concave_polygon_is_clipped_inside_its_outline() {
+        // An L shape: a fan from corner 0 would cover the notch.
+        let l = [
+            [0.0, 0.0, 0.0],
+            [2.0, 0.0, 0.0],
+            [2.0, 1.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [1.0, 2.0, 0.0],
+            [0.0, 2.0, 0.0],
+        ];
+        let triangles = ear_clip(&l, newell(l.iter().copied()));
+        assert_eq!(triangles.len(), 4);
+        let area: f64 = triangles
+            .iter()
+            .map(|t| {
+                let [a, b, c] = t.map(|i| l[i as usize]);
+                ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / 2.0
+            })
+            .sum();
+        assert!((area - 3.0).abs() < 1e-12, "area {area}");
+    }
+
+    #[test]
+    fn degenerate_polygons_do_not_panic() {
+        let line = [[0.0; 3], [1.0, 0.0, 0.0], [2.0, 0.0, 0.0], [3.0, 0.0, 0.0]];
+        assert_eq!(ear_clip(&line, newell(line.iter().copied())).len(), 2);
+        let nan = [[f64::NAN; 3]; 4];
+        assert_eq!(ear_clip(&nan, newell(nan.iter().copied())).len(), 2);
+        assert_eq!(normalize([0.0; 3]), [0.0; 3]);
+        assert_eq!(normalize([f64::INFINITY, 0.0, 0.0]), [0.0; 3]);
+    }
+
+    #[test]
+    fn faces_with_bad_indices_are_dropped() {
+        let faces = Faces::from_index_list(&[0, 1, 2, -1, 0, 9, 2, -1, 0, 1, -1, 2, 1, 0], 3);
+        assert_eq!(faces.face_count(), 2);
+        assert_eq!(faces.corner_coords, vec![0, 1, 2, 2, 1, 0]);
+        assert_eq!(faces.corner_slots, vec![0, 1, 2, 11, 12, 13]);
+    }
+}

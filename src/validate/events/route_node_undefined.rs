@@ -1,0 +1,98 @@
+//! ROUTE_NODE_UNDEFINED: a ROUTE end names no DEF in the ROUTE's name scope.
+
+use super::endpoint::route_node;
+use crate::model::{Document, Named, Route};
+use crate::report::Diagnostic;
+use crate::validate::{suggest, Ctx};
+
+crate::declare_rule! {
+    /// ## What it does
+    /// Reports a ROUTE whose `fromNode` or `toNode` is missing or names no node DEF'd in
+    /// the ROUTE's own name scope: the Scene for ROUTEs in the Scene, the ProtoBody for
+    /// ROUTEs inside a ProtoDeclare (a ROUTE cannot reach across that boundary). The DEF
+    /// may come before or after the ROUTE. Names brought in by an IMPORT statement are
+    /// not reported: the inlined scene is not read.
+    ///
+    /// ## Why it matters
+    /// Browsers drop a ROUTE whose node they cannot find, so the animation or interaction
+    /// it was meant to wire up silently does nothing.
+    ///
+    /// ## Example
+    /// ```xml
+    /// <TimeSensor DEF='Clock' loop='true'/>
+    /// <ROUTE fromNode='Clok' fromField='fraction_changed' toNode='Mover' toField='set_fraction'/>
+    /// ```
+    ///
+    /// ## Clause
+    /// 19775-1 4.4.8.2 Routes, 4.4.7 Run-time name scope.
+    pub static ROUTE_NODE_UNDEFINED = {
+        severity: Error,
+        level: Standard,
+        clause: "4.4.8.2",
+        versions: "all",
+        check: Some(check),
+    }
+}
+
+fn check(ctx: &mut Ctx) {
+    let doc = ctx.doc;
+    for route in &doc.routes {
+        for (attribute, name) in [("fromNode", &route.from_node), ("toNode", &route.to_node)] {
+            if route_node(doc, route.scope, &name.text).is_none() && !imported(ctx, &name.text) {
+                ctx.report(diagnostic(doc, route, attribute, name));
+            }
+        }
+    }
+}
+
+fn diagnostic(doc: &Document, route: &Route, attribute: &str, name: &Named) -> Diagnostic {
+    if name.text.is_empty() {
+        return Diagnostic::new(
+            &ROUTE_NODE_UNDEFINED,
+            name.span,
+            format!("ROUTE has no `{attribute}`"),
+        );
+    }
+    let in_scope = doc
+        .defs
+        .keys()
+        .filter(|(scope, _)| *scope == route.scope)
+        .map(|(_, n)| n.as_str());
+    let in_other_scope = doc
+        .defs
+        .keys()
+        .any(|(scope, n)| *scope != route.scope && *n == name.text);
+    let help = if in_other_scope {
+        Some("a node of that name is DEF'd in another name scope (Scene or ProtoBody), which a ROUTE cannot reach".to_string())
+    } else {
+        let mut names: Vec<&str> = in_scope.collect();
+        names.sort_unstable();
+        suggest::did_you_mean(&name.text, names).map(|c| format!("did you mean `{c}`?"))
+    };
+    Diagnostic::new(
+        &ROUTE_NODE_UNDEFINED,
+        name.span,
+        format!(
+            "ROUTE {attribute} `{}` names no DEF in its scope",
+            name.text
+        ),
+    )
+    .value(name.text.clone())
+    .help_opt(help)
+}
+
+/// Whether an IMPORT statement may bring the name in: its text quotes the name (as its
+/// `AS` or `importedDEF`). The statements are kept as spans only.
+fn imported(ctx: &Ctx, name: &str) -> bool {
+    if name.is_empty() {
+        return false;
+    }
+    ctx.doc.imports_exports.iter().any(|span| {
+        let text = ctx.source.get(span.range()).unwrap_or_default();
+        let text = String::from_utf8_lossy(text);
+        text.contains("IMPORT")
+            && ["'", "\""]
+                .iter()
+                .any(|q| text.contains(&format!("{q}{name}{q}")))
+    })
+}

@@ -1,0 +1,64 @@
+//! LIGHT_DIRECTION_ZERO: a DirectionalLight or SpotLight pointing nowhere.
+
+use super::is_connected;
+use crate::report::Diagnostic;
+use crate::validate::Ctx;
+
+crate::declare_rule! {
+    /// ## What it does
+    /// Reports a DirectionalLight or SpotLight whose `direction` is `0 0 0` (either zero
+    /// counts, -0 included).
+    ///
+    /// ## Why it matters
+    /// The direction is the light's axis (17.4.1, 17.4.4); the lighting equations normalize
+    /// it (17.2.2), which a zero vector cannot be. Browsers then light nothing, light
+    /// everything, or produce NaN colours.
+    ///
+    /// ## Example
+    /// ```xml
+    /// <DirectionalLight direction='0 0 0'/>
+    /// ```
+    ///
+    /// ## Clause
+    /// 19775-1 17.4.1 DirectionalLight, 17.4.4 SpotLight, 17.2.2 Lighting model.
+    pub static LIGHT_DIRECTION_ZERO = {
+        severity: Error,
+        level: Standard,
+        clause: "17.4.1",
+        versions: "all",
+        check: Some(check),
+    }
+}
+
+fn check(ctx: &mut Ctx) {
+    let doc = ctx.doc;
+    let mut found = Vec::new();
+    for (id, node) in doc.iter() {
+        if !matches!(node.type_name(), "DirectionalLight" | "SpotLight")
+            || is_connected(node, "direction")
+        {
+            continue;
+        }
+        let Some(entry) = node.entry("direction") else {
+            continue;
+        };
+        if entry
+            .value
+            .as_floats()
+            .is_some_and(|v| v.len() == 3 && v.iter().all(|c| *c == 0.0))
+        {
+            found.push((id, entry.span, node.type_name().to_string()));
+        }
+    }
+    for (id, span, type_name) in found {
+        ctx.report(
+            Diagnostic::new(
+                &LIGHT_DIRECTION_ZERO,
+                span,
+                format!("{type_name}.direction is 0 0 0: the light has no direction"),
+            )
+            .node(id)
+            .help("give the direction the light shines in, e.g. `0 0 -1` (the default)"),
+        );
+    }
+}

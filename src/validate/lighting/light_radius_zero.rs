@@ -1,0 +1,60 @@
+//! LIGHT_RADIUS_ZERO: a PointLight or SpotLight with radius 0.
+
+use super::{is_connected, is_positional_light};
+use crate::report::Diagnostic;
+use crate::validate::Ctx;
+
+crate::declare_rule! {
+    /// ## What it does
+    /// Reports a PointLight or SpotLight whose `radius` is 0 (or -0).
+    ///
+    /// ## Why it matters
+    /// 17.4.3, 17.4.4: the light "illuminates geometry within radius length base units of
+    /// its location" and "does not emit light outside this radius". With radius 0 it lights
+    /// nothing; usually `radius` was confused with the size of a lamp.
+    ///
+    /// ## Example
+    /// ```xml
+    /// <PointLight location='0 2 0' radius='0'/>
+    /// ```
+    ///
+    /// ## Clause
+    /// 19775-1 17.4.3 PointLight, 17.4.4 SpotLight.
+    pub static LIGHT_RADIUS_ZERO = {
+        severity: Warning,
+        level: Standard,
+        clause: "17.4.3",
+        versions: "all",
+        check: Some(check),
+    }
+}
+
+fn check(ctx: &mut Ctx) {
+    let doc = ctx.doc;
+    let mut found = Vec::new();
+    for (id, node) in doc.iter() {
+        if !is_positional_light(node) || is_connected(node, "radius") {
+            continue;
+        }
+        let Some(entry) = node.entry("radius") else {
+            continue;
+        };
+        if entry
+            .value
+            .as_floats()
+            .is_some_and(|v| v.first() == Some(&0.0))
+        {
+            found.push((id, entry.span, node.type_name().to_string()));
+        }
+    }
+    for (id, span, type_name) in found {
+        ctx.report(
+            Diagnostic::new(
+                &LIGHT_RADIUS_ZERO,
+                span,
+                format!("{type_name}.radius is 0: the light reaches no geometry"),
+            )
+            .node(id),
+        );
+    }
+}

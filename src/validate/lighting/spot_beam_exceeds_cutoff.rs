@@ -1,0 +1,72 @@
+//! SPOT_BEAM_EXCEEDS_CUTOFF: a SpotLight whose beamWidth is wider than its cutOffAngle.
+
+use super::is_connected;
+use crate::report::Diagnostic;
+use crate::validate::Ctx;
+
+crate::declare_rule! {
+    /// ## What it does
+    /// Reports a SpotLight whose effective `beamWidth` is greater than its effective
+    /// `cutOffAngle` (defaults π/4 and π/2), compared as the f32 values the fields hold.
+    /// Only SpotLights that set at least one of the two fields are checked.
+    ///
+    /// ## Why it matters
+    /// 17.4.4: "If the beamWidth is greater than the cutOffAngle, beamWidth is defined to be
+    /// equal to the cutOffAngle and the light source emits full intensity within the entire
+    /// solid angle defined by cutOffAngle." The soft edge the author asked for is not drawn.
+    ///
+    /// ## Example
+    /// ```xml
+    /// <SpotLight beamWidth='1.2' cutOffAngle='0.6'/>
+    /// ```
+    ///
+    /// ## Clause
+    /// 19775-1 17.4.4 SpotLight.
+    pub static SPOT_BEAM_EXCEEDS_CUTOFF = {
+        severity: Warning,
+        level: Standard,
+        clause: "17.4.4",
+        versions: "all",
+        check: Some(check),
+    }
+}
+
+fn check(ctx: &mut Ctx) {
+    let doc = ctx.doc;
+    // UNIT statements rescale angles and lengths (not modelled here): judge nothing.
+    if doc.head.units > 0 {
+        return;
+    }
+    for id in doc.nodes_of_type("SpotLight") {
+        let node = doc.node(id);
+        let (beam_entry, cutoff_entry) = (node.entry("beamWidth"), node.entry("cutOffAngle"));
+        if (beam_entry.is_none() && cutoff_entry.is_none())
+            || is_connected(node, "beamWidth")
+            || is_connected(node, "cutOffAngle")
+        {
+            continue;
+        }
+        let (Some(beam), Some(cutoff)) =
+            (doc.f32_of(id, "beamWidth"), doc.f32_of(id, "cutOffAngle"))
+        else {
+            continue;
+        };
+        if beam > cutoff {
+            let span = beam_entry
+                .or(cutoff_entry)
+                .map_or(node.name_span, |e| e.span);
+            let mut diagnostic = Diagnostic::new(
+                &SPOT_BEAM_EXCEEDS_CUTOFF,
+                span,
+                format!(
+                    "SpotLight.beamWidth {beam} is greater than cutOffAngle {cutoff}: it is treated as equal, so the light has no soft edge"
+                ),
+            )
+            .node(id);
+            if let (Some(_), Some(cutoff_entry)) = (beam_entry, cutoff_entry) {
+                diagnostic = diagnostic.related(cutoff_entry.span, "cutOffAngle");
+            }
+            ctx.report(diagnostic);
+        }
+    }
+}

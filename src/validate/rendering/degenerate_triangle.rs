@@ -1,0 +1,215 @@
+//! DEGENERATE_TRIANGLE: zero-area faces, counted per geometry (deep level).
+
+use std::ops::Range;
+
+use super::geometry::{
+    corner_point, face_is_degenerate, is_degenerate, polygonal, Checked, Points, ScalarSpans,
+};
+use crate::model::faces::{counted_runs, runs, PolygonKind};
+use crate::model::{Span, Value};
+use crate::report::Diagnostic;
+use crate::validate::Ctx;
+
+crate::declare_rule! {
+    /// ## What it does
+    /// Counts the zero-area faces of each polygonal geometry and reports them in one
+    /// diagnostic per geometry, naming the first:
+    /// - IndexedFaceSet: a face with fewer than three vertices or with all its vertices
+    ///   collinear or coincident ("at least three non-coincident vertices", 13.3.6);
+    /// - IndexedTriangleSet, TriangleSet: a triangle with repeated or collinear corners;
+    ///   IndexedQuadSet, QuadSet, ElevationGrid cells: a quad with all corners collinear;
+    /// - strips and fans (indexed or counted): a strip or fan without three non-coincident,
+    ///   non-collinear vertices, that is all of whose triangles are zero-area ("Each strip
+    ///   shall have at least three non-coincident vertices", 11.4.6, 11.4.8). Single
+    ///   zero-area triangles inside a strip are the usual way of joining strips and are
+    ///   not counted.
+    ///
+    /// The test is relative, in f64: a triangle is zero-area when the sine of the angle
+    /// between its edges from the first corner is below 1e-6 (each edge scaled by its
+    /// largest component first), so huge finite coordinates such as ±3e38 give no false
+    /// positives and tiny ones no false negatives. Faces with an unresolvable corner
+    /// (negative or out-of-range index, non-finite coordinate) are left to the rules
+    /// that report those. Geospatial coordinates are not judged.
+    ///
+    /// ## Why it matters
+    /// A zero-area face draws nothing, has no defined normal (generated normals around it
+    /// come out wrong or NaN) and usually means welded or duplicated vertices.
+    ///
+    /// ## Example
+    /// ```xml
+    /// <TriangleSet>
+    ///   <Coordinate point='0 0 0 1 0 0 0 1 0  0 0 0 1 1 1 2 2 2'/>
+    /// </TriangleSet>
+    /// ```
+    ///
+    /// ## Clause
+    /// 19775-1 11.4.6, 11.4.8 (strips and fans), 13.3.6 (IndexedFaceSet faces).
+    pub static DEGENERATE_TRIANGLE = {
+        severity: Info,
+        level: Deep,
+        clause: "11.4",
+        versions: "all",
+        check: Some(check),
+    }
+}
+
+/// The first zero-area face (or strip) found, and how many there are of how many.
+struct Count {
+    first: Option<(usize, usize)>,
+    degenerate: usize,
+    total: usize,
+}
+
+impl Count {
+    fn add(&mut self, number: usize, position: usize, degenerate: bool) {
+        self.total += 1;
+        if degenerate {
+            self.degenerate += 1;
+            self.first.get_or_insert((number, position));
+        }
+    }
+}
+
+fn check(ctx: &mut Ctx) {
+    let doc = ctx.doc;
+    for geometry in polygonal(doc) {
+        let Some(points) = Points::of(doc, &geometry) else {
+            continue;
+        };
+        let kind = geometry.faces.kind;
+        let mut count = Count {
+            first: None,
+            degenerate: 0,
+            total: 0,
+        };
+        let (noun, count_runs) = match kind {
+            PolygonKind::IndexedTriangleStripSet | PolygonKind::TriangleStripSet => {
+                ("strips", true)
+            }
+            PolygonKind::IndexedTriangleFanSet | PolygonKind::TriangleFanSet => ("fans", true),
+            PolygonKind::IndexedFaceSet => ("faces", false),
+            PolygonKind::IndexedTriangleSet | PolygonKind::TriangleSet => ("triangles", false),
+            _ => ("quads", false),
+        };
+        if count_runs {
+            let fan = noun == "fans";
+            for (number, run) in strip_runs(&geometry).enumerate() {
+                if let Some(degenerate) = run_is_degenerate(&geometry, &points, run.clone(), fan) {
+                    count.add(number, run.start, degenerate);
+                }
+            }
+        } else {
+            for face in geometry.faces.faces() {
+                if let Some(degenerate) = face_is_degenerate(&geometry, &points, &face) {
+                    count.add(face.number, face.corner(0), degenerate);
+                }
+            }
+        }
+        let Some((number, position)) = count.first else {
+            continue;
+        };
+        let (place, span) = locate(ctx, &geometry, position);
+        let what = if count_runs {
+            format!(
+                "{} of its {} {noun} {} no three non-collinear vertices",
+                count.degenerate,
+                count.total,
+                if count.degenerate == 1 { "has" } else { "have" }
+            )
+        } else {
+            format!(
+                "{} of its {} {noun} {} zero area",
+                count.degenerate,
+                count.total,
+                if count.degenerate == 1 { "has" } else { "have" }
+            )
+        };
+        let singular = noun.trim_end_matches('s');
+        let message = format!(
+            "{}: {what} (first: {singular} {number}, at {place})",
+            kind.name()
+        );
+        let mut diagnostic = Diagnostic::new(&DEGENERATE_TRIANGLE, span, message)
+            .node(geometry.id)
+            .index(position);
+        diagnostic.count = count.degenerate;
+        ctx.report(diagnostic);
+    }
+}
+
+/// The strips or fans of a strip or fan set, as stream positions.
+fn strip_runs<'a>(geometry: &'a Checked) -> Box<dyn Iterator<Item = Range<usize>> + 'a> {
+    match geometry.faces.kind.index_field() {
+        Some(field) => Box::new(runs(
+            geometry
+                .node
+                .value(field)
+                .and_then(Value::as_int32s)
+                .unwrap_or(&[]),
+        )),
+        None => {
+            let field = geometry.faces.kind.count_field().unwrap_or_default();
+            let counts = geometry
+                .node
+                .value(field)
+                .and_then(Value::as_int32s)
+                .unwrap_or(&[]);
+            Box::new(counted_runs(counts, geometry.faces.stream_len()))
+        }
+    }
+}
+
+/// Whether every triangle of a strip or fan is zero-area; None when too short to be
+/// judged (other rules report that) or a vertex does not resolve.
+fn run_is_degenerate(
+    geometry: &Checked,
+    points: &Points,
+    run: Range<usize>,
+    fan: bool,
+) -> Option<bool> {
+    if run.len() < 3 {
+        return None;
+    }
+    let point = |p| corner_point(geometry, points, p);
+    let mut degenerate = true;
+    for k in 0..run.len() - 2 {
+        let s = run.start;
+        let a = if fan { s } else { s + k };
+        degenerate &= is_degenerate(point(a)?, point(s + k + 1)?, point(s + k + 2)?)?;
+    }
+    Some(degenerate)
+}
+
+/// Where a stream position stands in the document: the index field's entry, the
+/// coordinates of a non-indexed node, or an ElevationGrid height.
+fn locate(ctx: &Ctx, geometry: &Checked, position: usize) -> (String, Span) {
+    let kind = geometry.faces.kind;
+    let node = geometry.node;
+    if let Some(field) = kind.index_field() {
+        let name = format!("{}[{position}]", field);
+        return match node.entry(field) {
+            Some(entry) => (name, ScalarSpans::new(ctx.source, entry).span(position)),
+            None => (name, node.name_span),
+        };
+    }
+    if kind == PolygonKind::ElevationGrid {
+        let name = format!("height[{position}]");
+        return match node.entry("height") {
+            Some(entry) => (name, ScalarSpans::new(ctx.source, entry).span(position)),
+            None => (name, node.name_span),
+        };
+    }
+    match &geometry.coord {
+        Some(coord) => {
+            let name = format!("{}.point[{position}]", coord.type_name);
+            match coord.entry {
+                Some(entry) => (
+                    name,
+                    ScalarSpans::new(ctx.source, entry).span_of(3 * position, 3 * position + 2),
+                ),
+                None => (name, coord.child_span),
+            }
+        }
+        None => (format!("vertex {position}"), node.name_span),
+    }
+}

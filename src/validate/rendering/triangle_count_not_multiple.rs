@@ -1,0 +1,85 @@
+//! TRIANGLE_COUNT_NOT_MULTIPLE: an index or coordinate count that leaves a partial
+//! triangle (or quad) at the end.
+
+use super::geometry::{coord_list, shape_is_known};
+use crate::report::Diagnostic;
+use crate::validate::Ctx;
+
+crate::declare_rule! {
+    /// ## What it does
+    /// Reports an IndexedTriangleSet whose `index` length, or a TriangleSet whose number
+    /// of coordinates, is not a multiple of 3, and likewise an IndexedQuadSet `index` or a
+    /// QuadSet coordinate count that is not a multiple of 4 (the CADGeometry quad sets
+    /// say the same of quads). The message says how many entries are left over.
+    ///
+    /// ## Why it matters
+    /// "If the index field does not contain a multiple of three coordinate values, the
+    /// remaining vertices shall be ignored": the leftover entries are silently dropped,
+    /// which usually means an index or a coordinate was lost on export.
+    ///
+    /// ## Example
+    /// ```xml
+    /// <IndexedTriangleSet index='0 1 2 0 2'>
+    ///   <Coordinate point='0 0 0 1 0 0 1 1 0'/>
+    /// </IndexedTriangleSet>
+    /// ```
+    ///
+    /// ## Clause
+    /// 19775-1 11.4.7 IndexedTriangleSet, 11.4.13 TriangleSet; 32.4.5 IndexedQuadSet,
+    /// 32.4.6 QuadSet.
+    pub static TRIANGLE_COUNT_NOT_MULTIPLE = {
+        severity: Warning,
+        level: Standard,
+        clause: "11.4.7",
+        versions: "all",
+        check: Some(check),
+    }
+}
+
+fn check(ctx: &mut Ctx) {
+    let doc = ctx.doc;
+    for (id, node) in doc.iter() {
+        let Some(def) = node.def() else { continue };
+        let (size, shape) = match def.name {
+            "IndexedTriangleSet" | "TriangleSet" => (3, "triangle"),
+            "IndexedQuadSet" | "QuadSet" => (4, "quad"),
+            _ => continue,
+        };
+        if !shape_is_known(node) {
+            continue;
+        }
+        let (count, what, span) = if def.name.starts_with("Indexed") {
+            let Some(entry) = node.entry("index") else {
+                continue;
+            };
+            (
+                entry.value.len(),
+                format!("{}.index has {} entries", def.name, entry.value.len()),
+                entry.span,
+            )
+        } else {
+            let Some(coord) = coord_list(doc, id) else {
+                continue;
+            };
+            let span = coord.entry.map_or(coord.child_span, |e| e.span);
+            (
+                coord.len,
+                format!(
+                    "{} has {} coordinates in {}",
+                    def.name, coord.len, coord.type_name
+                ),
+                span,
+            )
+        };
+        let rest = count % size;
+        if rest == 0 {
+            continue;
+        }
+        let message = format!(
+            "{what}, not a multiple of {size}: the last {rest} {} no {shape} and {} ignored",
+            if rest == 1 { "makes" } else { "make" },
+            if rest == 1 { "is" } else { "are" },
+        );
+        ctx.report(Diagnostic::new(&TRIANGLE_COUNT_NOT_MULTIPLE, span, message).node(id));
+    }
+}

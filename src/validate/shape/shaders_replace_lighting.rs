@@ -1,0 +1,64 @@
+//! SHADERS_REPLACE_LIGHTING: an Appearance with shaders.
+
+use crate::report::Diagnostic;
+use crate::validate::Ctx;
+
+crate::declare_rule! {
+    /// ## What it does
+    /// Reports an Appearance whose `shaders` field is not empty.
+    ///
+    /// ## Why it matters
+    /// 12.4.2: "If the field is not empty, one shader node is selected and the fixed
+    /// rendering requirements defined by this specification are ignored": material,
+    /// texture and lighting rules no longer say what is drawn, and x3dcheck does not check
+    /// shader source, so the Shape's look is not verified.
+    ///
+    /// ## Example
+    /// ```xml
+    /// <Appearance>
+    ///   <ComposedShader language='GLSL'>…</ComposedShader>
+    /// </Appearance>
+    /// ```
+    ///
+    /// ## Clause
+    /// 19775-1 12.4.2 Appearance; 31 Programmable shaders component.
+    pub static SHADERS_REPLACE_LIGHTING = {
+        severity: Info,
+        level: Standard,
+        clause: "12.4.2",
+        versions: "all",
+        check: Some(check),
+    }
+}
+
+fn check(ctx: &mut Ctx) {
+    let doc = ctx.doc;
+    let mut found = Vec::new();
+    for id in doc.nodes_of_type("Appearance") {
+        let node = doc.node(id);
+        let shaders = node.children("shaders");
+        if let (Some(first), Some(entry)) = (shaders.first(), node.entry("shaders")) {
+            let span = if entry.span.end > entry.span.start {
+                entry.span
+            } else {
+                first.span
+            };
+            found.push((id, span, shaders.len()));
+        }
+    }
+    for (id, span, count) in found {
+        let nodes = if count == 1 {
+            "a shader".to_string()
+        } else {
+            format!("{count} shaders")
+        };
+        ctx.report(
+            Diagnostic::new(
+                &SHADERS_REPLACE_LIGHTING,
+                span,
+                format!("Appearance has {nodes}: fixed lighting and texturing are replaced, and shaders are not checked"),
+            )
+            .node(id),
+        );
+    }
+}

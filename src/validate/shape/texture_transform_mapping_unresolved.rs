@@ -1,0 +1,107 @@
+//! TEXTURE_TRANSFORM_MAPPING_UNRESOLVED: a material's texture mapping names no texture transform.
+
+use super::analysis::{appearances, connected, one_sided_materials, texture_fields};
+use crate::model::texture_mapping::{texture_transforms, Resolution};
+use crate::report::Diagnostic;
+use crate::schema::Version;
+use crate::validate::{Ctx, Severity};
+
+crate::declare_rule! {
+    /// ## What it does
+    /// Reports a non-empty `xxxTextureMapping` of an Appearance's material or backMaterial,
+    /// whose `xxxTexture` is not NULL, that names the `mapping` of no node on the
+    /// Appearance's list of texture transformations (12.2.4.2: `textureTransform`'s node, or
+    /// the children of its MultiTextureTransform). Checked only when that list is not
+    /// empty: without transformations the rule of 12.2.4.2 has nothing to refer to, and a
+    /// mapping that exists only for texture coordinates is normal. The list depends only
+    /// on the Appearance, so this is judged once per Appearance and material.
+    ///
+    /// An error in X3D 4.0 ("must refer to"), a warning in 4.1 ("should", with browsers
+    /// falling back to the first transformation).
+    ///
+    /// ## Why it matters
+    /// The texture gets another transformation than the author meant, or none.
+    ///
+    /// ## Example
+    /// ```xml
+    /// <Appearance>
+    ///   <Material diffuseTextureMapping='uv1'>
+    ///     <ImageTexture containerField='diffuseTexture' url='"a.png"'/>
+    ///   </Material>
+    ///   <TextureTransform mapping='uv0' scale='2 2'/>
+    /// </Appearance>
+    /// ```
+    ///
+    /// ## Clause
+    /// 19775-1 12.2.4.2 Texture coordinates transformation.
+    pub static TEXTURE_TRANSFORM_MAPPING_UNRESOLVED = {
+        severity: Error,
+        level: Standard,
+        clause: "12.2.4.2",
+        versions: "4.x",
+        check: Some(check),
+    }
+}
+
+fn check(ctx: &mut Ctx) {
+    if !ctx.version.is_4x() {
+        return;
+    }
+    let severity = if ctx.version >= Version::V4_1 {
+        Severity::Warning
+    } else {
+        Severity::Error
+    };
+    let doc = ctx.doc;
+    let mut found = Vec::new();
+    for (appearance, node) in appearances(doc) {
+        let list = texture_transforms(doc, Some(appearance));
+        if list.opaque || list.items.is_empty() {
+            continue;
+        }
+        let transform = node.children("textureTransform")[0];
+        for material in one_sided_materials(doc, appearance) {
+            let m = doc.node(material.child.node);
+            for (texture, mapping) in texture_fields(material.def) {
+                if m.child(texture).is_none() || connected(m, texture) || connected(m, mapping) {
+                    continue;
+                }
+                let (Some(name), Some(entry)) = (
+                    doc.string_of(material.child.node, mapping),
+                    m.entry(mapping),
+                ) else {
+                    continue;
+                };
+                if matches!(list.resolve(doc, &name), Resolution::Unresolved { .. }) {
+                    found.push((
+                        material.child.node,
+                        material.field,
+                        mapping,
+                        name,
+                        entry.span,
+                        transform.span,
+                    ));
+                }
+            }
+        }
+    }
+    for (material, field, mapping, name, span, transform) in found {
+        ctx.report(
+            Diagnostic::new(
+                &TEXTURE_TRANSFORM_MAPPING_UNRESOLVED,
+                span,
+                format!(
+                    "{field}.{mapping} {name:?} names no texture transformation of its Appearance"
+                ),
+            )
+            .node(material)
+            .severity(severity)
+            .value(name)
+            .related(transform, "the Appearance's texture transformations")
+            .help(
+                "give a texture transformation that mapping, or fix the name; \
+                 meanwhile browsers use the first transformation (the 4.1 fallback)",
+            ),
+        );
+    }
+}

@@ -1,0 +1,67 @@
+//! IMAGE_UNREADABLE: a texture file that exists but does not decode.
+
+use super::files::{url_fields, Content, Probe, Prober, Resolution, Resolver};
+use crate::report::Diagnostic;
+use crate::validate::Ctx;
+
+crate::declare_rule! {
+    /// ## What it does
+    /// Decodes every local image file that an ImageTexture or Background url resolves to
+    /// (see URL_UNRESOLVED for how urls resolve and which files may be read) and reports
+    /// the ones that do not decode: truncated or corrupt data, a file that is no image at
+    /// all, or an image larger than 16384 pixels on a side or 1 GiB decoded (refused
+    /// before decoding, so a decompression bomb costs nothing). Each file is decoded once
+    /// per document, however many nodes use it. Formats x3dcheck does not decode (DDS,
+    /// KTX, TGA, …) are IMAGE_FORMAT_UNSUPPORTED's.
+    ///
+    /// ## Why it matters
+    /// The browser finds the file but cannot show it: the shape is drawn untextured, or
+    /// the browser stops with an error. A broken export or a text file saved as `.png` is
+    /// a common cause.
+    ///
+    /// ## Example
+    /// ```xml
+    /// <ImageTexture url='"truncated.png"'/>
+    /// ```
+    ///
+    /// ## Clause
+    /// 19775-1 18.2.1 Texture map image formats; 18.4.1 ImageTexture.
+    pub static IMAGE_UNREADABLE = {
+        severity: Error,
+        level: Deep,
+        clause: "18.4.1",
+        versions: "all",
+        check: Some(check),
+    }
+}
+
+fn check(ctx: &mut Ctx) {
+    let resolver = Resolver::new(ctx.base, ctx.config.root.as_deref());
+    let mut prober = Prober::default();
+    let mut found = Vec::new();
+    for field in url_fields(ctx.doc) {
+        if field.content != Content::Image {
+            continue;
+        }
+        for url in field.entry.value.as_strings().unwrap_or_default() {
+            let Resolution::Local(path) = resolver.resolve(url) else {
+                continue;
+            };
+            if let Probe::Broken(why) = prober.decode(&path) {
+                let type_name = ctx.doc.node(field.node).type_name();
+                found.push(
+                    Diagnostic::new(
+                        &IMAGE_UNREADABLE,
+                        field.entry.span,
+                        format!("{type_name}.{}: \"{url}\" {why}", field.entry.name()),
+                    )
+                    .node(field.node)
+                    .value(url.clone()),
+                );
+            }
+        }
+    }
+    for diagnostic in found {
+        ctx.report(diagnostic);
+    }
+}

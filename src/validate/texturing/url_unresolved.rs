@@ -1,0 +1,110 @@
+//! URL_UNRESOLVED: no entry of a url field names a readable local file.
+
+use super::files::{url_fields, Resolution, Resolver};
+use crate::report::Diagnostic;
+use crate::validate::document::validation_incomplete::VALIDATION_INCOMPLETE;
+use crate::validate::Ctx;
+
+crate::declare_rule! {
+    /// ## What it does
+    /// Reports a url field none of whose entries resolves to a readable local file,
+    /// relative to the document's directory. Checked fields: `url` of every node that
+    /// loads it with the scene (ImageTexture, MovieTexture, AudioClip, Inline, Script,
+    /// shader parts and programs, 3D and cube-map textures, FontLibrary, …; not Anchor,
+    /// whose links are followed on demand, nor GeoMetadata) and Background's six image
+    /// urls.
+    ///
+    /// - `%XX` escapes are decoded, `file:` URLs are local paths, a `#fragment` is
+    ///   dropped, and a Windows backslash is also tried as `/`.
+    /// - Network URLs (`http:`, `https:`, `ftp:`, `urn:`, …) are never fetched: a field
+    ///   with no local file but a network entry gets VALIDATION_INCOMPLETE instead, as does
+    ///   a relative URL of a document read from standard input.
+    /// - `data:` URLs and script code (`ecmascript:`, `javascript:`, `vrmlscript:`, or a
+    ///   CDATA section, which the XML encoding adds as a url entry) need no file.
+    /// - Files are read only inside the allowed tree: the directory given as the checking
+    ///   root (the tree the user named on the command line), else the document's own
+    ///   directory. `..` and symlinks are resolved first; an entry that leaves the tree is
+    ///   not read and gets VALIDATION_INCOMPLETE.
+    /// - When the only match differs in letter case, the message says so: it loads on
+    ///   Windows and macOS but not from a case-sensitive file system or web server.
+    ///
+    /// ## Why it matters
+    /// 9.2.1 (URLs): a browser tries the entries in order and uses the first it can load;
+    /// when none loads, the texture, sound, inlined scene or script is missing.
+    ///
+    /// ## Example
+    /// ```xml
+    /// <ImageTexture url='"textures/missing.png"'/>
+    /// ```
+    ///
+    /// ## Clause
+    /// 19775-1 9.2.1 URLs, URNs and URIs; 18.4.1 ImageTexture.
+    pub static URL_UNRESOLVED = {
+        severity: Warning,
+        level: Deep,
+        clause: "9.2.1",
+        versions: "all",
+        check: Some(check),
+    }
+}
+
+fn check(ctx: &mut Ctx) {
+    let resolver = Resolver::new(ctx.base, ctx.config.root.as_deref());
+    let mut found = Vec::new();
+    for field in url_fields(ctx.doc) {
+        let urls = field.entry.value.as_strings().unwrap_or_default();
+        // Script and shader code in the element's CDATA is one more url entry (XML
+        // encoding): the node has its content whatever the files.
+        if urls.is_empty() || ctx.doc.node(field.node).source_code.is_some() {
+            continue;
+        }
+        let resolutions: Vec<Resolution> = urls.iter().map(|u| resolver.resolve(u)).collect();
+        if resolutions
+            .iter()
+            .any(|r| matches!(r, Resolution::Local(_) | Resolution::Inline))
+        {
+            continue;
+        }
+        let type_name = ctx.doc.node(field.node).type_name();
+        let what = format!("{type_name}.{}", field.entry.name());
+        let unchecked = urls.iter().zip(&resolutions).find_map(|(url, r)| match r {
+            Resolution::Network(_) => Some(format!("{what}: network URL \"{url}\" is not fetched")),
+            Resolution::Outside(_) => Some(format!(
+                "{what}: \"{url}\" is outside the directory tree being checked and is not read"
+            )),
+            Resolution::NoBase => Some(format!(
+                "{what}: relative URLs of a document read from standard input are not resolved"
+            )),
+            _ => None,
+        });
+        let diagnostic = match unchecked {
+            Some(message) => Diagnostic::new(&VALIDATION_INCOMPLETE, field.entry.span, message),
+            None => {
+                let case_hint = resolutions.iter().find_map(|r| match r {
+                    Resolution::Missing {
+                        case_differs: Some(name),
+                        ..
+                    } => Some(name.clone()),
+                    _ => None,
+                });
+                let listed: Vec<String> = urls.iter().map(|u| format!("\"{u}\"")).collect();
+                let message = match &case_hint {
+                    Some(name) => format!(
+                        "{what}: no file {} — only `{name}`, which differs in letter case (it fails on case-sensitive servers)",
+                        listed.join(" or ")
+                    ),
+                    None => format!(
+                        "{what}: no readable file {} next to the document",
+                        listed.join(" or ")
+                    ),
+                };
+                Diagnostic::new(&URL_UNRESOLVED, field.entry.span, message)
+                    .help_opt(case_hint.map(|name| format!("write the name as `{name}`")))
+            }
+        };
+        found.push(diagnostic.node(field.node));
+    }
+    for diagnostic in found {
+        ctx.report(diagnostic);
+    }
+}

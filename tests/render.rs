@@ -1,0 +1,195 @@
+//! Render cases: every `corpus/render/<case>/scene.x3d` is rendered at 160×120 (balanced
+//! quality) and compared per channel with `reference.png` beside it. A pixel differs when
+//! one channel differs by more than `CHANNEL_TOLERANCE`; a case fails when more than
+//! `PIXEL_BUDGET` of its pixels differ (software rasterizers differ slightly at edges).
+//! On failure `actual.png` and `diff.png` are written next to the reference.
+//!
+//! `X3DCHECK_UPDATE_REFERENCES=1` rewrites the references (look at each before
+//! committing). `X3DCHECK_NO_GPU=1` says no renderer is expected: the cases are skipped,
+//! loudly. Otherwise a missing adapter is a failure.
+#![cfg(feature = "render")]
+
+use std::path::{Path, PathBuf};
+
+use x3dcheck::config::CheckConfig;
+use x3dcheck::render::{render_image, ImageSize, Quality, RenderArgs};
+
+const CHANNEL_TOLERANCE: u8 = 24;
+const PIXEL_BUDGET: f64 = 0.01;
+
+fn cases() -> Vec<PathBuf> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus/render");
+    let mut cases: Vec<PathBuf> = std::fs::read_dir(&root)
+        .expect("corpus/render exists")
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.join("scene.x3d").is_file())
+        .collect();
+    cases.sort();
+    cases
+}
+
+fn args() -> RenderArgs {
+    RenderArgs {
+        render: None,
+        size: ImageSize {
+            width: 160,
+            height: 120,
+        },
+        quality: Quality::Balanced,
+        camera: "auto".to_string(),
+    }
+}
+
+#[test]
+fn render_cases_match_their_references() {
+    if std::env::var_os("X3DCHECK_NO_GPU").is_some_and(|v| v == "1") {
+        eprintln!("render cases SKIPPED: X3DCHECK_NO_GPU=1 says no renderer is expected");
+        return;
+    }
+    let update = std::env::var_os("X3DCHECK_UPDATE_REFERENCES").is_some_and(|v| v == "1");
+    let cases = cases();
+    assert!(!cases.is_empty());
+    let mut failures = Vec::new();
+    for case in &cases {
+        let scene = case.join("scene.x3d");
+        let source = std::fs::read(&scene).unwrap();
+        let (mut report, doc) = x3dcheck::check::check_document(
+            &scene.display().to_string(),
+            &source,
+            &CheckConfig::default(),
+        );
+        let image = render_image(&args(), &scene, &source, doc.as_ref(), &mut report)
+            .unwrap_or_else(|e| panic!("{}: {e}", case.display()));
+        let reference_path = case.join("reference.png");
+        if update || !reference_path.exists() {
+            image.save(&reference_path).unwrap();
+            continue;
+        }
+        let reference = image::open(&reference_path).unwrap().to_rgba8();
+        if let Some(message) = compare(&image, &reference, case) {
+            failures.push(message);
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// None when the images match; else writes actual.png and diff.png and says how much differs.
+fn compare(actual: &image::RgbaImage, reference: &image::RgbaImage, case: &Path) -> Option<String> {
+    if actual.dimensions() != reference.dimensions() {
+        actual.save(case.join("actual.png")).unwrap();
+        return Some(format!(
+            "{}: size {:?} ≠ {:?}",
+            case.display(),
+            actual.dimensions(),
+            reference.dimensions()
+        ));
+    }
+    let mut diff = image::RgbaImage::new(actual.width(), actual.height());
+    let mut differing = 0usize;
+    for (x, y, a) in actual.enumerate_pixels() {
+        let r = reference.get_pixel(x, y);
+        let worst = (0..4).map(|c| a[c].abs_diff(r[c])).max().unwrap_or(0);
+        if worst > CHANNEL_TOLERANCE {
+            differing += 1;
+            diff.put_pixel(x, y, image::Rgba([255, 0, 0, 255]));
+        } else {
+            let grey = (u16::from(r[0]) + u16::from(r[1]) + u16::from(r[2])) / 6;
+            diff.put_pixel(x, y, image::Rgba([grey as u8, grey as u8, grey as u8, 255]));
+        }
+    }
+    let share = differing as f64 / (actual.width() * actual.height()) as f64;
+    if share <= PIXEL_BUDGET {
+        return None;
+    }
+    actual.save(case.join("actual.png")).unwrap();
+    diff.save(case.join("diff.png")).unwrap();
+    Some(format!(
+        "{}: {differing} pixels ({:.1}%) differ; see actual.png and diff.png",
+        case.display(),
+        share * 100.0
+    ))
+}
+
+#[test]
+fn a_far_away_tiny_box_renders_like_a_big_one_at_the_origin() {
+    if std::env::var_os("X3DCHECK_NO_GPU").is_some_and(|v| v == "1") {
+        eprintln!("precision test SKIPPED: X3DCHECK_NO_GPU=1");
+        return;
+    }
+    // The Viewpoint and the box share a Transform placing both at x = 1,000,000; only
+    // f64 composition and eye-relative placement keep the 0.0002 box intact.
+    let scene = |outer: &str, box_transform: &str| {
+        format!(
+            "<X3D profile='Interchange' version='4.0'><Scene><Transform translation='{outer}'>\
+             <Viewpoint position='0 0 0'/>\
+             <Transform {box_transform}><Shape><Appearance><Material diffuseColor='1 0.5 0'/></Appearance>\
+             <Box size='1 1 1'/></Shape></Transform></Transform></Scene></X3D>"
+        )
+    };
+    let render = |source: String| {
+        let (mut report, doc) = x3dcheck::check::check_document(
+            "scene.x3d",
+            source.as_bytes(),
+            &CheckConfig::default(),
+        );
+        render_image(
+            &args(),
+            Path::new("scene.x3d"),
+            source.as_bytes(),
+            doc.as_ref(),
+            &mut report,
+        )
+        .unwrap()
+    };
+    let tiny = "translation='0 0 -0.002' scale='0.0002 0.0002 0.0002'";
+    let near = render(scene("0 0 0", tiny));
+    let far = render(scene("1000000 0 0", tiny));
+    let big = render(scene("0 0 0", "translation='0 0 -10'"));
+    assert!(
+        compare(&far, &near, Path::new("target")).is_none(),
+        "far box differs from the near one"
+    );
+    assert!(
+        compare(&near, &big, Path::new("target")).is_none(),
+        "tiny box differs from the big one"
+    );
+}
+
+#[test]
+fn exponential_use_expansion_renders_quickly_with_a_note() {
+    if std::env::var_os("X3DCHECK_NO_GPU").is_some_and(|v| v == "1") {
+        eprintln!("expansion test SKIPPED: X3DCHECK_NO_GPU=1");
+        return;
+    }
+    // 2^199 Group instances in 12 KB (as in tests/mutations.rs), then one Box.
+    let mut scene =
+        String::from("<X3D profile='Interchange' version='4.0'><Scene><Group DEF='L0'/>");
+    for i in 1..200 {
+        scene.push_str(&format!(
+            "<Group DEF='L{i}'><Group USE='L{}'/><Group USE='L{}'/></Group>",
+            i - 1,
+            i - 1
+        ));
+    }
+    scene.push_str("<Shape><Box/></Shape></Scene></X3D>");
+    let started = std::time::Instant::now();
+    let (mut report, doc) =
+        x3dcheck::check::check_document("laughs.x3d", scene.as_bytes(), &CheckConfig::default());
+    render_image(
+        &args(),
+        Path::new("laughs.x3d"),
+        scene.as_bytes(),
+        doc.as_ref(),
+        &mut report,
+    )
+    .unwrap();
+    let elapsed = started.elapsed();
+    assert!(elapsed.as_secs() < 5, "took {elapsed:?}");
+    assert!(
+        report.diagnostics.iter().any(|d| d.message.starts_with(
+            "renderer: the scene expands to more than 10^19 node instances; drawn up to the first"
+        )),
+        "{:#?}",
+        report.diagnostics.iter().map(|d| &d.message).collect::<Vec<_>>()
+    );
+}
