@@ -144,6 +144,12 @@ impl Node {
         self.def().is_some_and(|d| d.is_a(type_name))
     }
 
+    /// Whether a field of a node inside a ProtoBody takes its value from the instance
+    /// through `IS`, so that what the document writes there is not what is used.
+    pub fn is_connected(&self, field: &str) -> bool {
+        self.connects.iter().any(|c| c.node_field.text == field)
+    }
+
     pub fn entry(&self, name: &str) -> Option<&FieldEntry> {
         self.fields.iter().find(|f| f.name() == name)
     }

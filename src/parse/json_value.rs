@@ -178,7 +178,7 @@ fn check_count(tree: &Tree, array: usize, ty: FieldType, count: usize) -> Result
     let arity = ty.arity();
     let noun = element_noun(ty);
     if ty.is_mf() {
-        if count % arity == 0 {
+        if count.is_multiple_of(arity) {
             return Ok(());
         }
         // Point at the incomplete last element.

@@ -215,7 +215,7 @@ fn fast_path_extended<F: Float>(mut m: u64, mut e: i64) -> Option<F> {
     if m == 0 {
         return Some(F::ZERO);
     }
-    while m > F::MANTISSA_LIMIT && m % 10 == 0 {
+    while m > F::MANTISSA_LIMIT && m.is_multiple_of(10) {
         m /= 10;
         e += 1;
     }

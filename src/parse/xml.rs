@@ -36,7 +36,7 @@ pub fn read(source: &[u8]) -> Parsed {
             diagnostics,
         },
         Err(stop) => {
-            diagnostics.push(stop);
+            diagnostics.push(*stop);
             Parsed {
                 encoding: Some(Encoding::Xml),
                 document: None,
@@ -110,7 +110,7 @@ struct Attr<'a> {
 }
 
 impl<'s> XmlReader<'s> {
-    fn run(&mut self) -> Result<(), Diagnostic> {
+    fn run(&mut self) -> Result<(), Box<Diagnostic>> {
         let mut reader = Reader::from_reader(self.source);
         reader.config_mut().check_end_names = true;
         loop {
@@ -148,13 +148,13 @@ impl<'s> XmlReader<'s> {
         Ok(())
     }
 
-    fn malformed(&self, at: usize, message: &str) -> Diagnostic {
+    fn malformed(&self, at: usize, message: &str) -> Box<Diagnostic> {
         let at = at.min(self.source.len());
-        Diagnostic::new(
+        Box::new(Diagnostic::new(
             &XML_MALFORMED,
             Span::new(at, at),
             format!("not well-formed XML: {message}"),
-        )
+        ))
     }
 
     fn span_of(&self, bytes: &[u8]) -> Option<Span> {
@@ -166,7 +166,7 @@ impl<'s> XmlReader<'s> {
 
     /// Text and CDATA: source code for Script and shader parts; elsewhere only whitespace
     /// is expected, and the root must be followed by nothing but whitespace.
-    fn text(&mut self, start: usize, end: usize, cdata: bool) -> Result<(), Diagnostic> {
+    fn text(&mut self, start: usize, end: usize, cdata: bool) -> Result<(), Box<Diagnostic>> {
         let blank = self.source[start..end]
             .iter()
             .all(|b| b.is_ascii_whitespace());
@@ -191,7 +191,7 @@ impl<'s> XmlReader<'s> {
         &self,
         element: &'a BytesStart<'a>,
         element_start: usize,
-    ) -> Result<Vec<Attr<'a>>, Diagnostic> {
+    ) -> Result<Vec<Attr<'a>>, Box<Diagnostic>> {
         let mut out = Vec::new();
         for attribute in element.attributes().with_checks(true) {
             let attribute: Attribute<'a> =
@@ -237,7 +237,7 @@ impl<'s> XmlReader<'s> {
         start: usize,
         end: usize,
         empty: bool,
-    ) -> Result<(), Diagnostic> {
+    ) -> Result<(), Box<Diagnostic>> {
         let name = element.name().0.to_string();
         let name_span = Span::new(start + 1, start + 1 + name.len());
         let attrs = self.attributes(element, start)?;
@@ -247,11 +247,11 @@ impl<'s> XmlReader<'s> {
                     return Err(self.malformed(start, "a second root element"));
                 }
                 if name != "X3D" {
-                    return Err(Diagnostic::new(
+                    return Err(Box::new(Diagnostic::new(
                         &ROOT_NOT_X3D,
                         name_span,
                         format!("the root element is `{name}`, not `X3D`"),
-                    ));
+                    )));
                 }
                 self.root(&attrs, Span::new(start, end));
                 Frame::Root

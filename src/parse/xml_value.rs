@@ -151,7 +151,7 @@ fn check_count(ty: FieldType, s: &[u8], count: usize) -> Result<(), SyntaxError>
         _ => ("number", "numbers"),
     };
     if ty.is_mf() {
-        if count % arity == 0 {
+        if count.is_multiple_of(arity) {
             return Ok(());
         }
         // Point at the incomplete last element.

@@ -1,6 +1,6 @@
 //! ATTENUATION_ZERO: attenuation 0 0 0, which means 1 0 0.
 
-use super::{is_connected, is_positional_light};
+use super::is_positional_light;
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -33,7 +33,7 @@ fn check(ctx: &mut Ctx) {
     let doc = ctx.doc;
     let mut found = Vec::new();
     for (id, node) in doc.iter() {
-        if !is_positional_light(node) || is_connected(node, "attenuation") {
+        if !is_positional_light(node) || node.is_connected("attenuation") {
             continue;
         }
         let Some(entry) = node.entry("attenuation") else {

@@ -1,6 +1,5 @@
 //! LIGHT_DIRECTION_ZERO: a DirectionalLight or SpotLight pointing nowhere.
 
-use super::is_connected;
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -35,7 +34,7 @@ fn check(ctx: &mut Ctx) {
     let mut found = Vec::new();
     for (id, node) in doc.iter() {
         if !matches!(node.type_name(), "DirectionalLight" | "SpotLight")
-            || is_connected(node, "direction")
+            || node.is_connected("direction")
         {
             continue;
         }

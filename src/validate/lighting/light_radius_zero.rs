@@ -1,6 +1,6 @@
 //! LIGHT_RADIUS_ZERO: a PointLight or SpotLight with radius 0.
 
-use super::{is_connected, is_positional_light};
+use super::is_positional_light;
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -33,7 +33,7 @@ fn check(ctx: &mut Ctx) {
     let doc = ctx.doc;
     let mut found = Vec::new();
     for (id, node) in doc.iter() {
-        if !is_positional_light(node) || is_connected(node, "radius") {
+        if !is_positional_light(node) || node.is_connected("radius") {
             continue;
         }
         let Some(entry) = node.entry("radius") else {

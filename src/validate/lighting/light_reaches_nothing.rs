@@ -2,7 +2,7 @@
 
 use std::collections::HashMap;
 
-use super::{is_connected, is_positional_light};
+use super::is_positional_light;
 use crate::model::bounds::{self, Affine, Bounds};
 use crate::model::NodeId;
 use crate::report::Diagnostic;
@@ -68,8 +68,8 @@ fn check(ctx: &mut Ctx) {
                 None => unknown = true,
             }
         } else if is_positional_light(node)
-            && !is_connected(node, "radius")
-            && !is_connected(node, "location")
+            && !node.is_connected("radius")
+            && !node.is_connected("location")
         {
             if let Some(reach) = reach(doc, id, to_world) {
                 lights.entry(id).or_default().push(reach);

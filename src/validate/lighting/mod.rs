@@ -20,11 +20,6 @@ pub static RULES: &[&Rule] = &[
     &light_reaches_nothing::LIGHT_REACHES_NOTHING,
 ];
 
-/// Whether a field of a node inside a ProtoBody takes its value through `IS`: the value
-/// written is then not the one used.
-fn is_connected(node: &Node, field: &str) -> bool {
-    node.connects.iter().any(|c| c.node_field.text == field)
-}
 
 /// PointLight and SpotLight: the lights with a location and a radius.
 fn is_positional_light(node: &Node) -> bool {

@@ -1,6 +1,5 @@
 //! PHYSICAL_AMBIENT_INTENSITY: ambientIntensity in a scene lit only physically.
 
-use super::is_connected;
 use crate::model::{Document, NodeId};
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
@@ -61,7 +60,7 @@ const LINE_AND_POINT_GEOMETRY: &[&str] = &[
 
 fn lighting(doc: &Document, shape: NodeId) -> Lighting {
     let node = doc.node(shape);
-    if is_connected(node, "appearance") || is_connected(node, "geometry") {
+    if node.is_connected("appearance") || node.is_connected("geometry") {
         return Lighting::Unknown;
     }
     if node
@@ -74,7 +73,7 @@ fn lighting(doc: &Document, shape: NodeId) -> Lighting {
         return Lighting::Unlit;
     };
     let appearance = doc.node(appearance);
-    if appearance.def().is_none() || is_connected(appearance, "material") {
+    if appearance.def().is_none() || appearance.is_connected("material") {
         return Lighting::Unknown;
     }
     if !appearance.children("shaders").is_empty() {
@@ -115,7 +114,7 @@ fn check(ctx: &mut Ctx) {
     }
     let mut found = Vec::new();
     for (id, node) in doc.iter() {
-        if !node.is_a("X3DLightNode") || is_connected(node, "ambientIntensity") {
+        if !node.is_a("X3DLightNode") || node.is_connected("ambientIntensity") {
             continue;
         }
         let Some(entry) = node.entry("ambientIntensity") else {

@@ -1,6 +1,5 @@
 //! SPOT_BEAM_EXCEEDS_CUTOFF: a SpotLight whose beamWidth is wider than its cutOffAngle.
 
-use super::is_connected;
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -41,8 +40,8 @@ fn check(ctx: &mut Ctx) {
         let node = doc.node(id);
         let (beam_entry, cutoff_entry) = (node.entry("beamWidth"), node.entry("cutOffAngle"));
         if (beam_entry.is_none() && cutoff_entry.is_none())
-            || is_connected(node, "beamWidth")
-            || is_connected(node, "cutOffAngle")
+            || node.is_connected("beamWidth")
+            || node.is_connected("cutOffAngle")
         {
             continue;
         }

@@ -36,14 +36,10 @@ const SHAPE_FIELDS: &[&str] = &[
     "texCoord",
 ];
 
-/// Whether a field's value is connected to a prototype field by `IS`.
-pub fn is_connected(node: &Node, field: &str) -> bool {
-    node.connects.iter().any(|c| c.node_field.text == field)
-}
 
 /// Whether a field's value is known: not `IS`-connected and, when set, parsed.
 pub fn is_known(node: &Node, field: &str) -> bool {
-    !is_connected(node, field)
+    !node.is_connected(field)
         && !node
             .entry(field)
             .is_some_and(|e| matches!(e.value, Value::Unparsed(_)))

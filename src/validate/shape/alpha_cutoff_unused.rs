@@ -1,6 +1,5 @@
 //! ALPHA_CUTOFF_UNUSED: alphaCutoff set while alphaMode never uses it.
 
-use super::analysis::connected;
 use crate::report::Diagnostic;
 use crate::schema::Version;
 use crate::validate::Ctx;
@@ -43,7 +42,7 @@ fn check(ctx: &mut Ctx) {
         let Some(cutoff) = node.entry("alphaCutoff") else {
             continue;
         };
-        if connected(node, "alphaMode") {
+        if node.is_connected("alphaMode") {
             continue;
         }
         if let Some(mode) = doc

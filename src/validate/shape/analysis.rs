@@ -4,6 +4,7 @@
 
 use std::collections::HashSet;
 
+use crate::model::texture_mapping::{mapping_of, MappingList};
 use crate::model::{ChildRef, Document, Node, NodeId};
 use crate::schema::NodeDef;
 
@@ -17,11 +18,6 @@ pub struct ShapePair {
     pub appearance: Option<NodeId>,
 }
 
-/// Whether a field of a node inside a ProtoBody takes its value from the instance (`IS`),
-/// so that the document does not say what it holds.
-pub fn connected(node: &Node, field: &str) -> bool {
-    node.connects.iter().any(|c| c.node_field.text == field)
-}
 
 /// Every distinct Appearance × geometry pair formed by an X3DShapeNode, in document order,
 /// each with the first Shape forming it. Left out are pairs whose parts the document does
@@ -32,8 +28,8 @@ pub fn shape_pairs(doc: &Document) -> Vec<ShapePair> {
     let mut pairs = Vec::new();
     for (shape, node) in doc.iter() {
         if !node.is_a("X3DShapeNode")
-            || connected(node, "appearance")
-            || connected(node, "geometry")
+            || node.is_connected("appearance")
+            || node.is_connected("geometry")
         {
             continue;
         }
@@ -144,4 +140,37 @@ mod tests {
         assert!(pairs[0].appearance.is_some() && pairs[2].appearance.is_none());
         assert!(pairs[1].geometry_ref.span != pairs[0].geometry_ref.span);
     }
+}
+
+/// A node of a MultiTextureCoordinate or MultiTextureTransform list whose non-empty mapping
+/// repeats an earlier one's.
+pub struct RepeatedMapping {
+    /// The MultiTextureCoordinate or MultiTextureTransform.
+    pub list: NodeId,
+    pub first: ChildRef,
+    pub repeat: ChildRef,
+    /// The repeat's position in the list.
+    pub index: usize,
+    pub mapping: String,
+}
+
+/// The repeated mappings of every `node_type` node's `field` list (12.2.4.1, 12.2.4.2).
+pub fn repeated_mappings(doc: &Document, node_type: &str, field: &str) -> Vec<RepeatedMapping> {
+    let mut found = Vec::new();
+    for list_node in doc.nodes_of_type(node_type) {
+        let list = MappingList {
+            items: doc.node(list_node).children(field).to_vec(),
+            opaque: false,
+        };
+        for (first, repeat) in list.duplicates(doc) {
+            found.push(RepeatedMapping {
+                list: list_node,
+                first: list.items[first],
+                repeat: list.items[repeat],
+                index: repeat,
+                mapping: mapping_of(doc, list.items[repeat].node).unwrap_or_default(),
+            });
+        }
+    }
+    found
 }

@@ -1,6 +1,6 @@
 //! BACK_MATERIAL_NO_EFFECT: backMaterial on a Shape whose back faces are never drawn.
 
-use super::analysis::{connected, shape_pairs};
+use super::analysis::{shape_pairs};
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -58,7 +58,7 @@ fn check(ctx: &mut Ctx) {
             continue;
         };
         let (span, message) = if def.field("solid").is_some() {
-            if connected(geometry, "solid") || doc.bool_of(pair.geometry, "solid") != Some(true) {
+            if geometry.is_connected("solid") || doc.bool_of(pair.geometry, "solid") != Some(true) {
                 continue;
             }
             let explicit = geometry.entry("solid");

@@ -1,7 +1,7 @@
 //! The comparison 12.2.3 item 2 asks for: the xxxTexture and xxxTextureMapping fields of
 //! an Appearance's material and backMaterial. Shared by the three rules that report on it.
 
-use super::analysis::{appearances, connected, texture_fields};
+use super::analysis::{appearances, texture_fields};
 use crate::model::{ChildRef, Document, NodeId, Value};
 
 /// How deep texture nodes' children (TextureProperties, ComposedCubeMapTexture faces…) are
@@ -43,7 +43,7 @@ pub fn material_pairs(doc: &Document) -> Vec<MaterialPair> {
             .filter(|(texture, mapping)| {
                 ![texture, mapping]
                     .iter()
-                    .any(|f| connected(front_node, f) || connected(back_node, f))
+                    .any(|f| front_node.is_connected(f) || back_node.is_connected(f))
             })
             .collect();
         pairs.push(MaterialPair {

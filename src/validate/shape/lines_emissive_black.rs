@@ -1,6 +1,6 @@
 //! LINES_EMISSIVE_BLACK: lines or points drawn black by a Material's emissiveColor.
 
-use super::analysis::{connected, shape_pairs};
+use super::analysis::{shape_pairs};
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -52,9 +52,9 @@ fn check(ctx: &mut Ctx) {
         };
         if !LINE_AND_POINT_SETS.contains(&geometry.type_name())
             || geometry.child("color").is_some()
-            || connected(geometry, "color")
+            || geometry.is_connected("color")
             || (ctx.version.is_4x()
-                && (geometry.child("normal").is_some() || connected(geometry, "normal")))
+                && (geometry.child("normal").is_some() || geometry.is_connected("normal")))
             || !appearance.children("shaders").is_empty()
             || appearance.child("texture").is_some()
         {
@@ -64,7 +64,7 @@ fn check(ctx: &mut Ctx) {
             continue;
         };
         let m = doc.node(material.node);
-        if !m.is_a("Material") || connected(m, "emissiveColor") {
+        if !m.is_a("Material") || m.is_connected("emissiveColor") {
             continue;
         }
         let black = |field: &str| {
@@ -75,7 +75,7 @@ fn check(ctx: &mut Ctx) {
                 })
                 .unwrap_or(false)
         };
-        if black("emissiveColor") && !black("diffuseColor") && !connected(m, "diffuseColor") {
+        if black("emissiveColor") && !black("diffuseColor") && !m.is_connected("diffuseColor") {
             found.push((
                 pair.shape,
                 pair.geometry_ref.span,

@@ -1,6 +1,5 @@
 //! SHAPE_GEOMETRY_MISSING: a Shape without geometry.
 
-use super::analysis::connected;
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -40,7 +39,7 @@ fn check(ctx: &mut Ctx) {
         if !node.is_a("X3DShapeNode")
             || node.is_a("ParticleSystem")
             || !node.children("geometry").is_empty()
-            || connected(node, "geometry")
+            || node.is_connected("geometry")
         {
             continue;
         }

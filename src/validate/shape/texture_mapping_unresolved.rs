@@ -1,6 +1,6 @@
 //! TEXTURE_MAPPING_UNRESOLVED: a material's texture mapping names no texture coordinate.
 
-use super::analysis::{connected, one_sided_materials, shape_pairs, texture_fields};
+use super::analysis::{one_sided_materials, shape_pairs, texture_fields};
 use crate::model::texture_mapping::{texture_coordinates, Resolution};
 use crate::report::Diagnostic;
 use crate::schema::Version;
@@ -72,8 +72,8 @@ fn check(ctx: &mut Ctx) {
             let node = doc.node(material.child.node);
             for (texture, mapping) in texture_fields(material.def) {
                 if node.child(texture).is_none()
-                    || connected(node, texture)
-                    || connected(node, mapping)
+                    || node.is_connected(texture)
+                    || node.is_connected(mapping)
                 {
                     continue;
                 }

@@ -1,6 +1,6 @@
 //! TEXTURE_MAPPING_WITHOUT_TEXTURE: an xxxTextureMapping whose xxxTexture is NULL.
 
-use super::analysis::{connected, texture_fields};
+use super::analysis::{texture_fields};
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -50,7 +50,7 @@ fn check(ctx: &mut Ctx) {
                 .as_strings()
                 .and_then(|s| s.first())
                 .is_some_and(|s| !s.is_empty());
-            if set && node.child(texture).is_none() && !connected(node, texture) {
+            if set && node.child(texture).is_none() && !node.is_connected(texture) {
                 found.push((id, entry.span, texture, mapping, def.name));
             }
         }

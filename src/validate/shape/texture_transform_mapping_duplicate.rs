@@ -1,6 +1,6 @@
 //! TEXTURE_TRANSFORM_MAPPING_DUPLICATE: two texture transformations share a mapping.
 
-use crate::model::texture_mapping::{mapping_of, MappingList};
+use super::analysis::{repeated_mappings, RepeatedMapping};
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -39,19 +39,14 @@ fn check(ctx: &mut Ctx) {
     if !ctx.version.is_4x() {
         return;
     }
-    let doc = ctx.doc;
-    let mut found = Vec::new();
-    for id in doc.nodes_of_type("MultiTextureTransform") {
-        let list = MappingList {
-            items: doc.node(id).children("textureTransform").to_vec(),
-            opaque: false,
-        };
-        for (first, repeat) in list.duplicates(doc) {
-            let mapping = mapping_of(doc, list.items[repeat].node).unwrap_or_default();
-            found.push((id, list.items[first], list.items[repeat], repeat, mapping));
-        }
-    }
-    for (id, first, repeat, index, mapping) in found {
+    for RepeatedMapping {
+        list: id,
+        first,
+        repeat,
+        index,
+        mapping,
+    } in repeated_mappings(ctx.doc, "MultiTextureTransform", "textureTransform")
+    {
         ctx.report(
             Diagnostic::new(
                 &TEXTURE_TRANSFORM_MAPPING_DUPLICATE,

@@ -1,6 +1,6 @@
 //! TEXTURE_TRANSFORM_MAPPING_UNRESOLVED: a material's texture mapping names no texture transform.
 
-use super::analysis::{appearances, connected, one_sided_materials, texture_fields};
+use super::analysis::{appearances, one_sided_materials, texture_fields};
 use crate::model::texture_mapping::{texture_transforms, Resolution};
 use crate::report::Diagnostic;
 use crate::schema::Version;
@@ -63,7 +63,7 @@ fn check(ctx: &mut Ctx) {
         for material in one_sided_materials(doc, appearance) {
             let m = doc.node(material.child.node);
             for (texture, mapping) in texture_fields(material.def) {
-                if m.child(texture).is_none() || connected(m, texture) || connected(m, mapping) {
+                if m.child(texture).is_none() || m.is_connected(texture) || m.is_connected(mapping) {
                     continue;
                 }
                 let (Some(name), Some(entry)) = (

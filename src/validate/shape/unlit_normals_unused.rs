@@ -2,7 +2,6 @@
 
 use std::collections::HashMap;
 
-use super::analysis::connected;
 use crate::model::texture_mapping::texture_coordinates;
 use crate::model::{ChildRef, Document, Node, NodeId};
 use crate::report::Diagnostic;
@@ -142,7 +141,7 @@ fn check(ctx: &mut Ctx) {
 /// Whether a Shape may read normals: lit, shaded, generating texture coordinates from
 /// normals, or not fully known from the document.
 fn needs_normals(doc: &Document, shape: &Node, geometry: NodeId) -> bool {
-    if connected(shape, "appearance") || connected(shape, "geometry") {
+    if shape.is_connected("appearance") || shape.is_connected("geometry") {
         return true;
     }
     if let Some(appearance) = shape.child("appearance") {
@@ -164,7 +163,7 @@ fn needs_normals(doc: &Document, shape: &Node, geometry: NodeId) -> bool {
         || list.items.iter().any(|c| {
             let generator = doc.node(c.node);
             generator.is_a("TextureCoordinateGenerator")
-                && (connected(generator, "mode")
+                && (generator.is_connected("mode")
                     || doc
                         .string_of(c.node, "mode")
                         .is_some_and(|m| NORMAL_MODES.contains(&m.as_str())))

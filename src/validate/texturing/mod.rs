@@ -14,7 +14,6 @@ pub mod texture_transform_singular;
 pub mod url_unresolved;
 
 use super::Rule;
-use crate::model::Node;
 
 /// This group's rules, in catalogue order.
 pub static RULES: &[&Rule] = &[
@@ -31,8 +30,3 @@ pub static RULES: &[&Rule] = &[
     &image_format_unsupported::IMAGE_FORMAT_UNSUPPORTED,
 ];
 
-/// Whether a field of a node inside a ProtoBody takes its value through `IS`: the value
-/// written is then not the one used.
-fn is_connected(node: &Node, field: &str) -> bool {
-    node.connects.iter().any(|c| c.node_field.text == field)
-}

@@ -1,6 +1,5 @@
 //! MULTITEXTURE_EXTRA_MODES: more mode/source/function entries than textures.
 
-use super::is_connected;
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -35,7 +34,7 @@ fn check(ctx: &mut Ctx) {
     let mut found = Vec::new();
     for id in doc.nodes_of_type("MultiTexture") {
         let node = doc.node(id);
-        if is_connected(node, "texture") {
+        if node.is_connected("texture") {
             continue;
         }
         let textures = node.children("texture").len();
@@ -44,7 +43,7 @@ fn check(ctx: &mut Ctx) {
                 continue;
             };
             let given = entry.value.as_strings().map_or(0, <[String]>::len);
-            if given > textures && !is_connected(node, field) {
+            if given > textures && !node.is_connected(field) {
                 found.push((id, entry.span, field, given, textures));
             }
         }

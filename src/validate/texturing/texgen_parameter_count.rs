@@ -1,6 +1,5 @@
 //! TEXGEN_PARAMETER_COUNT: TextureCoordinateGenerator parameter count wrong for its mode.
 
-use super::is_connected;
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -47,7 +46,7 @@ fn check(ctx: &mut Ctx) {
     let mut found = Vec::new();
     for id in doc.nodes_of_type("TextureCoordinateGenerator") {
         let node = doc.node(id);
-        if is_connected(node, "mode") || is_connected(node, "parameter") {
+        if node.is_connected("mode") || node.is_connected("parameter") {
             continue;
         }
         let Some(mode) = doc.string_of(id, "mode") else {

@@ -1,6 +1,5 @@
 //! TEXTURE_MIPMAP_REQUIRED: a MIPMAP minification filter without mipmaps.
 
-use super::is_connected;
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -36,7 +35,7 @@ fn check(ctx: &mut Ctx) {
     let mut found = Vec::new();
     for id in doc.nodes_of_type("TextureProperties") {
         let node = doc.node(id);
-        if is_connected(node, "minificationFilter") || is_connected(node, "generateMipMaps") {
+        if node.is_connected("minificationFilter") || node.is_connected("generateMipMaps") {
             continue;
         }
         let Some(entry) = node.entry("minificationFilter") else {

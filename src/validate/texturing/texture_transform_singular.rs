@@ -1,6 +1,5 @@
 //! TEXTURE_TRANSFORM_SINGULAR: a texture transform scale of 0.
 
-use super::is_connected;
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -35,7 +34,7 @@ fn check(ctx: &mut Ctx) {
     let mut found = Vec::new();
     for (id, node) in doc.iter() {
         if !matches!(node.type_name(), "TextureTransform" | "TextureTransform3D")
-            || is_connected(node, "scale")
+            || node.is_connected("scale")
         {
             continue;
         }
