@@ -190,6 +190,10 @@ fn exponential_use_expansion_renders_quickly_with_a_note() {
             "renderer: the scene expands to more than 10^19 node instances; drawn up to the first"
         )),
         "{:#?}",
-        report.diagnostics.iter().map(|d| &d.message).collect::<Vec<_>>()
+        report
+            .diagnostics
+            .iter()
+            .map(|d| &d.message)
+            .collect::<Vec<_>>()
     );
 }

@@ -16,7 +16,7 @@ use super::draw_list::{
 use super::fields::{boolean, child, color, float, floats, rotation, type_is, unit, vec3};
 use super::geometry::{self, Built, LocalMesh, Needs, TexCoordSource};
 use super::textures;
-use crate::model::bounds::{geometry_bounds, Affine, Bounds};
+use crate::model::bounds::{geometry_bounds, local_transform, Affine, Bounds};
 use crate::model::texture_mapping::{texture_coordinates, texture_transforms};
 use crate::model::{Document, NodeId};
 
@@ -188,6 +188,27 @@ impl Walker<'_> {
         }
     }
 
+    /// The transformation a grouping node applies (model::bounds, 10.4.4); None, noted,
+    /// when a value is not finite: its children are not drawn.
+    fn local_transform(&mut self, context: Context, id: NodeId) -> Option<DMat4> {
+        let Some(a) = local_transform(context.doc, id) else {
+            let name = context.doc.node(id).type_name();
+            self.note(
+                context,
+                id,
+                format!("{name} with a non-finite value: its children are not drawn"),
+            );
+            return None;
+        };
+        let l = a.linear;
+        Some(DMat4::from_cols_array_2d(&[
+            [l[0][0], l[1][0], l[2][0], 0.0],
+            [l[0][1], l[1][1], l[2][1], 0.0],
+            [l[0][2], l[1][2], l[2][2], 0.0],
+            [a.translation[0], a.translation[1], a.translation[2], 1.0],
+        ]))
+    }
+
     /// Stops the walk at a cap, saying how far the scene expands and what was drawn.
     fn stop(&mut self, context: Context, drawn: String) {
         self.spent.stopped = true;
@@ -237,7 +258,10 @@ impl Walker<'_> {
         }
         self.spent.node_instances += 1;
         if self.spent.node_instances > MAX_NODE_INSTANCES {
-            self.stop(context, format!("the first {MAX_NODE_INSTANCES} node instances"));
+            self.stop(
+                context,
+                format!("the first {MAX_NODE_INSTANCES} node instances"),
+            );
             return;
         }
         let doc = context.doc;
@@ -252,8 +276,9 @@ impl Walker<'_> {
             |name: &str| -> Vec<NodeId> { node.children(name).iter().map(|c| c.node).collect() };
         match def.name {
             "Transform" => {
-                let local = transform_matrix(doc, id);
-                self.walk_children(context, &kids("children"), world * local, scope, depth);
+                if let Some(local) = self.local_transform(context, id) {
+                    self.walk_children(context, &kids("children"), world * local, scope, depth);
+                }
             }
             "Switch" => {
                 let which = doc.i32_of(id, "whichChoice").unwrap_or(-1);
@@ -337,13 +362,11 @@ impl Walker<'_> {
             }
             _ if def.is_a("X3DLightNode") => {}
             _ if def.is_a("X3DGroupingNode") => {
-                // Group, StaticGroup, Collision (not its proxy), Anchor, CAD groups.
-                let local = if def.field("translation").is_some() {
-                    transform_matrix(doc, id)
-                } else {
-                    DMat4::IDENTITY
-                };
-                self.walk_children(context, &kids("children"), world * local, scope, depth);
+                // Group, StaticGroup, Collision (not its proxy), Anchor, CAD groups
+                // (CADPart transforms like a Transform).
+                if let Some(local) = self.local_transform(context, id) {
+                    self.walk_children(context, &kids("children"), world * local, scope, depth);
+                }
             }
             _ if def.is_a("X3DShapeNode") => {
                 self.note(context, id, format!("{} is not drawn", def.name));
@@ -640,7 +663,6 @@ impl Walker<'_> {
         }
         Some((mesh, shading))
     }
-
 
     fn appearance(&mut self, context: Context, appearance: Option<NodeId>) -> Look {
         let doc = context.doc;
@@ -1060,25 +1082,6 @@ fn texture_transform(doc: &Document, id: NodeId) -> TexCoordTransform {
     })
 }
 
-/// Transform (10.4.4): T × C × R × SR × S × −SR × −C, in f64.
-fn transform_matrix(doc: &Document, id: NodeId) -> DMat4 {
-    let v = |name: &str, fallback: [f32; 3]| {
-        DVec3::from_array(vec3(doc, id, name, fallback).map(f64::from))
-    };
-    let translation = v("translation", [0.0; 3]);
-    let center = v("center", [0.0; 3]);
-    let scale = v("scale", [1.0; 3]);
-    let scale_orientation = rotation(doc, id, "scaleOrientation");
-    let rotation = rotation(doc, id, "rotation");
-    DMat4::from_translation(translation)
-        * DMat4::from_translation(center)
-        * DMat4::from_quat(rotation)
-        * DMat4::from_quat(scale_orientation)
-        * DMat4::from_scale(scale)
-        * DMat4::from_quat(scale_orientation.inverse())
-        * DMat4::from_translation(-center)
-}
-
 /// A transform as model::bounds takes it.
 fn affine(m: DMat4) -> Affine {
     Affine {
@@ -1101,35 +1104,32 @@ fn unit_vector(v: DVec3) -> [f32; 3] {
 }
 
 /// Places a shape relative to the eye: positions through (−eye) × world in f64, normals
-/// through the inverse transpose; mirrored transforms keep front faces in front.
+/// through the inverse transpose; mirrored transforms keep front faces in front. The
+/// mesh's vectors are reused: a large mesh is not copied on its way to the GPU.
 fn place(p: Pending, to_eye: DMat4, global_lights: u32) -> Mesh {
     let matrix = to_eye * p.world;
-    let mesh = p.mesh;
-    let positions: Vec<[f32; 3]> = mesh
-        .positions
-        .iter()
-        .map(|q| to_f32(matrix.transform_point3(DVec3::from_array(q.map(f64::from)))))
-        .collect();
+    let mut mesh = p.mesh;
+    for q in &mut mesh.positions {
+        *q = to_f32(matrix.transform_point3(DVec3::from_array(q.map(f64::from))));
+    }
     let linear = DMat3::from_mat4(p.world);
     let normal_matrix = if linear.determinant().abs() > 0.0 {
         linear.inverse().transpose()
     } else {
         DMat3::ZERO
     };
-    let normals = mesh.normals.map(|normals| {
-        normals
-            .iter()
-            .map(|n| {
-                let w = normal_matrix * DVec3::from_array(n.map(f64::from));
-                let length = w.length();
-                if length > 0.0 && length.is_finite() {
-                    to_f32(w / length)
-                } else {
-                    [0.0; 3]
-                }
-            })
-            .collect()
-    });
+    if let Some(normals) = mesh.normals.as_mut() {
+        for n in normals.iter_mut() {
+            let w = normal_matrix * DVec3::from_array(n.map(f64::from));
+            let length = w.length();
+            *n = if length > 0.0 && length.is_finite() {
+                to_f32(w / length)
+            } else {
+                [0.0; 3]
+            };
+        }
+    }
+    let positions = &mesh.positions;
     let finite = |i: u32| {
         positions
             .get(i as usize)
@@ -1141,28 +1141,30 @@ fn place(p: Pending, to_eye: DMat4, global_lights: u32) -> Mesh {
         Primitive::Lines => 2,
         Primitive::Points => 1,
     };
-    let mut indices = Vec::with_capacity(mesh.indices.len());
-    for group in mesh.indices.chunks_exact(per) {
-        if group.iter().all(|&i| finite(i)) {
+    // Compacts the kept groups to the front of the index list, in place.
+    let mut kept = 0;
+    for start in (0..mesh.indices.len() / per * per).step_by(per) {
+        if mesh.indices[start..start + per].iter().all(|&i| finite(i)) {
+            mesh.indices.copy_within(start..start + per, kept);
             if mirrored && per == 3 {
-                indices.extend_from_slice(&[group[0], group[2], group[1]]);
-            } else {
-                indices.extend_from_slice(group);
+                mesh.indices.swap(kept + 1, kept + 2);
             }
+            kept += per;
         }
     }
-    let sanitize2 = |v: Vec<[f32; 2]>| {
-        v.into_iter()
-            .map(|t| t.map(|c| if c.is_finite() { c } else { 0.0 }))
-            .collect()
-    };
+    mesh.indices.truncate(kept);
+    if let Some(coords) = mesh.tex_coords.as_mut() {
+        for t in coords.iter_mut() {
+            *t = t.map(|c| if c.is_finite() { c } else { 0.0 });
+        }
+    }
     Mesh {
         primitive: mesh.primitive,
-        positions,
-        normals,
+        positions: mesh.positions,
+        normals: mesh.normals,
         colors: mesh.colors,
-        tex_coords: mesh.tex_coords.map(sanitize2),
-        indices,
+        tex_coords: mesh.tex_coords,
+        indices: mesh.indices,
         front: p.front,
         back: p.back,
         light_mask: p.scoped_lights | global_lights,

@@ -6,7 +6,8 @@ use std::f32::consts::PI;
 
 use super::draw_list::Primitive;
 use super::fields::{boolean, child, float, floats, ints, vec3};
-use super::polygons::{self, Attribute, Binding, Faces, Inputs, NormalGeneration};
+use super::polygons::{self, Attribute, Faces, Inputs, NormalGeneration};
+use crate::model::faces::{Attribute as Kind, Polygonal};
 use crate::model::{Document, NodeId};
 
 /// A mesh in local coordinates.
@@ -98,7 +99,10 @@ pub fn build(doc: &Document, geometry: NodeId, needs: Needs) -> Built {
                 "{name}: its texture coordinates come from a node other than TextureCoordinate (such as TextureCoordinateGenerator), which is not applied"
             )),
         },
-        "ElevationGrid" => surface(elevation_grid(doc, geometry, needs)),
+        "ElevationGrid" => match elevation_grid(doc, geometry, needs) {
+            Some(mesh) => surface(mesh),
+            None => Built::NotDrawn("ElevationGrid is not drawn".to_string()),
+        },
         "LineSet" | "IndexedLineSet" | "PointSet" => lines_or_points(doc, geometry, name),
         other => Built::NotDrawn(format!("{other} is not drawn")),
     }
@@ -123,123 +127,35 @@ fn composed(doc: &Document, geometry: NodeId, name: &str, needs: Needs) -> Optio
     let points = child(doc, geometry, "coord")
         .map(|c| floats(doc, c, "point"))
         .unwrap_or_default();
-    let point_count = points.len() / 3;
-    let index_field = if name == "IndexedFaceSet" {
-        "coordIndex"
-    } else {
-        "index"
-    };
-    let index = ints(doc, geometry, index_field);
-    let mut faces = match name {
-        "IndexedFaceSet" => Faces::from_index_list(&index, point_count),
-        "IndexedTriangleSet" => groups(index.iter().map(|&i| i as i64), 3, point_count),
-        "IndexedQuadSet" => groups(index.iter().map(|&i| i as i64), 4, point_count),
-        "TriangleSet" => groups(0..point_count as i64, 3, point_count),
-        "QuadSet" => groups(0..point_count as i64, 4, point_count),
-        "IndexedTriangleFanSet" | "IndexedTriangleStripSet" => strips_or_fans(
-            &split_at_minus_one(&index),
-            name.contains("Fan"),
-            point_count,
-        ),
-        _ => {
-            let counts = ints(
-                doc,
-                geometry,
-                if name == "TriangleFanSet" {
-                    "fanCount"
-                } else {
-                    "stripCount"
-                },
-            );
-            let mut runs = Vec::new();
-            let mut next = 0i64;
-            for &count in counts.iter() {
-                let count = i64::from(count.max(0));
-                runs.push((next..next + count).collect::<Vec<i64>>());
-                next += count;
-            }
-            strips_or_fans(&runs, name.contains("Fan"), point_count)
-        }
-    };
-    if !boolean(doc, geometry, "ccw", true) {
-        faces.reverse_each();
-    }
-    let is_ifs = name == "IndexedFaceSet";
-    let per_vertex_binding = |index_name: &str| -> Binding {
-        match doc
-            .node(geometry)
-            .value(index_name)
-            .and_then(|v| v.as_int32s())
-        {
-            Some(list) if is_ifs && !list.is_empty() => Binding::BySlot(list),
-            _ => Binding::ByCoord,
-        }
-    };
-    let face_binding = |index_name: &str| -> Binding {
-        match doc
-            .node(geometry)
-            .value(index_name)
-            .and_then(|v| v.as_int32s())
-        {
-            Some(list) if is_ifs && !list.is_empty() => Binding::ByFace(Some(list)),
-            _ => Binding::ByFace(None),
-        }
-    };
-    let normal_node = child(doc, geometry, "normal");
-    let normal_values = normal_node.map(|n| floats(doc, n, "vector"));
-    let normal_per_vertex = boolean(doc, geometry, "normalPerVertex", true);
+    let polygonal = Polygonal::read(doc, geometry, points.len() / 3)?;
+    let normal_values = child(doc, geometry, "normal").map(|n| floats(doc, n, "vector"));
     let normals = normal_values
-        .as_ref()
+        .as_deref()
         .filter(|_| needs.normals)
-        .map(|values| Attribute {
-            values,
-            arity: 3,
-            binding: if normal_per_vertex {
-                per_vertex_binding("normalIndex")
-            } else {
-                face_binding("normalIndex")
-            },
-        });
+        .map(|values| Attribute::of(&polygonal, Kind::Normal, values, 3));
+    // Only IndexedFaceSet has colorPerVertex FALSE; the sets ignore it (model::faces).
     let color = color_attribute(doc, geometry);
-    // Only IndexedFaceSet has colorPerVertex FALSE; the sets ignore it (11.4).
-    let color_per_vertex = !is_ifs || boolean(doc, geometry, "colorPerVertex", true);
-    let colors = color.as_ref().map(|(values, arity)| Attribute {
-        values,
-        arity: *arity,
-        binding: if color_per_vertex {
-            per_vertex_binding("colorIndex")
-        } else {
-            face_binding("colorIndex")
-        },
-    });
+    let colors = color
+        .as_ref()
+        .map(|(values, arity)| Attribute::of(&polygonal, Kind::Color, values, *arity));
     let tex_node = needs.tex_coord_node();
     if tex_node.is_some_and(|t| !super::fields::type_is(doc, t, "TextureCoordinate")) {
         return None;
     }
     let tex_values = tex_node.map(|t| floats(doc, t, "point"));
-    let tex_coords = tex_values.as_ref().map(|values| Attribute {
-        values,
-        arity: 2,
-        binding: per_vertex_binding("texCoordIndex"),
-    });
+    let tex_coords = tex_values
+        .as_deref()
+        .map(|values| Attribute::of(&polygonal, Kind::TexCoord, values, 2));
+    let normal_per_vertex = boolean(doc, geometry, "normalPerVertex", true);
     let generation = match name {
-        "IndexedFaceSet" => {
-            let angle = float(doc, geometry, "creaseAngle", 0.0);
-            if angle <= 0.0 {
-                NormalGeneration::Flat
-            } else if angle >= PI {
-                NormalGeneration::Smooth
-            } else {
-                NormalGeneration::Crease(f64::from(angle))
-            }
-        }
+        "IndexedFaceSet" => crease_generation(doc, geometry),
         "TriangleSet" | "QuadSet" | "IndexedQuadSet" => NormalGeneration::Flat,
         _ if normal_per_vertex => NormalGeneration::Smooth,
         _ => NormalGeneration::Flat,
     };
     Some(polygons::build(Inputs {
         points: &points,
-        faces,
+        faces: faces_of(&polygonal, points.len() / 3, [normals, colors, tex_coords]),
         default_tex_coords: needs.tex_coords.is_some() && tex_coords.is_none(),
         normals,
         generation,
@@ -249,150 +165,84 @@ fn composed(doc: &Document, geometry: NodeId, name: &str, needs: Needs) -> Optio
     }))
 }
 
-/// Consecutive groups of `size` indices as faces (an incomplete last group is dropped).
-fn groups(index: impl Iterator<Item = i64>, size: usize, point_count: usize) -> Faces {
-    let list: Vec<i64> = index.collect();
-    let mut faces = Faces::new();
-    for (g, group) in list.chunks_exact(size).enumerate() {
-        if group.iter().all(|&i| i >= 0 && (i as usize) < point_count) {
-            for (k, &i) in group.iter().enumerate() {
-                faces.push_corner(i as u32, g * size + k);
-            }
-            faces.end_face();
-        }
+/// The faces, with per-corner elements for the attributes not bound by coordinate.
+fn faces_of(
+    polygonal: &Polygonal,
+    point_count: usize,
+    attributes: [Option<Attribute>; 3],
+) -> Faces {
+    let per_corner: Vec<Kind> = attributes
+        .iter()
+        .flatten()
+        .filter(|a| !a.by_coord)
+        .map(|a| a.kind)
+        .collect();
+    Faces::of(polygonal, point_count, &per_corner)
+}
+
+/// Normals from creaseAngle (13.3.6): flat at 0, smooth from π.
+fn crease_generation(doc: &Document, geometry: NodeId) -> NormalGeneration {
+    let angle = float(doc, geometry, "creaseAngle", 0.0);
+    if angle <= 0.0 {
+        NormalGeneration::Flat
+    } else if angle >= PI {
+        NormalGeneration::Smooth
+    } else {
+        NormalGeneration::Crease(f64::from(angle))
     }
-    faces
 }
 
-fn split_at_minus_one(index: &[i32]) -> Vec<Vec<i64>> {
-    index
-        .split(|&i| i < 0)
-        .map(|run| run.iter().map(|&i| i64::from(i)).collect())
-        .collect()
-}
-
-/// Triangles of strips (alternating winding) or fans.
-fn strips_or_fans(runs: &[Vec<i64>], fans: bool, point_count: usize) -> Faces {
-    let mut faces = Faces::new();
-    let ok = |i: i64| i >= 0 && (i as usize) < point_count;
-    for run in runs {
-        for k in 2..run.len() {
-            let triangle = if fans {
-                [run[0], run[k - 1], run[k]]
-            } else if k % 2 == 0 {
-                [run[k - 2], run[k - 1], run[k]]
-            } else {
-                [run[k - 1], run[k - 2], run[k]]
-            };
-            if triangle.iter().all(|&i| ok(i)) {
-                for i in triangle {
-                    // Vertex attributes of these sets are bound by coordinate index.
-                    faces.push_corner(i as u32, i as usize);
-                }
-                faces.end_face();
-            }
-        }
-    }
-    faces
-}
-
-fn elevation_grid(doc: &Document, geometry: NodeId, needs: Needs) -> LocalMesh {
+/// ElevationGrid: its grid cut to the rows its heights fill (model::faces).
+fn elevation_grid(doc: &Document, geometry: NodeId, needs: Needs) -> Option<LocalMesh> {
+    let polygonal = Polygonal::read(doc, geometry, 0)?;
     let x_dim = doc.i32_of(geometry, "xDimension").unwrap_or(0).max(0) as usize;
     let z_dim = doc.i32_of(geometry, "zDimension").unwrap_or(0).max(0) as usize;
     let x_spacing = float(doc, geometry, "xSpacing", 1.0);
     let z_spacing = float(doc, geometry, "zSpacing", 1.0);
     let heights = floats(doc, geometry, "height");
-    let count = x_dim.saturating_mul(z_dim).min(heights.len());
-    if x_dim < 2 || z_dim < 2 || count < x_dim * z_dim {
-        return polygons::build(Inputs {
-            points: &[],
-            faces: Faces::new(),
-            normals: None,
-            generation: NormalGeneration::Flat,
-            need_normals: needs.normals,
-            colors: None,
-            tex_coords: None,
-            default_tex_coords: false,
-        });
-    }
+    let count = polygonal.stream_len();
     let mut points = Vec::with_capacity(count * 3);
-    for z in 0..z_dim {
-        for x in 0..x_dim {
-            points.extend_from_slice(&[
-                x as f32 * x_spacing,
-                heights[z * x_dim + x],
-                z as f32 * z_spacing,
-            ]);
-        }
-    }
-    // Quads are (x, z), (x, z+1), (x+1, z+1), (x+1, z): counterclockwise seen from +Y.
-    let mut index = Vec::with_capacity((x_dim - 1) * (z_dim - 1) * 5);
-    for z in 0..z_dim - 1 {
-        for x in 0..x_dim - 1 {
-            let at = |x: usize, z: usize| (z * x_dim + x) as i32;
-            index.extend_from_slice(&[at(x, z), at(x, z + 1), at(x + 1, z + 1), at(x + 1, z), -1]);
-        }
-    }
-    let mut faces = Faces::from_index_list(&index, count);
-    if !boolean(doc, geometry, "ccw", true) {
-        faces.reverse_each();
+    for (k, &height) in heights.iter().take(count).enumerate() {
+        let (x, z) = (k % x_dim, k / x_dim);
+        points.extend_from_slice(&[x as f32 * x_spacing, height, z as f32 * z_spacing]);
     }
     let normal_values = child(doc, geometry, "normal").map(|n| floats(doc, n, "vector"));
-    let per_vertex = |yes: bool| {
-        if yes {
-            Binding::ByCoord
-        } else {
-            Binding::ByFace(None)
-        }
-    };
     let normals = normal_values
-        .as_ref()
+        .as_deref()
         .filter(|_| needs.normals)
-        .map(|values| Attribute {
-            values,
-            arity: 3,
-            binding: per_vertex(boolean(doc, geometry, "normalPerVertex", true)),
-        });
+        .map(|values| Attribute::of(&polygonal, Kind::Normal, values, 3));
     let color = color_attribute(doc, geometry);
-    let colors = color.as_ref().map(|(values, arity)| Attribute {
-        values,
-        arity: *arity,
-        binding: per_vertex(boolean(doc, geometry, "colorPerVertex", true)),
-    });
+    let colors = color
+        .as_ref()
+        .map(|(values, arity)| Attribute::of(&polygonal, Kind::Color, values, *arity));
     // Default mapping (18.2.4): s along x, t along z, each from 0 to 1.
-    let default_tex: Vec<f32> = (0..z_dim)
-        .flat_map(|z| {
-            (0..x_dim)
-                .flat_map(move |x| [x as f32 / (x_dim - 1) as f32, z as f32 / (z_dim - 1) as f32])
+    let step = |n: usize| 1.0 / n.saturating_sub(1).max(1) as f32;
+    let default_tex: Vec<f32> = (0..count)
+        .flat_map(|k| {
+            [
+                (k % x_dim) as f32 * step(x_dim),
+                (k / x_dim) as f32 * step(z_dim),
+            ]
         })
         .collect();
     let tex_values = needs
         .tex_coord_node()
         .filter(|&t| super::fields::type_is(doc, t, "TextureCoordinate"))
         .map(|t| floats(doc, t, "point"));
-    let tex_coords = needs.tex_coords.is_some().then(|| Attribute {
-        values: tex_values.as_deref().unwrap_or(&default_tex),
-        arity: 2,
-        binding: Binding::ByCoord,
+    let tex_coords = needs.tex_coords.is_some().then(|| {
+        let values = tex_values.as_deref().unwrap_or(&default_tex);
+        Attribute::of(&polygonal, Kind::TexCoord, values, 2)
     });
-    let angle = float(doc, geometry, "creaseAngle", 0.0);
-    let generation = if angle <= 0.0 {
-        NormalGeneration::Flat
-    } else if angle >= PI {
-        NormalGeneration::Smooth
-    } else {
-        NormalGeneration::Crease(f64::from(angle))
-    };
-    polygons::build(Inputs {
+    Some(polygons::build(Inputs {
         points: &points,
-        faces,
+        faces: faces_of(&polygonal, count, [normals, colors, tex_coords]),
         normals,
-        generation,
+        generation: crease_generation(doc, geometry),
         need_normals: needs.normals,
         colors,
         tex_coords,
         default_tex_coords: false,
-    })
+    }))
 }
 
 fn lines_or_points(doc: &Document, geometry: NodeId, name: &str) -> Built {

@@ -525,10 +525,10 @@ impl<'a> Renderer<'a> {
                 }),
             }],
         });
-        let buffers: Vec<(wgpu::Buffer, wgpu::Buffer)> = order
+        let buffers = order
             .iter()
             .map(|&index| self.mesh_buffers(&list.meshes[index]))
-            .collect();
+            .collect::<Result<Vec<_>, _>>()?;
         let mut pipelines: HashMap<PipelineKey, wgpu::RenderPipeline> = HashMap::new();
         for &index in &order {
             let key = pipeline_key(&list.meshes[index]);
@@ -584,22 +584,40 @@ impl<'a> Renderer<'a> {
         Ok(pixels)
     }
 
-    fn mesh_buffers(&self, mesh: &Mesh) -> (wgpu::Buffer, wgpu::Buffer) {
-        let vertices: Vec<Vertex> = (0..mesh.positions.len())
-            .map(|i| Vertex {
-                position: mesh.positions[i],
-                normal: mesh.normals.as_ref().map_or([0.0; 3], |n| n[i]),
-                color: mesh.colors.as_ref().map_or([1.0; 4], |c| c[i]),
-                tex_coord: mesh.tex_coords.as_ref().map_or([0.0; 2], |t| t[i]),
-            })
-            .collect();
-        let vertex_buffer = self
-            .device
-            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: Some("vertices"),
-                contents: bytemuck::cast_slice(&vertices),
-                usage: wgpu::BufferUsages::VERTEX,
-            });
+    /// The mesh's vertex and index buffers. Vertices are interleaved in small batches
+    /// straight into the mapped buffer: no full intermediate copy of a large mesh.
+    fn mesh_buffers(&self, mesh: &Mesh) -> Result<(wgpu::Buffer, wgpu::Buffer), GpuError> {
+        const BATCH: usize = 4096;
+        let count = mesh.positions.len();
+        let stride = size_of::<Vertex>();
+        // A zero-sized buffer cannot be mapped; an empty mesh draws nothing anyway.
+        let vertex_buffer = self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("vertices"),
+            size: (count.max(1) * stride) as u64,
+            usage: wgpu::BufferUsages::VERTEX,
+            mapped_at_creation: true,
+        });
+        {
+            let mut mapped = vertex_buffer
+                .slice(..)
+                .get_mapped_range_mut()
+                .map_err(|e| GpuError::Failed(e.to_string()))?;
+            let mut batch = Vec::with_capacity(BATCH.min(count));
+            for start in (0..count).step_by(BATCH) {
+                batch.clear();
+                batch.extend((start..count.min(start + BATCH)).map(|i| Vertex {
+                    position: mesh.positions[i],
+                    normal: mesh.normals.as_ref().map_or([0.0; 3], |n| n[i]),
+                    color: mesh.colors.as_ref().map_or([1.0; 4], |c| c[i]),
+                    tex_coord: mesh.tex_coords.as_ref().map_or([0.0; 2], |t| t[i]),
+                }));
+                let bytes: &[u8] = bytemuck::cast_slice(&batch);
+                mapped
+                    .slice(start * stride..start * stride + bytes.len())
+                    .copy_from_slice(bytes);
+            }
+        }
+        vertex_buffer.unmap();
         let index_buffer = self
             .device
             .create_buffer_init(&wgpu::util::BufferInitDescriptor {
@@ -607,7 +625,7 @@ impl<'a> Renderer<'a> {
                 contents: bytemuck::cast_slice(&mesh.indices),
                 usage: wgpu::BufferUsages::INDEX,
             });
-        (vertex_buffer, index_buffer)
+        Ok((vertex_buffer, index_buffer))
     }
 
     async fn read_back(

@@ -5,25 +5,28 @@
 
 use super::draw_list::Primitive;
 use super::geometry::LocalMesh;
+use crate::model::faces::{Attribute as Kind, Binding, Polygonal};
 
-/// Where a vertex attribute's values come from.
-#[derive(Clone, Copy)]
-#[allow(clippy::enum_variant_names)] // "by" is what each variant says
-pub enum Binding<'a> {
-    /// The attribute's own index list, parallel to the coordinate index list (slot).
-    BySlot(&'a [i32]),
-    /// The same index as the coordinate.
-    ByCoord,
-    /// One value per face: the face's entry of the index list, or the face number.
-    ByFace(Option<&'a [i32]>),
-}
-
-/// An attribute: flat values, values per element, and their binding.
+/// An attribute: flat values, values per element, and which of the node's attributes it
+/// is (model::faces binds it to the corners).
 #[derive(Clone, Copy)]
 pub struct Attribute<'a> {
     pub values: &'a [f32],
     pub arity: usize,
-    pub binding: Binding<'a>,
+    pub kind: Kind,
+    /// Bound by coordinate index (grid vertex), as coordinates are: vertices can be shared.
+    pub by_coord: bool,
+}
+
+impl<'a> Attribute<'a> {
+    pub fn of(geometry: &Polygonal, kind: Kind, values: &'a [f32], arity: usize) -> Self {
+        Attribute {
+            values,
+            arity,
+            kind,
+            by_coord: geometry.binding(kind) == Binding::PerVertex { index: None },
+        }
+    }
 }
 
 #[derive(Clone, Copy, PartialEq)]
@@ -35,38 +38,65 @@ pub enum NormalGeneration {
     Crease(f64),
 }
 
-/// Faces as lists of corners; each corner is its coordinate index and its slot (position
-/// in the index list the document gave, for per-vertex attribute index lists).
+const KINDS: [Kind; 3] = [Kind::Color, Kind::Normal, Kind::TexCoord];
+
+fn slot(kind: Kind) -> usize {
+    KINDS.iter().position(|&k| k == kind).unwrap_or(0)
+}
+
+/// The faces of a polygonal node (read by model::faces) whose corners all index existing
+/// points, wound counterclockwise; each corner is its coordinate index and, for the
+/// attributes not bound by coordinate, the element of that attribute it uses.
 #[derive(Default)]
 pub struct Faces {
     pub corner_coords: Vec<u32>,
-    pub corner_slots: Vec<u32>,
+    /// Per attribute (in [`KINDS`] order): the element each corner uses (u32::MAX: none).
+    elements: [Vec<u32>; 3],
     /// Face k is corners `starts[k]..starts[k + 1]`.
     pub starts: Vec<usize>,
 }
 
 impl Faces {
-    pub fn new() -> Faces {
-        Faces {
+    /// Faces with an index outside `0..point_count` are dropped, as are faces of fewer than
+    /// three corners; `ccw FALSE` faces are reversed. `per_corner` lists the attributes
+    /// whose elements are looked up per corner.
+    pub fn of(geometry: &Polygonal, point_count: usize, per_corner: &[Kind]) -> Faces {
+        let mut faces = Faces {
             starts: vec![0],
             ..Faces::default()
+        };
+        let coord = |position| {
+            geometry
+                .coord_index(position)
+                .filter(|&c| c < point_count)
+                .map(|c| c as u32)
+        };
+        for face in geometry.faces() {
+            if face.len() < 3 || !face.corners().all(|p| coord(p).is_some()) {
+                continue;
+            }
+            let start = faces.corner_coords.len();
+            for position in face.corners() {
+                faces.corner_coords.extend(coord(position));
+                for &kind in per_corner {
+                    let element = geometry.attribute_index(kind, &face, position);
+                    faces.elements[slot(kind)].push(
+                        element
+                            .and_then(|e| u32::try_from(e).ok())
+                            .unwrap_or(u32::MAX),
+                    );
+                }
+            }
+            let end = faces.corner_coords.len();
+            if !geometry.ccw {
+                faces.corner_coords[start..end].reverse();
+                for &kind in per_corner {
+                    faces.elements[slot(kind)][start..end].reverse();
+                }
+            }
+            faces.starts.push(end);
         }
-    }
-
-    pub fn push_corner(&mut self, coord: u32, slot: usize) {
-        self.corner_coords.push(coord);
-        self.corner_slots.push(slot as u32);
-    }
-
-    /// Ends a face; faces with fewer than three corners are dropped.
-    pub fn end_face(&mut self) {
-        let start = *self.starts.last().unwrap_or(&0);
-        if self.corner_coords.len() - start < 3 {
-            self.corner_coords.truncate(start);
-            self.corner_slots.truncate(start);
-        } else {
-            self.starts.push(self.corner_coords.len());
-        }
+        faces
     }
 
     pub fn face_count(&self) -> usize {
@@ -75,48 +105,6 @@ impl Faces {
 
     fn face(&self, k: usize) -> std::ops::Range<usize> {
         self.starts[k]..self.starts[k + 1]
-    }
-
-    /// Faces delimited by −1 (or the end) in an index list; faces with an index out of
-    /// `0..point_count` are dropped.
-    pub fn from_index_list(index: &[i32], point_count: usize) -> Faces {
-        let mut faces = Faces::new();
-        let mut valid = true;
-        for (slot, &i) in index.iter().enumerate() {
-            if i < 0 {
-                if valid {
-                    faces.end_face();
-                } else {
-                    faces.discard_open_face();
-                }
-                valid = true;
-            } else if (i as usize) < point_count {
-                faces.push_corner(i as u32, slot);
-            } else {
-                valid = false;
-            }
-        }
-        if valid {
-            faces.end_face();
-        } else {
-            faces.discard_open_face();
-        }
-        faces
-    }
-
-    fn discard_open_face(&mut self) {
-        let start = *self.starts.last().unwrap_or(&0);
-        self.corner_coords.truncate(start);
-        self.corner_slots.truncate(start);
-    }
-
-    /// Reverses every face (ccw FALSE), so that what follows can assume counterclockwise.
-    pub fn reverse_each(&mut self) {
-        for k in 0..self.face_count() {
-            let r = self.face(k);
-            self.corner_coords[r.clone()].reverse();
-            self.corner_slots[r].reverse();
-        }
     }
 }
 
@@ -170,10 +158,7 @@ pub fn build(inputs: Inputs) -> LocalMesh {
         }
     }
 
-    let by_coord = |a: &Option<Attribute>| {
-        a.as_ref()
-            .is_none_or(|a| matches!(a.binding, Binding::ByCoord))
-    };
+    let by_coord = |a: &Option<Attribute>| a.as_ref().is_none_or(|a| a.by_coord);
     let shared = by_coord(&inputs.normals)
         && by_coord(&inputs.colors)
         && by_coord(&inputs.tex_coords)
@@ -231,13 +216,10 @@ pub fn build(inputs: Inputs) -> LocalMesh {
     let gather = |a: &Attribute, fallback: &[f32]| -> Vec<f32> {
         let mut out = Vec::with_capacity(corner_count * a.arity);
         for corner in 0..corner_count {
-            let element = match a.binding {
-                Binding::ByCoord => Some(faces.corner_coords[corner] as i64),
-                Binding::BySlot(index) => index
-                    .get(faces.corner_slots[corner] as usize)
-                    .map(|&i| i64::from(i)),
-                Binding::ByFace(Some(index)) => index.get(face_of[corner]).map(|&i| i64::from(i)),
-                Binding::ByFace(None) => Some(face_of[corner] as i64),
+            let element = if a.by_coord {
+                faces.corner_coords[corner]
+            } else {
+                faces.elements[slot(a.kind)][corner]
             };
             out.extend_from_slice(value_at(a, element).unwrap_or(fallback));
         }
@@ -283,8 +265,8 @@ pub fn build(inputs: Inputs) -> LocalMesh {
 
 const WHITE: [f32; 4] = [1.0; 4];
 
-fn value_at<'a>(a: &Attribute<'a>, element: Option<i64>) -> Option<&'a [f32]> {
-    let e = usize::try_from(element?).ok()?;
+fn value_at<'a>(a: &Attribute<'a>, element: u32) -> Option<&'a [f32]> {
+    let e = element as usize;
     a.values.get(e * a.arity..e * a.arity + a.arity)
 }
 
@@ -292,14 +274,14 @@ fn per_coord_any(a: &Attribute, count: usize) -> Vec<f32> {
     let fallback = &WHITE[..a.arity];
     let mut out = Vec::with_capacity(count * a.arity);
     for i in 0..count {
-        out.extend_from_slice(value_at(a, Some(i as i64)).unwrap_or(fallback));
+        out.extend_from_slice(value_at(a, i as u32).unwrap_or(fallback));
     }
     out
 }
 
 fn per_coord(a: &Attribute, count: usize, fallback: [f32; 3]) -> Vec<[f32; 3]> {
     (0..count)
-        .map(|i| value_at(a, Some(i as i64)).map_or(fallback, |v| [v[0], v[1], v[2]]))
+        .map(|i| value_at(a, i as u32).map_or(fallback, |v| [v[0], v[1], v[2]]))
         .collect()
 }
 
@@ -560,10 +542,18 @@ mod tests {
     }
 
     #[test]
-    fn faces_with_bad_indices_are_dropped() {
-        let faces = Faces::from_index_list(&[0, 1, 2, -1, 0, 9, 2, -1, 0, 1, -1, 2, 1, 0], 3);
+    fn faces_with_bad_indices_are_dropped_and_attributes_keep_face_numbers() {
+        // Face 1 has index 9 (out of range), face 2 only two corners; colours per face.
+        let source = "<X3D><Scene><Shape><IndexedFaceSet colorPerVertex='false' \
+                      coordIndex='0 1 2 -1 0 9 2 -1 0 1 -1 2 1 0'>\
+                      <Coordinate point='0 0 0 1 0 0 0 1 0'/></IndexedFaceSet></Shape></Scene></X3D>";
+        let doc = crate::parse::read(source.as_bytes()).document.unwrap();
+        let ifs = doc.nodes_of_type("IndexedFaceSet").next().unwrap();
+        let polygonal = Polygonal::read(&doc, ifs, 3).unwrap();
+        let faces = Faces::of(&polygonal, 3, &[Kind::Color]);
         assert_eq!(faces.face_count(), 2);
         assert_eq!(faces.corner_coords, vec![0, 1, 2, 2, 1, 0]);
-        assert_eq!(faces.corner_slots, vec![0, 1, 2, 11, 12, 13]);
+        // The last face is face number 3 of the node, whatever was dropped before it.
+        assert_eq!(faces.elements[slot(Kind::Color)], vec![0, 0, 0, 3, 3, 3]);
     }
 }
