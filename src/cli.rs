@@ -266,7 +266,10 @@ fn known_rule(code: &str, option: &str) -> Result<&'static Rule, String> {
 enum Input {
     Stdin(Vec<u8>),
     /// A file, with the directory tree its references (textures, Inlines) may be read from.
-    File { path: PathBuf, root: PathBuf },
+    File {
+        path: PathBuf,
+        root: PathBuf,
+    },
 }
 
 /// The inputs in argument order, each directory's files sorted by path. Unreadable paths
@@ -291,9 +294,15 @@ fn find_inputs(paths: &[PathBuf]) -> (Vec<Input>, bool) {
                 let mut files = Vec::new();
                 walk(path, &mut files, &mut fail);
                 files.sort();
-                inputs.extend(files.into_iter().map(|file| Input::File { path: file, root: path.clone() }));
+                inputs.extend(files.into_iter().map(|file| Input::File {
+                    path: file,
+                    root: path.clone(),
+                }));
             }
-            Ok(_) => inputs.push(Input::File { path: path.clone(), root: file_root(path) }),
+            Ok(_) => inputs.push(Input::File {
+                path: path.clone(),
+                root: file_root(path),
+            }),
             Err(e) => fail(path, e),
         }
     }
@@ -304,7 +313,10 @@ fn find_inputs(paths: &[PathBuf]) -> (Vec<Input>, bool) {
 /// directory when the file lies in it (textures in a sibling `../textures` folder are
 /// common), else the file's own directory. A directory argument is its own root.
 fn file_root(file: &Path) -> PathBuf {
-    let directory = file.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let directory = file
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
     match (std::env::current_dir(), directory.canonicalize()) {
         (Ok(current), Ok(directory)) if directory.starts_with(&current) => current,
         _ => directory.to_path_buf(),

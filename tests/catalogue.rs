@@ -26,12 +26,22 @@ fn catalogue() -> Vec<Entry> {
             fast_section = line.starts_with("## 1.");
         }
         let cells: Vec<&str> = line.split('|').map(str::trim).collect();
-        let (Some(code), Some(severity)) = (cells.get(1), cells.get(2)) else { continue };
-        if code.is_empty() || !code.chars().all(|c| c.is_ascii_uppercase() || c.is_ascii_digit() || c == '_') {
+        let (Some(code), Some(severity)) = (cells.get(1), cells.get(2)) else {
+            continue;
+        };
+        if code.is_empty()
+            || !code
+                .chars()
+                .all(|c| c.is_ascii_uppercase() || c.is_ascii_digit() || c == '_')
+        {
             continue;
         }
-        let first_word = severity.split(|c: char| !c.is_ascii_alphabetic()).next().unwrap_or("");
-        let severity_value = Severity::parse(first_word).unwrap_or_else(|| panic!("{code}: severity `{severity}`"));
+        let first_word = severity
+            .split(|c: char| !c.is_ascii_alphabetic())
+            .next()
+            .unwrap_or("");
+        let severity_value =
+            Severity::parse(first_word).unwrap_or_else(|| panic!("{code}: severity `{severity}`"));
         let level = if fast_section {
             Level::Fast
         } else if severity.contains("deep") {
@@ -39,7 +49,11 @@ fn catalogue() -> Vec<Entry> {
         } else {
             Level::Standard
         };
-        entries.push(Entry { code: code.to_string(), severity: severity_value, level });
+        entries.push(Entry {
+            code: code.to_string(),
+            severity: severity_value,
+            level,
+        });
     }
     entries
 }
@@ -47,20 +61,36 @@ fn catalogue() -> Vec<Entry> {
 #[test]
 fn every_catalogue_code_is_implemented_as_catalogued() {
     let entries = catalogue();
-    assert!(entries.len() >= 89, "read only {} codes from RULES.md", entries.len());
+    assert!(
+        entries.len() >= 89,
+        "read only {} codes from RULES.md",
+        entries.len()
+    );
     let mut problems = Vec::new();
     for entry in &entries {
         match find_rule(&entry.code) {
             None => problems.push(format!("{}: not implemented", entry.code)),
             Some(rule) => {
                 if rule.severity != entry.severity {
-                    problems.push(format!("{}: severity {} (catalogue: {})", entry.code, rule.severity, entry.severity));
+                    problems.push(format!(
+                        "{}: severity {} (catalogue: {})",
+                        entry.code, rule.severity, entry.severity
+                    ));
                 }
                 if rule.level != entry.level {
-                    problems.push(format!("{}: level {:?} (catalogue: {:?})", entry.code, rule.level, entry.level));
+                    problems.push(format!(
+                        "{}: level {:?} (catalogue: {:?})",
+                        entry.code, rule.level, entry.level
+                    ));
                 }
             }
         }
     }
-    assert!(problems.is_empty(), "{} of {} codes:\n{}", problems.len(), entries.len(), problems.join("\n"));
+    assert!(
+        problems.is_empty(),
+        "{} of {} codes:\n{}",
+        problems.len(),
+        entries.len(),
+        problems.join("\n")
+    );
 }

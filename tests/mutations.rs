@@ -40,7 +40,10 @@ fn sample() -> Vec<PathBuf> {
             let path = entry.path();
             if entry.file_type().unwrap().is_dir() {
                 dirs.push(path);
-            } else if matches!(path.extension().and_then(|e| e.to_str()), Some("x3d" | "json" | "x3dj")) {
+            } else if matches!(
+                path.extension().and_then(|e| e.to_str()),
+                Some("x3d" | "json" | "x3dj")
+            ) {
                 files.push(path);
             }
         }
@@ -80,7 +83,10 @@ fn mutants(bytes: &[u8], rng: &mut Rng) -> Vec<(String, Vec<u8>)> {
 
 #[test]
 fn mutated_corpus_files_are_checked_without_panic_or_hang() {
-    let config = CheckConfig { level: Level::Deep, ..CheckConfig::default() };
+    let config = CheckConfig {
+        level: Level::Deep,
+        ..CheckConfig::default()
+    };
     let mut rng = Rng(0x5EED);
     let mut problems = Vec::new();
     let mut checked = 0;
@@ -92,7 +98,8 @@ fn mutated_corpus_files_are_checked_without_panic_or_hang() {
         for (what, mutant) in mutants(&bytes, &mut rng) {
             let name = format!("{} ({what})", path.display());
             let started = Instant::now();
-            let result = std::panic::catch_unwind(|| x3dcheck::check_source(&name, &mutant, &config));
+            let result =
+                std::panic::catch_unwind(|| x3dcheck::check_source(&name, &mutant, &config));
             checked += 1;
             if result.is_err() {
                 problems.push(format!("{name}: panicked"));
@@ -102,22 +109,39 @@ fn mutated_corpus_files_are_checked_without_panic_or_hang() {
         }
     }
     assert!(checked > 300, "only {checked} mutants were checked");
-    assert!(problems.is_empty(), "{} of {checked} mutants:\n{}", problems.len(), problems.join("\n"));
+    assert!(
+        problems.is_empty(),
+        "{} of {checked} mutants:\n{}",
+        problems.len(),
+        problems.join("\n")
+    );
 }
 
 /// DEF/USE can make a small file stand for 2^199 node instances (a "billion laughs" made
 /// of USE); whatever visits instances must not try to visit them all.
 #[test]
 fn exponential_use_expansion_is_checked_quickly() {
-    let mut scene = String::from("<X3D profile='Interchange' version='4.0'><Scene><Group DEF='L0'/>");
+    let mut scene =
+        String::from("<X3D profile='Interchange' version='4.0'><Scene><Group DEF='L0'/>");
     for i in 1..200 {
-        scene.push_str(&format!("<Group DEF='L{i}'><Group USE='L{}'/><Group USE='L{}'/></Group>", i - 1, i - 1));
+        scene.push_str(&format!(
+            "<Group DEF='L{i}'><Group USE='L{}'/><Group USE='L{}'/></Group>",
+            i - 1,
+            i - 1
+        ));
     }
     scene.push_str("<Shape><Box/></Shape></Scene></X3D>");
-    let config = CheckConfig { level: Level::Deep, ..CheckConfig::default() };
+    let config = CheckConfig {
+        level: Level::Deep,
+        ..CheckConfig::default()
+    };
     let started = Instant::now();
     let report = x3dcheck::check_source("laughs.x3d", scene.as_bytes(), &config);
-    assert!(started.elapsed() < MAX_TIME_PER_MUTANT, "took {:?}", started.elapsed());
+    assert!(
+        started.elapsed() < MAX_TIME_PER_MUTANT,
+        "took {:?}",
+        started.elapsed()
+    );
     assert_eq!(report.stats.nodes, 202);
     let doc = x3dcheck::parse::read(scene.as_bytes()).document.unwrap();
     assert_eq!(doc.instances(), u64::MAX, "2^200 instances saturate");

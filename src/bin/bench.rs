@@ -28,7 +28,7 @@ use std::time::{Instant, SystemTime, UNIX_EPOCH};
 use clap::Parser;
 use serde_json::Value;
 
-use measure::{median_cores, median_wall, on_path, peak_bytes, Sample, Timer};
+use measure::{median_cores, median_wall, on_path, peak_bytes, wall_range, Sample, Timer};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -144,10 +144,11 @@ fn bench(args: &Args, runs: usize, dir: &Path, scratch: &Path) -> Result<(), Str
     );
     let _ = writeln!(
         out,
-        "Scene: 6 Shapes × IndexedTriangleSet of {} vertices and {} triangles (Coordinate, \
+        "Scene: {} Shapes × IndexedTriangleSet of {} vertices and {} triangles (Coordinate, \
          Normal, TextureCoordinate, index), generator v{}\n\
          - XML:  {} ({} bytes, {:.1} MB)\n\
          - JSON: {} ({} bytes, {:.1} MB)\n",
+        scene::SHAPES,
         thousands(scene.vertices as u64),
         thousands(scene.triangles as u64),
         scene::GENERATOR_VERSION,
@@ -170,7 +171,13 @@ fn bench(args: &Args, runs: usize, dir: &Path, scratch: &Path) -> Result<(), Str
             .map_err(|e| format!("x3dcheck --level {level} failed on the XML scene: {e}"))?;
         if level == "standard" {
             xml_stats = case.stats.clone();
-            check_stats(&case, 6, scene.triangles as u64 * 6, "XML", &mut notes);
+            check_stats(
+                &case,
+                scene::SHAPES as u64,
+                (scene.triangles * scene::SHAPES) as u64,
+                "XML",
+                &mut notes,
+            );
         }
         rows.push(Row::x3dcheck(level, "XML", xml_bytes, case));
     }
@@ -178,7 +185,10 @@ fn bench(args: &Args, runs: usize, dir: &Path, scratch: &Path) -> Result<(), Str
     // x3dcheck on JSON, when its reader accepts the file.
     eprintln!("x3dcheck-bench: trying the JSON scene");
     match time_x3dcheck(&timer, &x3dcheck, "standard", &scene.json, 1, scratch) {
-        Ok(probe) if probe.encoding.as_deref() == Some("json") && probe.shapes == Some(6) => {
+        Ok(probe)
+            if probe.encoding.as_deref() == Some("json")
+                && probe.shapes == Some(scene::SHAPES as u64) =>
+        {
             for level in LEVELS {
                 eprintln!("x3dcheck-bench: x3dcheck --level {level} (JSON) ×{runs}");
                 let case = time_x3dcheck(&timer, &x3dcheck, level, &scene.json, runs, scratch)
@@ -186,7 +196,13 @@ fn bench(args: &Args, runs: usize, dir: &Path, scratch: &Path) -> Result<(), Str
                         format!("x3dcheck --level {level} failed on the JSON scene: {e}")
                     })?;
                 if level == "standard" {
-                    check_stats(&case, 6, scene.triangles as u64 * 6, "JSON", &mut notes);
+                    check_stats(
+                        &case,
+                        scene::SHAPES as u64,
+                        (scene.triangles * scene::SHAPES) as u64,
+                        "JSON",
+                        &mut notes,
+                    );
                     let same = xml_stats.is_some() && xml_stats == case.stats;
                     notes.push(format!(
                         "XML and JSON `stats` in the report: {}",
@@ -520,6 +536,8 @@ struct Row {
     level: Option<&'static str>,
     bytes: u64,
     median: f64,
+    /// The fastest and slowest run.
+    range: (f64, f64),
     runs: usize,
     peak: Option<u64>,
     found: String,
@@ -537,6 +555,7 @@ impl Row {
             level: Some(level),
             bytes,
             median: median_wall(&case.samples),
+            range: wall_range(&case.samples),
             runs: case.samples.len(),
             peak: peak_bytes(&case.samples),
             found: format!("{e} E, {w} W, {i} I, {h} H (exit {})", case.code),
@@ -557,6 +576,7 @@ impl Row {
             level: None,
             bytes,
             median: median_wall(&case.samples),
+            range: wall_range(&case.samples),
             runs: case.samples.len(),
             peak: peak_bytes(&case.samples),
             found,
@@ -576,9 +596,9 @@ fn table(
 ) {
     let _ = writeln!(
         out,
-        "| what | time (median) | MB/s | peak RSS | RSS / file size | vs `xmllint --noout` | found |"
+        "| what | time (median) | min–max | MB/s | peak RSS | RSS / file size | vs `xmllint --noout` | found |"
     );
-    let _ = writeln!(out, "|---|--:|--:|--:|--:|--:|---|");
+    let _ = writeln!(out, "|---|--:|--:|--:|--:|--:|--:|---|");
     for row in rows {
         let ratio = match noout {
             None => "—".to_string(),
@@ -587,7 +607,7 @@ fn table(
         };
         let _ = writeln!(
             out,
-            "| {} | {}{} | {} | {} | {} | {} | {} |",
+            "| {} | {}{} | {} | {} | {} | {} | {} | {} |",
             row.what,
             seconds(row.median),
             if row.runs == runs {
@@ -597,6 +617,15 @@ fn table(
                     " ({} run{})",
                     row.runs,
                     if row.runs == 1 { "" } else { "s" }
+                )
+            },
+            if row.runs == 1 {
+                "—".to_string()
+            } else {
+                format!(
+                    "{}–{}",
+                    seconds_bare(row.range.0),
+                    seconds_bare(row.range.1)
                 )
             },
             throughput(row.bytes, row.median),
@@ -610,13 +639,21 @@ fn table(
             row.found,
         );
     }
+    let schema = if rows.iter().any(|r| r.peer == Some(Peer::Schema)) {
+        format!(
+            " (the schema validation: {schema_runs} run{}, no warm-up)",
+            if schema_runs == 1 { "" } else { "s" }
+        )
+    } else {
+        String::new()
+    };
     let _ = writeln!(
         out,
-        "\nTime: median wall clock of {runs} runs after one warm-up run (the schema validation: \
-         {schema_runs} run{}, no warm-up); MB = 10⁶ bytes; peak RSS: the child's maximum \
-         resident set (GNU time `%M`), largest over the runs. found: x3dcheck's diagnostics \
-         by severity (error, warning, info, hint).",
-        if schema_runs == 1 { "" } else { "s" }
+        "\nTime: median wall clock of {runs} run{} after one warm-up run{schema}; min–max: the \
+         fastest and the slowest run, in seconds; MB = 10⁶ bytes; peak RSS: the child's \
+         maximum resident set (GNU time `%M`), largest over the runs. found: x3dcheck's \
+         diagnostics by severity (error, warning, info, hint).",
+        if runs == 1 { "" } else { "s" }
     );
 }
 
@@ -698,7 +735,8 @@ fn footnotes(out: &mut String, rows: &[Row], notes: &[String], timer: &Timer) {
             "- peak memory: n/a (install the `time` package: GNU time at /usr/bin/time measures it)"
         );
     }
-    if rows.iter().any(|r| r.encoding == "JSON") {
+    let peers = rows.iter().any(|r| r.peer == Some(Peer::NoOut));
+    if peers && rows.iter().any(|r| r.encoding == "JSON") {
         let _ = writeln!(
             out,
             "- The JSON rows are compared with `xmllint --noout` on the XML file of the same scene."
@@ -953,6 +991,11 @@ fn seconds(s: f64) -> String {
     } else {
         format!("{s:.1} s")
     }
+}
+
+/// Seconds without the unit, for ranges.
+fn seconds_bare(s: f64) -> String {
+    seconds(s).trim_end_matches(" s").to_string()
 }
 
 fn throughput(bytes: u64, seconds: f64) -> String {

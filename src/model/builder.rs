@@ -6,8 +6,8 @@ use super::*;
 use crate::report::Diagnostic;
 use crate::schema::{self, Version};
 use crate::validate::document::{
-    def_duplicate::DEF_DUPLICATE, field_duplicate::FIELD_DUPLICATE, limit_exceeded::LIMIT_EXCEEDED, use_cycle::USE_CYCLE,
-    use_type_mismatch::USE_TYPE_MISMATCH, use_undefined::USE_UNDEFINED,
+    def_duplicate::DEF_DUPLICATE, field_duplicate::FIELD_DUPLICATE, limit_exceeded::LIMIT_EXCEEDED,
+    use_cycle::USE_CYCLE, use_type_mismatch::USE_TYPE_MISMATCH, use_undefined::USE_UNDEFINED,
 };
 
 /// Where a node being added goes.
@@ -151,7 +151,12 @@ impl Builder {
     /// Adds a new node under `parent` and opens it; close it with [`Builder::end_node`].
     /// None when the node would stand deeper than [`MAX_DEPTH`]: the reader then skips it
     /// and everything inside it.
-    pub fn begin_node(&mut self, kind: NodeKind, name_span: Span, parent: Parent) -> Option<NodeId> {
+    pub fn begin_node(
+        &mut self,
+        kind: NodeKind,
+        name_span: Span,
+        parent: Parent,
+    ) -> Option<NodeId> {
         if self.open.len() >= MAX_DEPTH {
             self.too_deep(name_span);
             return None;
@@ -206,7 +211,12 @@ impl Builder {
         // Every child is closed by now (a USE names an earlier, closed node), so the
         // height and the instance count below this node are final.
         let (mut height, mut instances) = (0u32, 1u64);
-        for child in self.doc.nodes[id.index()].fields.iter().filter_map(|f| f.value.as_nodes()).flatten() {
+        for child in self.doc.nodes[id.index()]
+            .fields
+            .iter()
+            .filter_map(|f| f.value.as_nodes())
+            .flatten()
+        {
             let child = &self.doc.nodes[child.node.index()];
             height = height.max(child.height + 1);
             instances = instances.saturating_add(child.instances);

@@ -19,7 +19,9 @@ impl Document {
             };
         }
         let field = node_ref.def()?.field(name)?;
-        xml_value::parse_value(field.ty, field.default).ok().map(Cow::Owned)
+        xml_value::parse_value(field.ty, field.default)
+            .ok()
+            .map(Cow::Owned)
     }
 
     pub fn bool_of(&self, node: NodeId, name: &str) -> Option<bool> {

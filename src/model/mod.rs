@@ -6,8 +6,8 @@
 pub mod bounds;
 pub mod builder;
 pub mod faces;
-pub mod texture_mapping;
 mod fields;
+pub mod texture_mapping;
 mod value;
 
 pub use builder::Builder;
@@ -354,9 +354,9 @@ impl Document {
 
     /// Node instances in the scene with every USE expanded (saturating).
     pub fn instances(&self) -> u64 {
-        self.scene
-            .iter()
-            .fold(0u64, |sum, c| sum.saturating_add(self.node(c.node).instances))
+        self.scene.iter().fold(0u64, |sum, c| {
+            sum.saturating_add(self.node(c.node).instances)
+        })
     }
 
     /// Nodes of a given concrete type, in document order.

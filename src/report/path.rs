@@ -137,7 +137,10 @@ mod tests {
 
         fn open(&mut self, ty: &str, parent: Option<(NodeId, &str)>, def: Option<&str>) -> NodeId {
             let kind = self.0.node_kind(ty);
-            let id = self.0.begin_node(kind, Span::default(), parent_of(parent)).expect("shallow test scene");
+            let id = self
+                .0
+                .begin_node(kind, Span::default(), parent_of(parent))
+                .expect("shallow test scene");
             if let Some(name) = def {
                 self.0.define(id, named(name));
             }

@@ -202,7 +202,10 @@ mod tests {
             fields: Vec<(&str, Value)>,
         ) -> NodeId {
             let kind = self.0.node_kind(ty);
-            let id = self.0.begin_node(kind, Span::default(), parent_of(parent)).expect("shallow test scene");
+            let id = self
+                .0
+                .begin_node(kind, Span::default(), parent_of(parent))
+                .expect("shallow test scene");
             for (name, value) in fields {
                 let field = self.0.field_ref(id, name);
                 let entry = FieldEntry {
@@ -220,7 +223,10 @@ mod tests {
 
         fn with_coord(&mut self, ty: &str, coord: &str, point: Value) -> NodeId {
             let kind = self.0.node_kind(ty);
-            let id = self.0.begin_node(kind, Span::default(), Parent::TopLevel).expect("shallow test scene");
+            let id = self
+                .0
+                .begin_node(kind, Span::default(), Parent::TopLevel)
+                .expect("shallow test scene");
             self.node(coord, Some((id, "coord")), vec![("point", point)]);
             self.0.end_node(id, Span::default());
             id
@@ -306,7 +312,9 @@ mod tests {
     fn shared_nodes_count_once() {
         let mut s = Scene(Builder::new(Encoding::Xml));
         let kind = s.0.node_kind("Shape");
-        let shape = s.0.begin_node(kind, Span::default(), Parent::TopLevel).expect("shallow test scene");
+        let shape =
+            s.0.begin_node(kind, Span::default(), Parent::TopLevel)
+                .expect("shallow test scene");
         s.0.define(shape, named("S"));
         s.node(
             "IndexedTriangleSet",

@@ -82,8 +82,17 @@ impl Ctx<'_> {
             let d = &mut self.diagnostics[at];
             if d.count > 1 {
                 let shown: Vec<String> = d.indices.iter().map(usize::to_string).collect();
-                let more = if d.count > d.indices.len() { ", …" } else { "" };
-                d.message = format!("{} ({} in all, at indices {}{more})", d.message, d.count, shown.join(", "));
+                let more = if d.count > d.indices.len() {
+                    ", …"
+                } else {
+                    ""
+                };
+                d.message = format!(
+                    "{} ({} in all, at indices {}{more})",
+                    d.message,
+                    d.count,
+                    shown.join(", ")
+                );
             }
         }
         self.diagnostics

@@ -15,8 +15,11 @@ pub fn did_you_mean<'a>(
     }
     let lower = name.to_ascii_lowercase();
     let limit = (name.chars().count() / 3).clamp(1, 3);
+    let length = name.chars().count();
     candidates
         .into_iter()
+        // The edit distance is at least the difference in length: skip the hopeless ones.
+        .filter(|c| c.chars().count().abs_diff(length) <= limit)
         .map(|c| (strsim::levenshtein(&lower, &c.to_ascii_lowercase()), c))
         .filter(|(distance, _)| *distance <= limit)
         .min_by_key(|(distance, c)| (*distance, *c))

@@ -118,6 +118,15 @@ pub fn median_wall(samples: &[Sample]) -> f64 {
     median(samples.iter().map(|s| s.wall).collect())
 }
 
+/// The fastest and the slowest wall time.
+pub fn wall_range(samples: &[Sample]) -> (f64, f64) {
+    let walls = samples.iter().map(|s| s.wall);
+    (
+        walls.clone().fold(f64::INFINITY, f64::min),
+        walls.fold(0.0, f64::max),
+    )
+}
+
 /// The median CPU use (CPU seconds per wall second), when measured.
 pub fn median_cores(samples: &[Sample]) -> Option<f64> {
     let values: Option<Vec<f64>> = samples

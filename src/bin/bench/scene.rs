@@ -17,7 +17,7 @@ use std::path::{Path, PathBuf};
 /// never mistaken for the current scene.
 pub const GENERATOR_VERSION: u32 = 2;
 
-const SHAPES: usize = 6;
+pub const SHAPES: usize = 6;
 /// Vertices per shape at scale 1.
 const VERTICES: f64 = 160_000.0;
 const SEED: u64 = 0x5833_4443_4845_434b; // "X3DCHECK"

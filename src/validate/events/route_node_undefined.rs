@@ -34,18 +34,31 @@ crate::declare_rule! {
     }
 }
 
+/// Suggestions compare a name with every DEF name in scope; a file with hundreds of bad
+/// ROUTEs and thousands of DEFs gets suggestions for the first ones only.
+const MAX_SUGGESTIONS: usize = 100;
+
 fn check(ctx: &mut Ctx) {
     let doc = ctx.doc;
+    let mut reported = 0;
     for route in &doc.routes {
         for (attribute, name) in [("fromNode", &route.from_node), ("toNode", &route.to_node)] {
             if route_node(doc, route.scope, &name.text).is_none() && !imported(ctx, &name.text) {
-                ctx.report(diagnostic(doc, route, attribute, name));
+                let suggest = reported < MAX_SUGGESTIONS;
+                ctx.report(diagnostic(doc, route, attribute, name, suggest));
+                reported += 1;
             }
         }
     }
 }
 
-fn diagnostic(doc: &Document, route: &Route, attribute: &str, name: &Named) -> Diagnostic {
+fn diagnostic(
+    doc: &Document,
+    route: &Route,
+    attribute: &str,
+    name: &Named,
+    suggest: bool,
+) -> Diagnostic {
     if name.text.is_empty() {
         return Diagnostic::new(
             &ROUTE_NODE_UNDEFINED,
@@ -62,7 +75,9 @@ fn diagnostic(doc: &Document, route: &Route, attribute: &str, name: &Named) -> D
         .defs
         .keys()
         .any(|(scope, n)| *scope != route.scope && *n == name.text);
-    let help = if in_other_scope {
+    let help = if !suggest {
+        None
+    } else if in_other_scope {
         Some("a node of that name is DEF'd in another name scope (Scene or ProtoBody), which a ROUTE cannot reach".to_string())
     } else {
         let mut names: Vec<&str> = in_scope.collect();

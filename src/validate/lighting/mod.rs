@@ -20,7 +20,6 @@ pub static RULES: &[&Rule] = &[
     &light_reaches_nothing::LIGHT_REACHES_NOTHING,
 ];
 
-
 /// PointLight and SpotLight: the lights with a location and a radius.
 fn is_positional_light(node: &Node) -> bool {
     matches!(node.type_name(), "PointLight" | "SpotLight")

@@ -36,7 +36,6 @@ const SHAPE_FIELDS: &[&str] = &[
     "texCoord",
 ];
 
-
 /// Whether a field's value is known: not `IS`-connected and, when set, parsed.
 pub fn is_known(node: &Node, field: &str) -> bool {
     !node.is_connected(field)

@@ -18,7 +18,6 @@ pub struct ShapePair {
     pub appearance: Option<NodeId>,
 }
 
-
 /// Every distinct Appearance × geometry pair formed by an X3DShapeNode, in document order,
 /// each with the first Shape forming it. Left out are pairs whose parts the document does
 /// not determine: an unknown-type geometry or Appearance (prototype instances), an
@@ -103,6 +102,39 @@ pub fn texture_fields(def: &'static NodeDef) -> Vec<(&'static str, &'static str)
         .collect()
 }
 
+/// A node of a MultiTextureCoordinate or MultiTextureTransform list whose non-empty mapping
+/// repeats an earlier one's.
+pub struct RepeatedMapping {
+    /// The MultiTextureCoordinate or MultiTextureTransform.
+    pub list: NodeId,
+    pub first: ChildRef,
+    pub repeat: ChildRef,
+    /// The repeat's position in the list.
+    pub index: usize,
+    pub mapping: String,
+}
+
+/// The repeated mappings of every `node_type` node's `field` list (12.2.4.1, 12.2.4.2).
+pub fn repeated_mappings(doc: &Document, node_type: &str, field: &str) -> Vec<RepeatedMapping> {
+    let mut found = Vec::new();
+    for list_node in doc.nodes_of_type(node_type) {
+        let list = MappingList {
+            items: doc.node(list_node).children(field).to_vec(),
+            opaque: false,
+        };
+        for (first, repeat) in list.duplicates(doc) {
+            found.push(RepeatedMapping {
+                list: list_node,
+                first: list.items[first],
+                repeat: list.items[repeat],
+                index: repeat,
+                mapping: mapping_of(doc, list.items[repeat].node).unwrap_or_default(),
+            });
+        }
+    }
+    found
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -140,37 +172,4 @@ mod tests {
         assert!(pairs[0].appearance.is_some() && pairs[2].appearance.is_none());
         assert!(pairs[1].geometry_ref.span != pairs[0].geometry_ref.span);
     }
-}
-
-/// A node of a MultiTextureCoordinate or MultiTextureTransform list whose non-empty mapping
-/// repeats an earlier one's.
-pub struct RepeatedMapping {
-    /// The MultiTextureCoordinate or MultiTextureTransform.
-    pub list: NodeId,
-    pub first: ChildRef,
-    pub repeat: ChildRef,
-    /// The repeat's position in the list.
-    pub index: usize,
-    pub mapping: String,
-}
-
-/// The repeated mappings of every `node_type` node's `field` list (12.2.4.1, 12.2.4.2).
-pub fn repeated_mappings(doc: &Document, node_type: &str, field: &str) -> Vec<RepeatedMapping> {
-    let mut found = Vec::new();
-    for list_node in doc.nodes_of_type(node_type) {
-        let list = MappingList {
-            items: doc.node(list_node).children(field).to_vec(),
-            opaque: false,
-        };
-        for (first, repeat) in list.duplicates(doc) {
-            found.push(RepeatedMapping {
-                list: list_node,
-                first: list.items[first],
-                repeat: list.items[repeat],
-                index: repeat,
-                mapping: mapping_of(doc, list.items[repeat].node).unwrap_or_default(),
-            });
-        }
-    }
-    found
 }

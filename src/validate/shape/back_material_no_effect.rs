@@ -1,6 +1,6 @@
 //! BACK_MATERIAL_NO_EFFECT: backMaterial on a Shape whose back faces are never drawn.
 
-use super::analysis::{shape_pairs};
+use super::analysis::shape_pairs;
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 

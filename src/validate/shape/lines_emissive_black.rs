@@ -1,6 +1,6 @@
 //! LINES_EMISSIVE_BLACK: lines or points drawn black by a Material's emissiveColor.
 
-use super::analysis::{shape_pairs};
+use super::analysis::shape_pairs;
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 

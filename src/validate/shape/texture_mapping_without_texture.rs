@@ -1,6 +1,6 @@
 //! TEXTURE_MAPPING_WITHOUT_TEXTURE: an xxxTextureMapping whose xxxTexture is NULL.
 
-use super::analysis::{texture_fields};
+use super::analysis::texture_fields;
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 

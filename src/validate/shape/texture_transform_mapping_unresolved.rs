@@ -63,7 +63,8 @@ fn check(ctx: &mut Ctx) {
         for material in one_sided_materials(doc, appearance) {
             let m = doc.node(material.child.node);
             for (texture, mapping) in texture_fields(material.def) {
-                if m.child(texture).is_none() || m.is_connected(texture) || m.is_connected(mapping) {
+                if m.child(texture).is_none() || m.is_connected(texture) || m.is_connected(mapping)
+                {
                     continue;
                 }
                 let (Some(name), Some(entry)) = (

@@ -29,4 +29,3 @@ pub static RULES: &[&Rule] = &[
     &image_unreadable::IMAGE_UNREADABLE,
     &image_format_unsupported::IMAGE_FORMAT_UNSUPPORTED,
 ];
-
