@@ -1,6 +1,6 @@
 //! ATTENUATION_ZERO: attenuation 0 0 0, which means 1 0 0.
 
-use super::is_positional_light;
+use super::{all_zero, is_positional_light, lights_setting};
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -30,23 +30,7 @@ crate::declare_rule! {
 }
 
 fn check(ctx: &mut Ctx) {
-    let doc = ctx.doc;
-    let mut found = Vec::new();
-    for (id, node) in doc.iter() {
-        if !is_positional_light(node) || node.is_connected("attenuation") {
-            continue;
-        }
-        let Some(entry) = node.entry("attenuation") else {
-            continue;
-        };
-        if entry
-            .value
-            .as_floats()
-            .is_some_and(|v| v.len() == 3 && v.iter().all(|c| *c == 0.0))
-        {
-            found.push((id, entry.span, node.type_name().to_string()));
-        }
-    }
+    let found = lights_setting(ctx.doc, is_positional_light, "attenuation", all_zero);
     for (id, span, type_name) in found {
         ctx.report(
             Diagnostic::new(

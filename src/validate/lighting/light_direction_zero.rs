@@ -1,5 +1,6 @@
 //! LIGHT_DIRECTION_ZERO: a DirectionalLight or SpotLight pointing nowhere.
 
+use super::{all_zero, lights_setting};
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -30,25 +31,12 @@ crate::declare_rule! {
 }
 
 fn check(ctx: &mut Ctx) {
-    let doc = ctx.doc;
-    let mut found = Vec::new();
-    for (id, node) in doc.iter() {
-        if !matches!(node.type_name(), "DirectionalLight" | "SpotLight")
-            || node.is_connected("direction")
-        {
-            continue;
-        }
-        let Some(entry) = node.entry("direction") else {
-            continue;
-        };
-        if entry
-            .value
-            .as_floats()
-            .is_some_and(|v| v.len() == 3 && v.iter().all(|c| *c == 0.0))
-        {
-            found.push((id, entry.span, node.type_name().to_string()));
-        }
-    }
+    let found = lights_setting(
+        ctx.doc,
+        |node| matches!(node.type_name(), "DirectionalLight" | "SpotLight"),
+        "direction",
+        all_zero,
+    );
     for (id, span, type_name) in found {
         ctx.report(
             Diagnostic::new(

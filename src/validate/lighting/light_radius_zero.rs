@@ -1,6 +1,6 @@
 //! LIGHT_RADIUS_ZERO: a PointLight or SpotLight with radius 0.
 
-use super::is_positional_light;
+use super::{is_positional_light, lights_setting};
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -30,23 +30,9 @@ crate::declare_rule! {
 }
 
 fn check(ctx: &mut Ctx) {
-    let doc = ctx.doc;
-    let mut found = Vec::new();
-    for (id, node) in doc.iter() {
-        if !is_positional_light(node) || node.is_connected("radius") {
-            continue;
-        }
-        let Some(entry) = node.entry("radius") else {
-            continue;
-        };
-        if entry
-            .value
-            .as_floats()
-            .is_some_and(|v| v.first() == Some(&0.0))
-        {
-            found.push((id, entry.span, node.type_name().to_string()));
-        }
-    }
+    let found = lights_setting(ctx.doc, is_positional_light, "radius", |v| {
+        v.first() == Some(&0.0)
+    });
     for (id, span, type_name) in found {
         ctx.report(
             Diagnostic::new(
