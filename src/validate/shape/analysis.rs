@@ -135,6 +135,16 @@ pub fn repeated_mappings(doc: &Document, node_type: &str, field: &str) -> Vec<Re
     found
 }
 
+/// Appearances that have both a material and a backMaterial: (Appearance, material,
+/// backMaterial), in document order.
+pub fn front_and_back(doc: &Document) -> impl Iterator<Item = (NodeId, ChildRef, ChildRef)> + '_ {
+    appearances(doc).filter_map(|(appearance, node)| {
+        let front = *node.children("material").first()?;
+        let back = *node.children("backMaterial").first()?;
+        Some((appearance, front, back))
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

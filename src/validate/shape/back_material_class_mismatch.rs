@@ -1,6 +1,6 @@
 //! BACK_MATERIAL_CLASS_MISMATCH: material and backMaterial of different node types.
 
-use super::analysis::appearances;
+use super::analysis::front_and_back;
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -42,13 +42,7 @@ fn check(ctx: &mut Ctx) {
     }
     let doc = ctx.doc;
     let mut found = Vec::new();
-    for (appearance, node) in appearances(doc) {
-        let (Some(&back), Some(&material)) = (
-            node.children("backMaterial").first(),
-            node.children("material").first(),
-        ) else {
-            continue;
-        };
+    for (appearance, material, back) in front_and_back(doc) {
         let (Some(front_def), Some(back_def)) =
             (doc.node(material.node).def(), doc.node(back.node).def())
         else {

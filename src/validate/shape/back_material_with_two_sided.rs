@@ -1,6 +1,6 @@
 //! BACK_MATERIAL_WITH_TWO_SIDED: backMaterial set while material is a TwoSidedMaterial.
 
-use super::analysis::appearances;
+use super::analysis::front_and_back;
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -39,13 +39,7 @@ fn check(ctx: &mut Ctx) {
     }
     let doc = ctx.doc;
     let mut found = Vec::new();
-    for (appearance, node) in appearances(doc) {
-        let (Some(&back), Some(&material)) = (
-            node.children("backMaterial").first(),
-            node.children("material").first(),
-        ) else {
-            continue;
-        };
+    for (appearance, material, back) in front_and_back(doc) {
         if doc.node(material.node).is_a("TwoSidedMaterial") {
             found.push((appearance, back, material));
         }
