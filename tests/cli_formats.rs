@@ -6,8 +6,10 @@
 //! `target/ci/sarif-schema-2.1.0.json` (or set `X3DCHECK_SARIF_SCHEMA`). Without it the
 //! schema test fails under CI (`CI=true`) and is skipped with a note elsewhere.
 
+mod common;
+
+use common::{scratch, stdout, x3dcheck};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 
 use quick_xml::events::Event;
 use quick_xml::XmlVersion;
@@ -31,28 +33,6 @@ const SCENE: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
 "#;
 
 const CLEAN: &str = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<X3D profile='Interchange' version='4.0'><Scene><Shape><Box/></Shape></Scene></X3D>\n";
-
-fn scratch(test: &str, files: &[(&str, &str)]) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("x3dcheck-formats-{}-{test}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    for (name, text) in files {
-        std::fs::write(dir.join(name), text).unwrap();
-    }
-    dir
-}
-
-fn x3dcheck(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_x3dcheck"))
-        .current_dir(dir)
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-fn stdout(output: &Output) -> String {
-    String::from_utf8(output.stdout.clone()).unwrap()
-}
 
 fn schema_path() -> PathBuf {
     std::env::var_os("X3DCHECK_SARIF_SCHEMA")

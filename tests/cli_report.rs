@@ -1,8 +1,10 @@
 //! The command line end to end: exit codes, the JSON report's shape and determinism,
 //! code validation and the `rules` subcommand.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+mod common;
+
+use common::{scratch, stdout, x3dcheck};
+use std::process::Command;
 
 const VALID: &str = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<X3D profile='Interchange' version='4.0'><Scene><Shape><Box/></Shape></Scene></X3D>";
 
@@ -14,29 +16,6 @@ const DUPLICATE: &str = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>
   </Scene>
 </X3D>
 ";
-
-/// A fresh directory of its own per test.
-fn scratch(test: &str, files: &[(&str, &str)]) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("x3dcheck-cli-{}-{test}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    for (name, text) in files {
-        std::fs::write(dir.join(name), text).unwrap();
-    }
-    dir
-}
-
-fn x3dcheck(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_x3dcheck"))
-        .current_dir(dir)
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-fn stdout(output: &Output) -> String {
-    String::from_utf8(output.stdout.clone()).unwrap()
-}
 
 #[test]
 fn exit_codes() {

@@ -1,8 +1,10 @@
 //! `x3dcheck.toml` end to end: found upward from each file (closest wins), `--config`,
 //! per-path ignores, errors with file and line, and the command line winning over the file.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+mod common;
+
+use common::{scratch, x3dcheck};
+use std::process::Output;
 
 /// A DEF_DUPLICATE (error), a PROFILE_MISSING (warning) and a ROUTE_NODE_UNDEFINED (error).
 const SCENE: &str = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>
@@ -14,25 +16,6 @@ const SCENE: &str = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>
   </Scene>
 </X3D>
 ";
-
-fn scratch(test: &str, files: &[(&str, &str)]) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("x3dcheck-config-{}-{test}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    for (name, text) in files {
-        let path = dir.join(name);
-        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
-        std::fs::write(path, text).unwrap();
-    }
-    dir
-}
-
-fn x3dcheck(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_x3dcheck"))
-        .current_dir(dir)
-        .args(args)
-        .output()
-        .unwrap()
-}
 
 /// The codes reported per file, as `file: CODE` lines, sorted.
 fn codes(output: &Output) -> Vec<String> {

@@ -2,7 +2,10 @@
 //! file cut short, with bytes flipped, with a span repeated and with a span deleted, is
 //! checked at the deep level. Every mutant must finish quickly and produce a report.
 
-use std::path::{Path, PathBuf};
+mod common;
+
+use common::corpus_files;
+use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use x3dcheck::config::CheckConfig;
@@ -32,24 +35,16 @@ impl Rng {
 }
 
 fn sample() -> Vec<PathBuf> {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus");
-    let mut files = Vec::new();
-    let mut dirs = vec![root];
-    while let Some(dir) = dirs.pop() {
-        for entry in std::fs::read_dir(&dir).unwrap().flatten() {
-            let path = entry.path();
-            if entry.file_type().unwrap().is_dir() {
-                dirs.push(path);
-            } else if matches!(
-                path.extension().and_then(|e| e.to_str()),
+    corpus_files(&["x3d", "json", "x3dj"])
+        .into_iter()
+        .filter(|p| {
+            matches!(
+                p.extension().and_then(|e| e.to_str()),
                 Some("x3d" | "json" | "x3dj")
-            ) {
-                files.push(path);
-            }
-        }
-    }
-    files.sort();
-    files.into_iter().step_by(SAMPLE_EVERY).collect()
+            )
+        })
+        .step_by(SAMPLE_EVERY)
+        .collect()
 }
 
 /// The mutants of one file: each a name and the mutated bytes.

@@ -1,7 +1,9 @@
 //! Every real scene of `../shared/corpus` is checked without a panic, and every diagnostic
 //! has a place. The corpus is read from beside the repository, never copied in.
 
-use std::path::{Path, PathBuf};
+mod common;
+
+use common::corpus_files;
 use std::time::{Duration, Instant};
 
 use x3dcheck::config::CheckConfig;
@@ -9,33 +11,6 @@ use x3dcheck::validate::Level;
 
 /// Generous: the largest corpus file takes milliseconds; this only catches hangs.
 const MAX_SECONDS_PER_FILE: u64 = 20;
-
-fn corpus_files(extensions: &[&str]) -> Vec<PathBuf> {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus");
-    assert!(
-        root.is_dir(),
-        "../shared/corpus is missing: {}",
-        root.display()
-    );
-    let mut files = Vec::new();
-    let mut dirs = vec![root];
-    while let Some(dir) = dirs.pop() {
-        for entry in std::fs::read_dir(&dir).unwrap().flatten() {
-            let path = entry.path();
-            if entry.file_type().unwrap().is_dir() {
-                dirs.push(path);
-            } else if path
-                .extension()
-                .and_then(|e| e.to_str())
-                .is_some_and(|e| extensions.contains(&e.to_ascii_lowercase().as_str()))
-            {
-                files.push(path);
-            }
-        }
-    }
-    files.sort();
-    files
-}
 
 fn check_all(extensions: &[&str]) {
     let files = corpus_files(extensions);
