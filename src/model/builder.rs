@@ -497,3 +497,29 @@ impl Builder {
         (self.doc, self.diagnostics)
     }
 }
+
+/// For tests that build documents by hand, node by node, as a reader would.
+#[cfg(test)]
+pub(crate) mod testing {
+    use super::*;
+
+    /// The top level, or `(node, field)`: a node field filled by child elements.
+    pub fn parent_of(parent: Option<(NodeId, &str)>) -> Parent<'_> {
+        match parent {
+            None => Parent::TopLevel,
+            Some((node, field)) => Parent::Field {
+                node,
+                field,
+                field_span: Span::default(),
+                origin: Origin::Children,
+            },
+        }
+    }
+
+    pub fn named(text: &str) -> Named {
+        Named {
+            text: text.to_string(),
+            span: Span::default(),
+        }
+    }
+}

@@ -124,8 +124,8 @@ fn quote(text: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::builder::Parent;
-    use crate::model::{Builder, Encoding, Named, Origin, ProtoDecl, Span};
+    use crate::model::builder::testing::{named, parent_of};
+    use crate::model::{Builder, Encoding, ProtoDecl, Span};
 
     /// Builds nodes as a reader would: open, optionally DEF, close later.
     struct Scene(Builder);
@@ -160,25 +160,6 @@ mod tests {
 
         fn path(&self, id: NodeId) -> String {
             node_path(self.0.doc(), id)
-        }
-    }
-
-    fn parent_of(parent: Option<(NodeId, &str)>) -> Parent<'_> {
-        match parent {
-            None => Parent::TopLevel,
-            Some((node, field)) => Parent::Field {
-                node,
-                field,
-                field_span: Span::default(),
-                origin: Origin::Children,
-            },
-        }
-    }
-
-    fn named(text: &str) -> Named {
-        Named {
-            text: text.to_string(),
-            span: Span::default(),
         }
     }
 

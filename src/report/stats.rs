@@ -189,8 +189,9 @@ fn coordinates(doc: &Document, node: &Node) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::builder::testing::{named, parent_of};
     use crate::model::builder::Parent;
-    use crate::model::{Builder, Encoding, FieldEntry, Named, NodeId, Origin, Span};
+    use crate::model::{Builder, Encoding, FieldEntry, NodeId, Origin, Span};
 
     struct Scene(Builder);
 
@@ -230,25 +231,6 @@ mod tests {
             self.node(coord, Some((id, "coord")), vec![("point", point)]);
             self.0.end_node(id, Span::default());
             id
-        }
-    }
-
-    fn parent_of(parent: Option<(NodeId, &str)>) -> Parent<'_> {
-        match parent {
-            None => Parent::TopLevel,
-            Some((node, field)) => Parent::Field {
-                node,
-                field,
-                field_span: Span::default(),
-                origin: Origin::Children,
-            },
-        }
-    }
-
-    fn named(text: &str) -> Named {
-        Named {
-            text: text.to_string(),
-            span: Span::default(),
         }
     }
 
