@@ -369,15 +369,7 @@ fn time_x3dcheck(
     let report = scratch.join("report.json");
     let stderr = scratch.join("stderr.txt");
     let _ = fs::remove_file(&report);
-    let mut argv: Vec<&OsStr> = vec![
-        OsStr::new("--level"),
-        OsStr::new(level),
-        OsStr::new("--format"),
-        OsStr::new("json"),
-        OsStr::new("-o"),
-        report.as_os_str(),
-        input.as_os_str(),
-    ];
+    let mut argv = x3dcheck_args(level, &report, input);
     let warm = timer
         .run(x3dcheck.as_os_str(), &argv, Some(&stderr))
         .map_err(|e| format!("cannot run {}: {e}", x3dcheck.display()))?;
@@ -404,7 +396,7 @@ fn time_x3dcheck(
     });
 
     let null = OsString::from("/dev/null");
-    argv[5] = null.as_os_str();
+    argv[REPORT_ARG] = null.as_os_str();
     let mut samples = Vec::with_capacity(runs);
     for _ in 0..runs {
         let s = timer
@@ -803,15 +795,7 @@ fn corpus_bench(
             corpus.display()
         );
         let _ = fs::remove_file(&report);
-        let mut argv: Vec<&OsStr> = vec![
-            OsStr::new("--level"),
-            OsStr::new(level),
-            OsStr::new("--format"),
-            OsStr::new("json"),
-            OsStr::new("-o"),
-            report.as_os_str(),
-            corpus.as_os_str(),
-        ];
+        let mut argv = x3dcheck_args(level, &report, corpus);
         let warm = timer
             .run(x3dcheck.as_os_str(), &argv, Some(&stderr))
             .map_err(|e| format!("cannot run {}: {e}", x3dcheck.display()))?;
@@ -830,7 +814,7 @@ fn corpus_bench(
         let summary = &json["summary"];
         let count = |k: &str| summary[k].as_u64().unwrap_or(0);
         let null = OsString::from("/dev/null");
-        argv[5] = null.as_os_str();
+        argv[REPORT_ARG] = null.as_os_str();
         let samples = (0..runs)
             .map(|_| timer.run(x3dcheck.as_os_str(), &argv, Some(&stderr)))
             .collect::<Result<Vec<_>, _>>()
@@ -1034,4 +1018,21 @@ fn thousands(n: u64) -> String {
         out.push(c);
     }
     out
+}
+
+/// Where `x3dcheck_args` puts the report path: timed runs after the first write to the
+/// null device instead.
+const REPORT_ARG: usize = 5;
+
+/// `x3dcheck --level LEVEL --format json -o REPORT INPUT`.
+fn x3dcheck_args<'a>(level: &'a str, report: &'a Path, input: &'a Path) -> Vec<&'a OsStr> {
+    vec![
+        OsStr::new("--level"),
+        OsStr::new(level),
+        OsStr::new("--format"),
+        OsStr::new("json"),
+        OsStr::new("-o"),
+        report.as_os_str(),
+        input.as_os_str(),
+    ]
 }
