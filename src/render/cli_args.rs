@@ -46,9 +46,10 @@ fn parse_size(text: &str) -> Result<ImageSize, String> {
     })
 }
 
-/// Lighting is always per pixel (Phong shading, 17.2.2.8); the presets differ in
-/// anti-aliasing: `fast` one sample per pixel, `balanced` 4× MSAA, `accurate` 4× MSAA of an
-/// image rendered at twice the size and averaged down.
+/// The speed/accuracy presets: `fast` lights per vertex (Gouraud shading, 17.2.2.8) with
+/// one sample per pixel; `balanced` lights per pixel (Phong shading, every material
+/// texture) with 4× multisampling; `accurate` also renders at twice the size and averages
+/// down (16 samples per pixel).
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Quality {
     Fast,
@@ -56,18 +57,26 @@ pub enum Quality {
     Accurate,
 }
 
+#[cfg(feature = "render")]
 impl Quality {
-    pub fn msaa_samples(self) -> u32 {
+    pub fn settings(self) -> super::Settings {
+        use super::{Settings, Shading};
         match self {
-            Quality::Fast => 1,
-            Quality::Balanced | Quality::Accurate => 4,
-        }
-    }
-
-    pub fn supersampling(self) -> u32 {
-        match self {
-            Quality::Accurate => 2,
-            Quality::Fast | Quality::Balanced => 1,
+            Quality::Fast => Settings {
+                shading: Shading::Gouraud,
+                msaa_samples: 1,
+                supersampling: 1,
+            },
+            Quality::Balanced => Settings {
+                shading: Shading::Phong,
+                msaa_samples: 4,
+                supersampling: 1,
+            },
+            Quality::Accurate => Settings {
+                shading: Shading::Phong,
+                msaa_samples: 4,
+                supersampling: 2,
+            },
         }
     }
 }

@@ -2,44 +2,73 @@
 //! [`flatten`](super::flatten). It states its guarantees here and the GPU code relies on
 //! them without checking again:
 //!
-//! - **Camera space origin.** Every position (vertices, light locations) is in world
-//!   orientation but relative to the eye: the eye is at the origin. World transforms were
-//!   composed in f64 and the eye subtracted in f64 before rounding to f32, so a scene far
-//!   from the world origin keeps its precision.
-//! - **Finite numbers.** Positions, normals, colours and texture coordinates are finite;
-//!   triangles with a non-finite corner were dropped. Normals are unit length or zero.
-//! - **Complete attributes.** Within a mesh, every attribute present has one entry per
-//!   vertex and every index is in range. Normals are present exactly when the material is
-//!   lit; texture coordinates exactly when the material has a texture.
+//! - **Camera space origin.** Every position (vertices, light locations, clip planes) is
+//!   in world orientation but relative to the eye: the eye is at the origin. World
+//!   transforms were composed in f64 and the eye subtracted in f64 before rounding to f32,
+//!   so a scene far from the world origin keeps its precision.
+//! - **Finite numbers.** Positions, normals, tangents, colours and texture coordinates are
+//!   finite; triangles with a non-finite corner were dropped. Normals are unit length or
+//!   zero; tangents have a unit (or zero) xyz and a handedness w of ±1.
+//! - **Only what is used, complete.** Within a mesh, every attribute present has one entry
+//!   per vertex and every index is in range. Normals are present exactly when the shape is
+//!   lit or a texture coordinate generator needs them; tangents exactly when a lit material
+//!   has a normal texture; texture coordinate sets exactly those some texture samples (at
+//!   most [`MAX_TEX_COORD_SETS`]), already generated and transformed.
 //! - **Resolved materials.** Colours are in [0, 1] (as the lighting equations of clause
-//!   17 expect), alpha is 1 − transparency, and a texture reference is an index into
-//!   [`DrawList::textures`].
+//!   17 expect), alpha is 1 − transparency, and every texture reference is an index into
+//!   [`DrawList::textures`] with a texture coordinate set of its mesh.
 //! - **Lights.** At most [`MAX_LIGHTS`]; each mesh says by a bit mask which lights reach
 //!   it (global lights reach all; a scoped light reaches its group's descendants).
 
 /// How many lights a shape can receive; more are reported as not drawn.
 pub const MAX_LIGHTS: usize = 16;
+/// Texture coordinate sets per mesh; more are reported, and drawn with the first.
+pub const MAX_TEX_COORD_SETS: usize = 4;
+/// MultiTexture stages drawn; more are reported as not drawn.
+pub const MAX_STAGES: usize = 4;
+/// ClipPlanes applying to one shape; more are reported as not applied.
+pub const MAX_CLIP_PLANES: usize = 4;
+/// Sky and ground colours of a Background gradient; more are reported as not drawn.
+pub const MAX_GRADIENT: usize = 8;
 
 #[derive(Clone, Debug)]
 pub struct DrawList {
     pub camera: Camera,
-    pub background: [f32; 3],
+    pub background: Background,
     pub fog: Option<Fog>,
     pub lights: Vec<Light>,
     pub meshes: Vec<Mesh>,
     pub textures: Vec<Texture>,
 }
 
-/// A perspective camera at the origin.
+/// A camera at the origin.
 #[derive(Copy, Clone, Debug)]
 pub struct Camera {
     /// Rotation from camera axes (looking down −Z, +Y up) to world axes.
     pub orientation: glam::Quat,
-    /// The field of view of the smaller image side, in radians, in (0, π).
-    pub field_of_view: f32,
+    pub projection: Projection,
     /// 0 < near < far, both finite.
     pub near: f32,
     pub far: f32,
+}
+
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub enum Projection {
+    /// The field of view of the smaller image side, in radians, in (0, π).
+    Perspective { field_of_view: f32 },
+    /// OrthoViewpoint: the view rectangle (min x, min y, max x, max y) in camera units,
+    /// min < max; the smaller image side is widened to keep the aspect ratio.
+    Orthographic { rectangle: [f32; 4] },
+}
+
+/// The sky and ground of a Background (24.4.1): colours at angles from the zenith (sky)
+/// and from the nadir (ground), each list starting at angle 0 and increasing.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Background {
+    pub sky: Vec<([f32; 3], f32)>,
+    pub ground: Vec<([f32; 3], f32)>,
+    /// Rotation from the Background's coordinate system to world axes.
+    pub orientation: glam::Quat,
 }
 
 #[derive(Copy, Clone, Debug)]
@@ -72,15 +101,28 @@ pub struct Light {
     pub attenuation: [f32; 3],
     /// World-space radius (point and spot lights): beyond it the light has no effect.
     pub radius: f32,
+    /// 0 ≤ beamWidth ≤ cutOffAngle ≤ π/2.
     pub beam_width: f32,
     pub cut_off_angle: f32,
 }
 
-#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
 pub enum Primitive {
+    #[default]
     Triangles,
     Lines,
     Points,
+}
+
+impl Primitive {
+    /// Indices per primitive.
+    pub fn arity(self) -> usize {
+        match self {
+            Primitive::Triangles => 3,
+            Primitive::Lines => 2,
+            Primitive::Points => 1,
+        }
+    }
 }
 
 #[derive(Clone, Debug)]
@@ -88,18 +130,26 @@ pub struct Mesh {
     pub primitive: Primitive,
     pub positions: Vec<[f32; 3]>,
     pub normals: Option<Vec<[f32; 3]>>,
+    /// xyz along the normal texture's increasing s, w the handedness of t.
+    pub tangents: Option<Vec<[f32; 4]>>,
     /// Per-vertex RGBA from Color (alpha 1) or ColorRGBA; replaces the material's diffuse,
     /// base or emissive colour (17.2.2.3 applyColorPerVertex).
     pub colors: Option<Vec<[f32; 4]>>,
-    /// Already transformed by the TextureTransform.
-    pub tex_coords: Option<Vec<[f32; 2]>>,
+    /// Whether `colors` replace alpha too (ColorRGBA) or only RGB (Color).
+    pub colors_have_alpha: bool,
+    /// Texture coordinate sets, each with one entry per vertex.
+    pub tex_coords: Vec<Vec<[f32; 2]>>,
     pub indices: Vec<u32>,
     pub front: Material,
     /// The material of back faces (12.2.3): the backMaterial, or the front one. None when
     /// back faces are not drawn (solid TRUE).
     pub back: Option<Material>,
+    /// The textures of both sides (12.2.3 requires the back material to share them).
+    pub textures: Textures,
     /// Bit i: light i reaches this mesh.
     pub light_mask: u32,
+    /// Planes (a, b, c, d) relative to the eye: what has a·x + b·y + c·z + d < 0 is cut.
+    pub clip_planes: Vec<[f32; 4]>,
     /// Whether the colour has alpha below 1 anywhere (drawn blended, back to front).
     pub blended: bool,
     /// Alpha below this is discarded (alphaMode MASK); 0 otherwise.
@@ -113,7 +163,7 @@ pub enum LightingModel {
     Physical,
 }
 
-#[derive(Copy, Clone, Debug)]
+#[derive(Copy, Clone, Debug, PartialEq)]
 pub struct Material {
     pub model: LightingModel,
     /// Material.diffuseColor, PhysicalMaterial.baseColor; unused when unlit.
@@ -128,8 +178,10 @@ pub struct Material {
     pub roughness: f32,
     /// 1 − transparency.
     pub alpha: f32,
-    /// The texture modulating the diffuse, base or emissive colour (12.2.5).
-    pub texture: Option<usize>,
+    /// normalScale, non-negative.
+    pub normal_scale: f32,
+    /// occlusionStrength in [0, 1].
+    pub occlusion_strength: f32,
     /// X3D 3.x tables 17.2/17.3: a three- or four-component texture replaces the colour
     /// (else, and always in 4.x, the texture multiplies it: 17.2.2.3 mixTexture).
     pub texture_replaces_rgb: bool,
@@ -137,14 +189,128 @@ pub struct Material {
     pub texture_replaces_alpha: bool,
 }
 
-/// An RGBA8 image, rows from the top, with its sampling.
+/// A texture as a material samples it: the image, and the mesh's coordinate set.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct TextureRef {
+    pub texture: usize,
+    pub tex_coords: usize,
+}
+
+/// The textures of a mesh by their role in the lighting equations (17.2.2).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Textures {
+    /// The main texture (Material.diffuseTexture, PhysicalMaterial.baseTexture,
+    /// UnlitMaterial.emissiveTexture or Appearance.texture): one stage for a single
+    /// texture, one per MultiTexture texture (18.4.3).
+    pub main: Vec<Stage>,
+    /// MultiTexture color and alpha (the FACTOR source and BLENDFACTORALPHA).
+    pub factor: [f32; 4],
+    pub emissive: Option<TextureRef>,
+    pub normal: Option<TextureRef>,
+    pub occlusion: Option<TextureRef>,
+    /// Material.specularTexture.
+    pub specular: Option<TextureRef>,
+    /// Material.shininessTexture (its alpha channel is used).
+    pub shininess: Option<TextureRef>,
+    /// Material.ambientTexture.
+    pub ambient: Option<TextureRef>,
+    /// PhysicalMaterial.metallicRoughnessTexture (metallic in blue, roughness in green).
+    pub metallic_roughness: Option<TextureRef>,
+}
+
+/// One texture stage of the main texture (18.4.3 Tables 18.3–18.5).
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct Stage {
+    pub texture: TextureRef,
+    /// The operation on the colour channels, and on alpha.
+    pub mode: StageMode,
+    pub alpha_mode: StageMode,
+    pub source: StageSource,
+    pub function: StageFunction,
+}
+
+impl Stage {
+    /// A single texture multiplying the colour (mixTexture of 17.2.2.3).
+    pub fn modulate(texture: TextureRef) -> Stage {
+        Stage {
+            texture,
+            mode: StageMode::Modulate,
+            alpha_mode: StageMode::Modulate,
+            source: StageSource::Previous,
+            function: StageFunction::None,
+        }
+    }
+}
+
+/// Table 18.3. Arg1 is the stage's texture, Arg2 the colour its `source` names.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+#[repr(u32)]
+pub enum StageMode {
+    Modulate = 0,
+    Replace,
+    Modulate2x,
+    Modulate4x,
+    Add,
+    AddSigned,
+    AddSigned2x,
+    Subtract,
+    AddSmooth,
+    BlendDiffuseAlpha,
+    BlendTextureAlpha,
+    BlendFactorAlpha,
+    BlendCurrentAlpha,
+    ModulateAlphaAddColor,
+    ModulateInvAlphaAddColor,
+    ModulateInvColorAddAlpha,
+    Off,
+    SelectArg1,
+    SelectArg2,
+    DotProduct3,
+}
+
+/// Table 18.4: where Arg2 comes from.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+#[repr(u32)]
+pub enum StageSource {
+    /// "": the previous stage's result (the material colour for the first stage).
+    Previous = 0,
+    Diffuse,
+    Specular,
+    Factor,
+}
+
+/// Table 18.5: applied to the texture argument before the mode.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+#[repr(u32)]
+pub enum StageFunction {
+    None = 0,
+    Complement,
+    AlphaReplicate,
+}
+
+/// An RGBA8 image with its mipmap chain (level 0 first, rows from the top), and its
+/// sampling (18.2.3, 18.4.9).
 #[derive(Clone, Debug)]
 pub struct Texture {
     pub width: u32,
     pub height: u32,
-    pub rgba: Vec<u8>,
-    pub repeat_s: bool,
-    pub repeat_t: bool,
-    /// Linear filtering (else nearest).
-    pub linear: bool,
+    /// Level 0 is `width` × `height`; each next level halves both sides (at least 1).
+    pub levels: Vec<Vec<u8>>,
+    pub wrap_s: Wrap,
+    pub wrap_t: Wrap,
+    /// Linear filtering when magnified (else nearest).
+    pub magnify_linear: bool,
+    /// Linear filtering within a level when minified (else nearest).
+    pub minify_linear: bool,
+    /// Between mipmap levels: None (level 0 only), nearest or linear.
+    pub mipmaps: Option<bool>,
+    /// 1 (none) to 16.
+    pub anisotropy: u16,
+}
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum Wrap {
+    Repeat,
+    MirroredRepeat,
+    Clamp,
 }

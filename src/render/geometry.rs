@@ -1,49 +1,51 @@
 //! Geometry nodes to triangle, line or point meshes in the node's local coordinates.
-//! Only what the material needs is computed: normals only for lit shapes, texture
-//! coordinates only for textured ones.
+//! Only what the material needs is computed: normals only for lit shapes (or texture
+//! coordinate generators that read them), texture coordinate sets only those sampled.
 
+use std::borrow::Cow;
 use std::f32::consts::PI;
 
 use super::draw_list::Primitive;
-use super::fields::{boolean, child, float, floats, ints, vec3};
-use super::polygons::{self, Attribute, Faces, Inputs, NormalGeneration};
+use super::fields::{boolean, child, float, floats, ints, type_is, vec3};
+use super::polygons::{self, Attribute, Faces, Inputs, NormalGeneration, TexCoordInput};
 use crate::model::faces::{Attribute as Kind, Polygonal};
 use crate::model::{Document, NodeId};
 
 /// A mesh in local coordinates.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Default)]
 pub struct LocalMesh {
     pub primitive: Primitive,
+    /// Relative to `origin`.
     pub positions: Vec<[f32; 3]>,
+    /// Added to every position, in f64: CoordinateDouble points far from the local
+    /// origin keep their precision until the mesh is placed relative to the eye.
+    pub origin: [f64; 3],
     pub normals: Option<Vec<[f32; 3]>>,
     pub colors: Option<Vec<[f32; 4]>>,
-    pub tex_coords: Option<Vec<[f32; 2]>>,
+    /// The colours came from a ColorRGBA node (they replace alpha too).
+    pub colors_have_alpha: bool,
+    /// One set per [`Needs::tex_coords`] entry, in order; a [`TexCoordSource::Generated`]
+    /// set is empty (it is computed when the mesh is placed).
+    pub tex_coords: Vec<Vec<[f32; 2]>>,
     pub indices: Vec<u32>,
 }
 
-#[derive(Copy, Clone, Debug)]
+#[derive(Clone, Debug, Default)]
 pub struct Needs {
     pub normals: bool,
-    /// Where texture coordinates come from; None: not needed.
-    pub tex_coords: Option<TexCoordSource>,
+    /// The texture coordinate sets to produce.
+    pub tex_coords: Vec<TexCoordSource>,
 }
 
-/// The texture coordinates a texture uses, as 12.2.4 resolves its mapping.
-#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+/// Where a texture coordinate set comes from (12.2.4).
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash)]
 pub enum TexCoordSource {
     /// The geometry's default texture coordinates.
     Default,
-    /// This node of the geometry's texture coordinate list.
-    Node(NodeId),
-}
-
-impl Needs {
-    fn tex_coord_node(self) -> Option<NodeId> {
-        match self.tex_coords {
-            Some(TexCoordSource::Node(node)) => Some(node),
-            _ => None,
-        }
-    }
+    /// This TextureCoordinate node of the geometry's texture coordinate list.
+    Given(NodeId),
+    /// A TextureCoordinateGenerator: computed later, from the placed vertices.
+    Generated,
 }
 
 pub enum Built {
@@ -61,7 +63,7 @@ pub struct Shading {
     pub unlit: bool,
 }
 
-pub fn build(doc: &Document, geometry: NodeId, needs: Needs) -> Built {
+pub fn build(doc: &Document, geometry: NodeId, needs: &Needs) -> Built {
     let name = doc.node(geometry).type_name();
     let solid = boolean(doc, geometry, "solid", true);
     let surface = |mesh| {
@@ -73,10 +75,16 @@ pub fn build(doc: &Document, geometry: NodeId, needs: Needs) -> Built {
             },
         )
     };
+    // The primitives have no texCoord field: every set is their default mapping.
+    let primitive = |mut mesh: LocalMesh| {
+        let default = mesh.tex_coords.pop().unwrap_or_default();
+        mesh.tex_coords = vec![default; needs.tex_coords.len()];
+        surface(mesh)
+    };
     match name {
-        "Box" => surface(primitives::cuboid(vec3(doc, geometry, "size", [2.0; 3]))),
-        "Sphere" => surface(primitives::sphere(float(doc, geometry, "radius", 1.0))),
-        "Cylinder" => surface(primitives::cylinder(
+        "Box" => primitive(primitives::cuboid(vec3(doc, geometry, "size", [2.0; 3]))),
+        "Sphere" => primitive(primitives::sphere(float(doc, geometry, "radius", 1.0))),
+        "Cylinder" => primitive(primitives::cylinder(
             float(doc, geometry, "radius", 1.0),
             float(doc, geometry, "height", 2.0),
             [
@@ -85,19 +93,23 @@ pub fn build(doc: &Document, geometry: NodeId, needs: Needs) -> Built {
                 boolean(doc, geometry, "bottom", true),
             ],
         )),
-        "Cone" => surface(primitives::cone(
+        "Cone" => primitive(primitives::cone(
             float(doc, geometry, "bottomRadius", 1.0),
             float(doc, geometry, "height", 2.0),
             boolean(doc, geometry, "side", true),
             boolean(doc, geometry, "bottom", true),
         )),
-        "IndexedFaceSet" | "IndexedTriangleSet" | "TriangleSet" | "IndexedTriangleFanSet"
-        | "IndexedTriangleStripSet" | "TriangleFanSet" | "TriangleStripSet" | "IndexedQuadSet"
+        "IndexedFaceSet"
+        | "IndexedTriangleSet"
+        | "TriangleSet"
+        | "IndexedTriangleFanSet"
+        | "IndexedTriangleStripSet"
+        | "TriangleFanSet"
+        | "TriangleStripSet"
+        | "IndexedQuadSet"
         | "QuadSet" => match composed(doc, geometry, name, needs) {
             Some(mesh) => surface(mesh),
-            None => Built::NotDrawn(format!(
-                "{name}: its texture coordinates come from a node other than TextureCoordinate (such as TextureCoordinateGenerator), which is not applied"
-            )),
+            None => Built::NotDrawn(format!("{name} has no usable coordinates")),
         },
         "ElevationGrid" => match elevation_grid(doc, geometry, needs) {
             Some(mesh) => surface(mesh),
@@ -108,12 +120,10 @@ pub fn build(doc: &Document, geometry: NodeId, needs: Needs) -> Built {
     }
 }
 
-fn color_attribute<'d>(
-    doc: &'d Document,
-    geometry: NodeId,
-) -> Option<(std::borrow::Cow<'d, [f32]>, usize)> {
+/// The Color or ColorRGBA values of a geometry, with their arity.
+fn color_attribute(doc: &Document, geometry: NodeId) -> Option<(Cow<'_, [f32]>, usize)> {
     let color = child(doc, geometry, "color")?;
-    let arity = if super::fields::type_is(doc, color, "ColorRGBA") {
+    let arity = if type_is(doc, color, "ColorRGBA") {
         4
     } else {
         3
@@ -121,12 +131,72 @@ fn color_attribute<'d>(
     Some((floats(doc, color, "color"), arity))
 }
 
-/// IndexedFaceSet and the X3DComposedGeometryNode sets. None when texture coordinates
-/// are needed from a node type not supported.
-fn composed(doc: &Document, geometry: NodeId, name: &str, needs: Needs) -> Option<LocalMesh> {
-    let points = child(doc, geometry, "coord")
-        .map(|c| floats(doc, c, "point"))
-        .unwrap_or_default();
+/// The points of a geometry's Coordinate or CoordinateDouble node, as f32 offsets from
+/// an f64 origin (the first point of a CoordinateDouble; zero for a Coordinate).
+fn coordinates(doc: &Document, geometry: NodeId) -> (Cow<'_, [f32]>, [f64; 3]) {
+    let Some(coord) = child(doc, geometry, "coord") else {
+        return (Cow::Borrowed(&[]), [0.0; 3]);
+    };
+    if !type_is(doc, coord, "CoordinateDouble") {
+        return (floats(doc, coord, "point"), [0.0; 3]);
+    }
+    let value = doc.value_of(coord, "point");
+    let doubles = value.as_deref().and_then(|v| v.as_doubles()).unwrap_or(&[]);
+    let origin = match doubles {
+        [x, y, z, ..] if x.is_finite() && y.is_finite() && z.is_finite() => [*x, *y, *z],
+        _ => [0.0; 3],
+    };
+    let offsets = doubles
+        .chunks_exact(3)
+        .flat_map(|p| [0, 1, 2].map(|k| (p[k] - origin[k]) as f32))
+        .collect();
+    (Cow::Owned(offsets), origin)
+}
+
+/// The texture coordinate sets `needs` asks for, as polygons::build takes them.
+fn tex_coord_inputs<'a>(
+    polygonal: &Polygonal,
+    needs: &Needs,
+    given: &'a [(NodeId, Cow<'a, [f32]>)],
+    default: Option<&'a [f32]>,
+) -> Vec<TexCoordInput<'a>> {
+    needs
+        .tex_coords
+        .iter()
+        .map(|source| match source {
+            TexCoordSource::Given(node) => given.iter().find(|(n, _)| n == node).map_or(
+                TexCoordInput::Default,
+                |(_, values)| {
+                    TexCoordInput::Given(Attribute::of(polygonal, Kind::TexCoord, values, 2))
+                },
+            ),
+            TexCoordSource::Default => match default {
+                Some(values) => {
+                    TexCoordInput::Given(Attribute::of(polygonal, Kind::TexCoord, values, 2))
+                }
+                None => TexCoordInput::Default,
+            },
+            TexCoordSource::Generated => TexCoordInput::Generated,
+        })
+        .collect()
+}
+
+/// The point values of each TextureCoordinate node `needs` names.
+fn given_values<'d>(doc: &'d Document, needs: &Needs) -> Vec<(NodeId, Cow<'d, [f32]>)> {
+    needs
+        .tex_coords
+        .iter()
+        .filter_map(|source| match source {
+            TexCoordSource::Given(node) => Some((*node, floats(doc, *node, "point"))),
+            _ => None,
+        })
+        .collect()
+}
+
+/// IndexedFaceSet and the X3DComposedGeometryNode sets. None when the node's indices
+/// cannot be read.
+fn composed(doc: &Document, geometry: NodeId, name: &str, needs: &Needs) -> Option<LocalMesh> {
+    let (points, origin) = coordinates(doc, geometry);
     let polygonal = Polygonal::read(doc, geometry, points.len() / 3)?;
     let normal_values = child(doc, geometry, "normal").map(|n| floats(doc, n, "vector"));
     let normals = normal_values
@@ -138,14 +208,8 @@ fn composed(doc: &Document, geometry: NodeId, name: &str, needs: Needs) -> Optio
     let colors = color
         .as_ref()
         .map(|(values, arity)| Attribute::of(&polygonal, Kind::Color, values, *arity));
-    let tex_node = needs.tex_coord_node();
-    if tex_node.is_some_and(|t| !super::fields::type_is(doc, t, "TextureCoordinate")) {
-        return None;
-    }
-    let tex_values = tex_node.map(|t| floats(doc, t, "point"));
-    let tex_coords = tex_values
-        .as_deref()
-        .map(|values| Attribute::of(&polygonal, Kind::TexCoord, values, 2));
+    let given = given_values(doc, needs);
+    let tex_coords = tex_coord_inputs(&polygonal, needs, &given, None);
     let normal_per_vertex = boolean(doc, geometry, "normalPerVertex", true);
     let generation = match name {
         "IndexedFaceSet" => crease_generation(doc, geometry),
@@ -153,25 +217,32 @@ fn composed(doc: &Document, geometry: NodeId, name: &str, needs: Needs) -> Optio
         _ if normal_per_vertex => NormalGeneration::Smooth,
         _ => NormalGeneration::Flat,
     };
-    Some(polygons::build(Inputs {
+    let mut mesh = polygons::build(Inputs {
         points: &points,
-        faces: faces_of(&polygonal, points.len() / 3, [normals, colors, tex_coords]),
-        default_tex_coords: needs.tex_coords.is_some() && tex_coords.is_none(),
+        faces: faces_of(&polygonal, points.len() / 3, normals, colors, &tex_coords),
         normals,
         generation,
         need_normals: needs.normals,
         colors,
         tex_coords,
-    }))
+    });
+    mesh.origin = origin;
+    Some(mesh)
 }
 
 /// The faces, with per-corner elements for the attributes not bound by coordinate.
 fn faces_of(
     polygonal: &Polygonal,
     point_count: usize,
-    attributes: [Option<Attribute>; 3],
+    normals: Option<Attribute>,
+    colors: Option<Attribute>,
+    tex_coords: &[TexCoordInput],
 ) -> Faces {
-    let per_corner: Vec<Kind> = attributes
+    let given = tex_coords.iter().find_map(|t| match t {
+        TexCoordInput::Given(a) => Some(*a),
+        _ => None,
+    });
+    let per_corner: Vec<Kind> = [normals, colors, given]
         .iter()
         .flatten()
         .filter(|a| !a.by_coord)
@@ -193,7 +264,7 @@ fn crease_generation(doc: &Document, geometry: NodeId) -> NormalGeneration {
 }
 
 /// ElevationGrid: its grid cut to the rows its heights fill (model::faces).
-fn elevation_grid(doc: &Document, geometry: NodeId, needs: Needs) -> Option<LocalMesh> {
+fn elevation_grid(doc: &Document, geometry: NodeId, needs: &Needs) -> Option<LocalMesh> {
     let polygonal = Polygonal::read(doc, geometry, 0)?;
     let x_dim = doc.i32_of(geometry, "xDimension").unwrap_or(0).max(0) as usize;
     let z_dim = doc.i32_of(geometry, "zDimension").unwrap_or(0).max(0) as usize;
@@ -215,43 +286,39 @@ fn elevation_grid(doc: &Document, geometry: NodeId, needs: Needs) -> Option<Loca
     let colors = color
         .as_ref()
         .map(|(values, arity)| Attribute::of(&polygonal, Kind::Color, values, *arity));
-    // Default mapping (18.2.4): s along x, t along z, each from 0 to 1.
+    // Default mapping (13.3.4): s along x, t along z, each from 0 to 1.
     let step = |n: usize| 1.0 / n.saturating_sub(1).max(1) as f32;
-    let default_tex: Vec<f32> = (0..count)
-        .flat_map(|k| {
-            [
-                (k % x_dim) as f32 * step(x_dim),
-                (k / x_dim) as f32 * step(z_dim),
-            ]
-        })
-        .collect();
-    let tex_values = needs
-        .tex_coord_node()
-        .filter(|&t| super::fields::type_is(doc, t, "TextureCoordinate"))
-        .map(|t| floats(doc, t, "point"));
-    let tex_coords = needs.tex_coords.is_some().then(|| {
-        let values = tex_values.as_deref().unwrap_or(&default_tex);
-        Attribute::of(&polygonal, Kind::TexCoord, values, 2)
-    });
+    let default_tex: Vec<f32> = if needs.tex_coords.contains(&TexCoordSource::Default) {
+        (0..count)
+            .flat_map(|k| {
+                [
+                    (k % x_dim) as f32 * step(x_dim),
+                    (k / x_dim) as f32 * step(z_dim),
+                ]
+            })
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let given = given_values(doc, needs);
+    let tex_coords = tex_coord_inputs(&polygonal, needs, &given, Some(&default_tex));
     Some(polygons::build(Inputs {
         points: &points,
-        faces: faces_of(&polygonal, count, [normals, colors, tex_coords]),
+        faces: faces_of(&polygonal, count, normals, colors, &tex_coords),
         normals,
         generation: crease_generation(doc, geometry),
         need_normals: needs.normals,
         colors,
         tex_coords,
-        default_tex_coords: false,
     }))
 }
 
 fn lines_or_points(doc: &Document, geometry: NodeId, name: &str) -> Built {
-    let points = child(doc, geometry, "coord")
-        .map(|c| floats(doc, c, "point"))
-        .unwrap_or_default();
+    let (points, origin) = coordinates(doc, geometry);
     let count = points.len() / 3;
     let positions: Vec<[f32; 3]> = points.chunks_exact(3).map(|p| [p[0], p[1], p[2]]).collect();
     let color = color_attribute(doc, geometry);
+    let colors_have_alpha = color.as_ref().is_some_and(|(_, arity)| *arity == 4);
     let mut indices = Vec::new();
     let mut colors = color.as_ref().map(|(values, arity)| {
         let mut per_point = polygons::rgba_with_arity(values, *arity);
@@ -329,10 +396,11 @@ fn lines_or_points(doc: &Document, geometry: NodeId, name: &str) -> Built {
             let mesh = LocalMesh {
                 primitive: Primitive::Lines,
                 positions: expanded_positions,
-                normals: None,
+                origin,
                 colors,
-                tex_coords: None,
+                colors_have_alpha,
                 indices,
+                ..LocalMesh::default()
             };
             return Built::Mesh(
                 mesh,
@@ -346,10 +414,11 @@ fn lines_or_points(doc: &Document, geometry: NodeId, name: &str) -> Built {
     let mesh = LocalMesh {
         primitive,
         positions,
-        normals: None,
+        origin,
         colors,
-        tex_coords: None,
+        colors_have_alpha,
         indices,
+        ..LocalMesh::default()
     };
     Built::Mesh(
         mesh,

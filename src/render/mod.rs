@@ -23,13 +23,17 @@ mod gpu;
 #[allow(clippy::needless_range_loop)]
 mod polygons;
 #[cfg(feature = "render")]
+mod tangents;
+#[cfg(feature = "render")]
+mod texgen;
+#[cfg(feature = "render")]
 mod textures;
 
 use std::path::Path;
 
 pub use cli_args::{ImageSize, Quality, RenderArgs};
 #[cfg(feature = "render")]
-pub use gpu::GpuError;
+pub use gpu::{GpuError, Settings, Shading};
 
 use crate::model::Document;
 use crate::report::FileReport;
@@ -44,6 +48,19 @@ use crate::validate::document::validation_incomplete::VALIDATION_INCOMPLETE;
 /// bad --camera).
 pub fn render_image(
     args: &RenderArgs,
+    path: &Path,
+    source: &[u8],
+    doc: Option<&Document>,
+    report: &mut FileReport,
+) -> Result<image::RgbaImage, String> {
+    render_with(args, args.quality.settings(), path, source, doc, report)
+}
+
+/// [`render_image`] with explicit [`Settings`] instead of a quality preset (the benchmark
+/// measures the presets against a heavily supersampled reference this way).
+pub fn render_with(
+    args: &RenderArgs,
+    settings: Settings,
     path: &Path,
     source: &[u8],
     doc: Option<&Document>,
@@ -80,13 +97,8 @@ pub fn render_image(
     report
         .diagnostics
         .extend(resolve(&diagnostics, source, Some(doc)));
-    gpu::render(
-        &flattened.list,
-        args.size.width,
-        args.size.height,
-        args.quality,
-    )
-    .map_err(|e| e.to_string())
+    gpu::render(flattened.list, args.size.width, args.size.height, settings)
+        .map_err(|e| e.to_string())
 }
 
 /// `--render`: renders `doc` (as [`crate::check::check_document`] read it) and writes the

@@ -108,6 +108,17 @@ impl Faces {
     }
 }
 
+/// A texture coordinate set to produce.
+#[derive(Clone, Copy)]
+pub enum TexCoordInput<'a> {
+    /// From a TextureCoordinate node (or a geometry's own default values).
+    Given(Attribute<'a>),
+    /// The bounding-box default mapping (13.3.6).
+    Default,
+    /// Left empty: generated once the mesh is placed (TextureCoordinateGenerator).
+    Generated,
+}
+
 pub struct Inputs<'a> {
     pub points: &'a [f32],
     pub faces: Faces,
@@ -115,9 +126,7 @@ pub struct Inputs<'a> {
     pub generation: NormalGeneration,
     pub need_normals: bool,
     pub colors: Option<Attribute<'a>>,
-    pub tex_coords: Option<Attribute<'a>>,
-    /// Texture coordinates needed but not given: the bounding-box default mapping.
-    pub default_tex_coords: bool,
+    pub tex_coords: Vec<TexCoordInput<'a>>,
 }
 
 /// Builds the triangle mesh. Vertices are shared by coordinate index when every attribute
@@ -159,12 +168,22 @@ pub fn build(inputs: Inputs) -> LocalMesh {
     }
 
     let by_coord = |a: &Option<Attribute>| a.as_ref().is_none_or(|a| a.by_coord);
+    let tex_by_coord = inputs.tex_coords.iter().all(|t| match t {
+        TexCoordInput::Given(a) => a.by_coord,
+        _ => true,
+    });
     let shared = by_coord(&inputs.normals)
         && by_coord(&inputs.colors)
-        && by_coord(&inputs.tex_coords)
-        && (!generate || inputs.generation == NormalGeneration::Smooth)
-        && !inputs.default_tex_coords;
+        && tex_by_coord
+        && (!generate || inputs.generation == NormalGeneration::Smooth);
     let point_count = inputs.points.len() / 3;
+    let colors_have_alpha = inputs.colors.as_ref().is_some_and(|c| c.arity == 4);
+    // The default mapping spans the bounding box of all the node's points.
+    let default_mapping = inputs
+        .tex_coords
+        .iter()
+        .any(|t| matches!(t, TexCoordInput::Default))
+        .then(|| BoundingBoxMapping::of(inputs.points));
     if shared {
         let indices: Vec<u32> = triangles
             .iter()
@@ -182,6 +201,17 @@ pub fn build(inputs: Inputs) -> LocalMesh {
         } else {
             Some(smooth_by_coord(faces, &face_normals, point_count))
         };
+        let tex_coords = inputs
+            .tex_coords
+            .iter()
+            .map(|t| match t {
+                TexCoordInput::Given(a) => to_vec2(&per_coord_any(a, point_count)),
+                TexCoordInput::Default => default_mapping
+                    .as_ref()
+                    .map_or_else(Vec::new, |m| m.map(&positions)),
+                TexCoordInput::Generated => Vec::new(),
+            })
+            .collect();
         return LocalMesh {
             primitive: Primitive::Triangles,
             positions,
@@ -190,13 +220,10 @@ pub fn build(inputs: Inputs) -> LocalMesh {
                 .colors
                 .as_ref()
                 .map(|c| rgba_with_arity(&per_coord_any(c, point_count), c.arity)),
-            tex_coords: inputs.tex_coords.as_ref().map(|t| {
-                per_coord_any(t, point_count)
-                    .chunks_exact(2)
-                    .map(|v| [v[0], v[1]])
-                    .collect()
-            }),
+            colors_have_alpha,
+            tex_coords,
             indices,
+            ..LocalMesh::default()
         };
     }
 
@@ -238,18 +265,17 @@ pub fn build(inputs: Inputs) -> LocalMesh {
             point_count,
         ))
     };
-    let tex_coords = if let Some(t) = &inputs.tex_coords {
-        Some(
-            gather(t, &[0.0, 0.0])
-                .chunks_exact(2)
-                .map(|v| [v[0], v[1]])
-                .collect(),
-        )
-    } else if inputs.default_tex_coords {
-        Some(bounding_box_mapping(&positions))
-    } else {
-        None
-    };
+    let tex_coords = inputs
+        .tex_coords
+        .iter()
+        .map(|t| match t {
+            TexCoordInput::Given(a) => to_vec2(&gather(a, &[0.0, 0.0])),
+            TexCoordInput::Default => default_mapping
+                .as_ref()
+                .map_or_else(Vec::new, |m| m.map(&positions)),
+            TexCoordInput::Generated => Vec::new(),
+        })
+        .collect();
     LocalMesh {
         primitive: Primitive::Triangles,
         positions,
@@ -258,8 +284,10 @@ pub fn build(inputs: Inputs) -> LocalMesh {
             .colors
             .as_ref()
             .map(|c| rgba_with_arity(&gather(c, &WHITE[..c.arity]), c.arity)),
+        colors_have_alpha,
         tex_coords,
         indices: triangles.iter().flatten().copied().collect(),
+        ..LocalMesh::default()
     }
 }
 
@@ -287,6 +315,10 @@ fn per_coord(a: &Attribute, count: usize, fallback: [f32; 3]) -> Vec<[f32; 3]> {
 
 fn to_vec3(flat: &[f32]) -> Vec<[f32; 3]> {
     flat.chunks_exact(3).map(|v| [v[0], v[1], v[2]]).collect()
+}
+
+fn to_vec2(flat: &[f32]) -> Vec<[f32; 2]> {
+    flat.chunks_exact(2).map(|v| [v[0], v[1]]).collect()
 }
 
 /// RGB (alpha 1) or RGBA values, clamped to [0, 1].
@@ -400,37 +432,62 @@ fn generated_per_corner(
     }
 }
 
-/// The default mapping of 18.2.4 for IndexedFaceSet and the composed sets: S along the
+/// The default mapping of 13.3.6 for IndexedFaceSet and the composed sets: S along the
 /// longest side of the bounding box from 0 to 1, T along the second longest, with the
 /// same scale.
-pub fn bounding_box_mapping(positions: &[[f32; 3]]) -> Vec<[f32; 2]> {
-    let mut lo = [f32::INFINITY; 3];
-    let mut hi = [f32::NEG_INFINITY; 3];
-    for p in positions {
-        for k in 0..3 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
+struct BoundingBoxMapping {
+    lo: [f64; 3],
+    s_axis: usize,
+    t_axis: usize,
+    scale: f64,
+}
+
+impl BoundingBoxMapping {
+    /// The box of `points` (flat x, y, z), non-finite points left out.
+    fn of(points: &[f32]) -> BoundingBoxMapping {
+        let mut lo = [f64::INFINITY; 3];
+        let mut hi = [f64::NEG_INFINITY; 3];
+        for p in points.chunks_exact(3) {
+            if p.iter().all(|c| c.is_finite()) {
+                for k in 0..3 {
+                    lo[k] = lo[k].min(f64::from(p[k]));
+                    hi[k] = hi[k].max(f64::from(p[k]));
+                }
+            }
+        }
+        let size = [0, 1, 2].map(|k| (hi[k] - lo[k]).max(0.0));
+        let mut axes = [0usize, 1, 2];
+        // Stable: ties keep X before Y before Z.
+        axes.sort_by(|&a, &b| size[b].total_cmp(&size[a]));
+        let (s_axis, t_axis) = (axes[0], axes[1]);
+        let scale = if size[s_axis] > 0.0 && size[s_axis].is_finite() {
+            1.0 / size[s_axis]
+        } else {
+            0.0
+        };
+        BoundingBoxMapping {
+            lo: lo.map(|l| if l.is_finite() { l } else { 0.0 }),
+            s_axis,
+            t_axis,
+            scale,
         }
     }
-    let size = [0, 1, 2].map(|k| f64::from(hi[k]) - f64::from(lo[k]));
-    let mut axes = [0usize, 1, 2];
-    // Stable: ties keep X before Y before Z.
-    axes.sort_by(|&a, &b| size[b].total_cmp(&size[a]));
-    let (s_axis, t_axis) = (axes[0], axes[1]);
-    let scale = if size[s_axis] > 0.0 {
-        1.0 / size[s_axis]
-    } else {
-        0.0
-    };
-    positions
-        .iter()
-        .map(|p| {
-            [
-                ((f64::from(p[s_axis]) - f64::from(lo[s_axis])) * scale) as f32,
-                ((f64::from(p[t_axis]) - f64::from(lo[t_axis])) * scale) as f32,
-            ]
-        })
-        .collect()
+
+    fn map(&self, positions: &[[f32; 3]]) -> Vec<[f32; 2]> {
+        positions
+            .iter()
+            .map(|p| {
+                [self.s_axis, self.t_axis].map(|axis| {
+                    let v = ((f64::from(p[axis]) - self.lo[axis]) * self.scale) as f32;
+                    if v.is_finite() {
+                        v
+                    } else {
+                        0.0
+                    }
+                })
+            })
+            .collect()
+    }
 }
 
 /// Triangulates a simple polygon (counterclockwise about `normal`) by ear clipping.

@@ -1,6 +1,7 @@
 //! Box, Sphere, Cylinder and Cone as triangle meshes with the normals and the default
-//! texture coordinates of 13.3 (Geometry3D). All three attributes are always produced:
-//! they are cheap at these sizes, and the caller drops what the material does not need.
+//! texture coordinates of 13.3 (Geometry3D). All three attributes are always produced
+//! (one texture coordinate set): they are cheap at these sizes, and the caller drops
+//! what the material does not need.
 
 use std::f32::consts::{PI, TAU};
 
@@ -38,9 +39,9 @@ impl Builder {
             primitive: Primitive::Triangles,
             positions: self.positions,
             normals: Some(self.normals),
-            colors: None,
-            tex_coords: Some(self.tex_coords),
+            tex_coords: vec![self.tex_coords],
             indices: self.indices,
+            ..LocalMesh::default()
         }
     }
 }

@@ -1,5 +1,9 @@
-// The lighting equations of 19775-1 clause 17 (17.2.2), evaluated per fragment (Phong
-// shading). Positions are relative to the eye, in world orientation: V = normalize(-p).
+// The lighting equations of 19775-1 clause 17 (17.2.2) and the texturing of clause 18.
+// Positions are relative to the eye, in world orientation: V = normalize(-p).
+//
+// Two shadings share the equations: Phong shading (`vs_main` + `fs_phong`, per fragment,
+// every material texture) and Gouraud shading (`vs_gouraud` + `fs_gouraud`, per vertex,
+// with the main texture applied per fragment as 17.2.2.8 recommends).
 
 struct Light {
     color_intensity: vec4<f32>,    // rgb colour, intensity
@@ -11,8 +15,12 @@ struct Light {
 
 struct Globals {
     view_projection: mat4x4<f32>,
+    // Clip space to background directions (the Background's axes, eye at the origin).
+    background_from_clip: mat4x4<f32>,
     fog_color_range: vec4<f32>,    // rgb, visibilityRange
-    counts: vec4<u32>,             // fog (0 none, 1 linear, 2 exponential), light count
+    counts: vec4<u32>,             // fog (0 none, 1 linear, 2 exponential), lights, sky, ground
+    sky: array<vec4<f32>, 8>,      // rgb, angle from the zenith
+    ground: array<vec4<f32>, 8>,   // rgb, angle from the nadir
     lights: array<Light, 16>,
 };
 
@@ -20,27 +28,63 @@ struct Material {
     diffuse_alpha: vec4<f32>,      // diffuse/base colour, 1 - transparency
     emissive_model: vec4<f32>,     // emissive colour, model (0 unlit, 1 Phong, 2 physical)
     specular_shininess: vec4<f32>, // specular colour, shininess × 128
-    params: vec4<f32>,             // ambientIntensity, metallic, roughness
-    flags: vec4<u32>,              // has texture, texture replaces rgb, replaces alpha
+    params: vec4<f32>,             // ambientIntensity, metallic, roughness, normalScale
+    extra: vec4<f32>,              // occlusionStrength, texture replaces rgb, replaces alpha (3.x)
 };
 
 struct Draw {
     front: Material,
     back: Material,
-    misc: vec4<u32>,               // light mask, has per-vertex colour
+    misc: vec4<u32>,               // light mask, colour mode (0 none, 1 RGB, 2 RGBA), roles, stages
+    sets_main: vec4<u32>,          // texture coordinate set of stages 0-3
+    sets_roles: vec4<u32>,         // ... of emissive, normal, occlusion, specular/metallicRoughness
+    sets_more: vec4<u32>,          // ... of shininess, ambient; clip plane count
+    factor: vec4<f32>,             // MultiTexture colour and alpha
     cutoff: vec4<f32>,             // alpha cutoff
+    stages: array<vec4<u32>, 4>,   // mode, alpha mode, source, function
+    clip_planes: array<vec4<f32>, 4>,
 };
+
+// Roles present (bits of draw.misc.z).
+const ROLE_EMISSIVE: u32 = 1u;
+const ROLE_NORMAL: u32 = 2u;
+const ROLE_OCCLUSION: u32 = 4u;
+const ROLE_SPECULAR_OR_MR: u32 = 8u;
+const ROLE_SHININESS: u32 = 16u;
+const ROLE_AMBIENT: u32 = 32u;
 
 @group(0) @binding(0) var<uniform> globals: Globals;
 @group(1) @binding(0) var<uniform> draw: Draw;
-@group(2) @binding(0) var base_texture: texture_2d<f32>;
-@group(2) @binding(1) var base_sampler: sampler;
+@group(2) @binding(0) var t_stage0: texture_2d<f32>;
+@group(2) @binding(1) var t_stage1: texture_2d<f32>;
+@group(2) @binding(2) var t_stage2: texture_2d<f32>;
+@group(2) @binding(3) var t_stage3: texture_2d<f32>;
+@group(2) @binding(4) var t_emissive: texture_2d<f32>;
+@group(2) @binding(5) var t_normal: texture_2d<f32>;
+@group(2) @binding(6) var t_occlusion: texture_2d<f32>;
+@group(2) @binding(7) var t_specular_mr: texture_2d<f32>;
+@group(2) @binding(8) var t_shininess: texture_2d<f32>;
+@group(2) @binding(9) var t_ambient: texture_2d<f32>;
+@group(2) @binding(10) var s_stage0: sampler;
+@group(2) @binding(11) var s_stage1: sampler;
+@group(2) @binding(12) var s_stage2: sampler;
+@group(2) @binding(13) var s_stage3: sampler;
+@group(2) @binding(14) var s_emissive: sampler;
+@group(2) @binding(15) var s_normal: sampler;
+@group(2) @binding(16) var s_occlusion: sampler;
+@group(2) @binding(17) var s_specular_mr: sampler;
+@group(2) @binding(18) var s_shininess: sampler;
+@group(2) @binding(19) var s_ambient: sampler;
 
 struct VertexIn {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
     @location(2) color: vec4<f32>,
-    @location(3) tex_coord: vec2<f32>,
+    @location(3) tangent: vec4<f32>,
+    @location(4) uv0: vec2<f32>,
+    @location(5) uv1: vec2<f32>,
+    @location(6) uv2: vec2<f32>,
+    @location(7) uv3: vec2<f32>,
 };
 
 struct VertexOut {
@@ -48,19 +92,34 @@ struct VertexOut {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
     @location(2) color: vec4<f32>,
-    @location(3) tex_coord: vec2<f32>,
+    @location(3) tangent: vec4<f32>,
+    @location(4) uv01: vec4<f32>,
+    @location(5) uv23: vec4<f32>,
+    // Gouraud shading: the lit colours of the front and the back side.
+    @location(6) lit_front: vec4<f32>,
+    @location(7) lit_back: vec4<f32>,
 };
 
-@vertex
-fn vs_main(v: VertexIn) -> VertexOut {
+// X3D t runs up the image, texture rows run down.
+fn flip(uv: vec2<f32>) -> vec2<f32> {
+    return vec2<f32>(uv.x, 1.0 - uv.y);
+}
+
+fn common_vertex(v: VertexIn) -> VertexOut {
     var out: VertexOut;
     out.clip = globals.view_projection * vec4<f32>(v.position, 1.0);
     out.position = v.position;
     out.normal = v.normal;
     out.color = v.color;
-    // X3D t runs up the image, texture rows run down.
-    out.tex_coord = vec2<f32>(v.tex_coord.x, 1.0 - v.tex_coord.y);
+    out.tangent = v.tangent;
+    out.uv01 = vec4<f32>(flip(v.uv0), flip(v.uv1));
+    out.uv23 = vec4<f32>(flip(v.uv2), flip(v.uv3));
     return out;
+}
+
+@vertex
+fn vs_main(v: VertexIn) -> VertexOut {
+    return common_vertex(v);
 }
 
 const PI: f32 = 3.14159265358979;
@@ -68,6 +127,11 @@ const PI: f32 = 3.14159265358979;
 // x · y of 17.2.2.3: never negative.
 fn pdot(x: vec3<f32>, y: vec3<f32>) -> f32 {
     return max(0.0, dot(x, y));
+}
+
+fn unit_or_zero(v: vec3<f32>) -> vec3<f32> {
+    let len = length(v);
+    return select(vec3<f32>(0.0), v / len, len > 0.0);
 }
 
 // on × attenuation × spot of light i at point p, with L (towards the light).
@@ -94,6 +158,7 @@ fn incidence(light: Light, p: vec3<f32>) -> Incidence {
     let c = light.attenuation_radius.xyz;
     var factor = 1.0 / max(c.x + c.y * distance + c.z * distance * distance, 1.0);
     if kind == 2u {
+        // Table 17.4, in its order.
         let spot_angle = acos(clamp(dot(-result.to_light, light.direction_ambient.xyz), -1.0, 1.0));
         let beam = light.spot.x;
         let cut_off = light.spot.y;
@@ -107,9 +172,20 @@ fn incidence(light: Light, p: vec3<f32>) -> Incidence {
     return result;
 }
 
-fn phong(m: Material, diffuse: vec3<f32>, p: vec3<f32>, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
+// The inputs of the lighting equations at one point (17.2.2.5, 17.2.2.6).
+struct Surface {
+    diffuse: vec3<f32>,    // diffuseParameter / baseParameter
+    emissive: vec3<f32>,   // emissiveParameter
+    specular: vec3<f32>,   // specularParameter
+    shininess: f32,        // shininessParameter (× 128 already)
+    ambient: vec3<f32>,    // ambientParameter
+    metallic: f32,
+    roughness: f32,
+    occlusion: f32,        // occlusion() as a factor on the sum over the lights
+};
+
+fn phong(s: Surface, p: vec3<f32>, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
     var sum = vec3<f32>(0.0);
-    let ambient_parameter = m.params.x * diffuse;
     for (var i = 0u; i < globals.counts.y; i = i + 1u) {
         if (draw.misc.x & (1u << i)) == 0u {
             continue;
@@ -121,29 +197,28 @@ fn phong(m: Material, diffuse: vec3<f32>, p: vec3<f32>, n: vec3<f32>, v: vec3<f3
         }
         let l = inc.to_light;
         let intensity = light.color_intensity.w;
-        let ambient = light.direction_ambient.w * ambient_parameter;
-        let diffuse_term = intensity * diffuse * pdot(n, l);
+        let ambient = light.direction_ambient.w * s.ambient;
+        let diffuse_term = intensity * s.diffuse * pdot(n, l);
         var specular_term = vec3<f32>(0.0);
         let half_sum = l + v;
         if dot(half_sum, half_sum) > 0.0 && dot(n, l) > 0.0 {
             let h = normalize(half_sum);
-            let shininess = m.specular_shininess.w;
-            let lobe = select(pow(pdot(n, h), shininess), 1.0, shininess <= 0.0);
-            specular_term = intensity * m.specular_shininess.rgb * lobe;
+            let lobe = select(pow(pdot(n, h), s.shininess), 1.0, s.shininess <= 0.0);
+            specular_term = intensity * s.specular * lobe;
         }
         sum = sum + light.color_intensity.rgb * inc.factor * (ambient + diffuse_term + specular_term);
     }
-    return m.emissive_model.rgb + sum;
+    return s.emissive + s.occlusion * sum;
 }
 
 // The glTF 2.0 metallic-roughness BRDF (glTF 2.0 Appendix B), as 17.2.2.6 requires.
-fn physical(m: Material, base: vec3<f32>, p: vec3<f32>, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
-    let metallic = clamp(m.params.y, 0.0, 1.0);
-    let roughness = clamp(m.params.z, 0.0, 1.0);
+fn physical(s: Surface, p: vec3<f32>, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
+    let metallic = clamp(s.metallic, 0.0, 1.0);
+    let roughness = clamp(s.roughness, 0.0, 1.0);
     let alpha = roughness * roughness;
     let alpha2 = alpha * alpha;
-    let c_diff = mix(base, vec3<f32>(0.0), metallic);
-    let f0 = mix(vec3<f32>(0.04), base, metallic);
+    let c_diff = mix(s.diffuse, vec3<f32>(0.0), metallic);
+    let f0 = mix(vec3<f32>(0.04), s.diffuse, metallic);
     var sum = vec3<f32>(0.0);
     for (var i = 0u; i < globals.counts.y; i = i + 1u) {
         if (draw.misc.x & (1u << i)) == 0u {
@@ -167,12 +242,189 @@ fn physical(m: Material, base: vec3<f32>, p: vec3<f32>, n: vec3<f32>, v: vec3<f3
         let ggx = ggx_v + ggx_l;
         let visibility = select(0.0, 0.5 / ggx, ggx > 0.0);
         let d_denominator = n_dot_h * n_dot_h * (alpha2 - 1.0) + 1.0;
-        let distribution = alpha2 / (PI * d_denominator * d_denominator);
+        let distribution = alpha2 / max(PI * d_denominator * d_denominator, 1e-30);
         let f_diffuse = (vec3<f32>(1.0) - fresnel) * c_diff / PI;
         let f_specular = fresnel * visibility * distribution;
         sum = sum + light.color_intensity.rgb * light.color_intensity.w * inc.factor * n_dot_l * (f_diffuse + f_specular);
     }
-    return m.emissive_model.rgb + sum;
+    return s.emissive + s.occlusion * sum;
+}
+
+// The material's colour before textures: diffuseParameter (Phong), baseParameter
+// (physical) or emissiveParameter (unlit), with applyColorPerVertex.
+fn material_color(m: Material, vertex_color: vec4<f32>) -> vec4<f32> {
+    let unlit = u32(m.emissive_model.w) == 0u;
+    var color = vec4<f32>(select(m.diffuse_alpha.rgb, m.emissive_model.rgb, unlit), m.diffuse_alpha.a);
+    if draw.misc.y == 1u {
+        color = vec4<f32>(vertex_color.rgb, color.a);
+    } else if draw.misc.y == 2u {
+        color = vertex_color;
+    }
+    return color;
+}
+
+// The surface without textures (Gouraud shading, and the base of Phong shading).
+fn plain_surface(m: Material, color: vec3<f32>) -> Surface {
+    var s: Surface;
+    s.diffuse = color;
+    s.emissive = m.emissive_model.rgb;
+    s.specular = m.specular_shininess.rgb;
+    s.shininess = m.specular_shininess.w;
+    // ambientParameter: ambientIntensity × the diffuse factor (as 3.3's ODrgb, which the
+    // 4.0 backward-compatibility note keeps).
+    s.ambient = m.params.x * color;
+    s.metallic = m.params.y;
+    s.roughness = m.params.z;
+    s.occlusion = 1.0;
+    return s;
+}
+
+fn shade(m: Material, s: Surface, p: vec3<f32>, n: vec3<f32>) -> vec3<f32> {
+    let model = u32(m.emissive_model.w);
+    if model == 0u {
+        return s.diffuse;
+    }
+    let v = select(vec3<f32>(0.0, 0.0, 1.0), normalize(-p), length(p) > 0.0);
+    if model == 1u {
+        return phong(s, p, n, v);
+    }
+    return physical(s, p, n, v);
+}
+
+// The colour Gouraud shading lights: the material colour, or white where an X3D 3.x
+// texture replaces it (the fragment multiplies by the texture).
+fn gouraud_color(m: Material, vertex_color: vec4<f32>) -> vec4<f32> {
+    let color = material_color(m, vertex_color);
+    if draw.misc.w > 0u && m.extra.y != 0.0 {
+        return vec4<f32>(1.0, 1.0, 1.0, color.a);
+    }
+    return color;
+}
+
+@vertex
+fn vs_gouraud(v: VertexIn) -> VertexOut {
+    var out = common_vertex(v);
+    let n = unit_or_zero(v.normal);
+    let front = gouraud_color(draw.front, v.color);
+    let back = gouraud_color(draw.back, v.color);
+    out.lit_front = vec4<f32>(shade(draw.front, plain_surface(draw.front, front.rgb), v.position, n), front.a);
+    out.lit_back = vec4<f32>(shade(draw.back, plain_surface(draw.back, back.rgb), v.position, -n), back.a);
+    return out;
+}
+
+fn uv_of(index: u32, in: VertexOut) -> vec2<f32> {
+    switch index {
+        case 1u: { return in.uv01.zw; }
+        case 2u: { return in.uv23.xy; }
+        case 3u: { return in.uv23.zw; }
+        default: { return in.uv01.xy; }
+    }
+}
+
+// The main texture's stages sampled (white where absent). Draw-level conditions only, so
+// that sampling stays in uniform control flow.
+struct StageSamples {
+    s: array<vec4<f32>, 4>,
+};
+
+fn sample_stages(in: VertexOut) -> StageSamples {
+    var out: StageSamples;
+    let count = draw.misc.w;
+    out.s[0] = vec4<f32>(1.0);
+    out.s[1] = vec4<f32>(1.0);
+    out.s[2] = vec4<f32>(1.0);
+    out.s[3] = vec4<f32>(1.0);
+    if count > 0u {
+        out.s[0] = textureSample(t_stage0, s_stage0, uv_of(draw.sets_main.x, in));
+    }
+    if count > 1u {
+        out.s[1] = textureSample(t_stage1, s_stage1, uv_of(draw.sets_main.y, in));
+    }
+    if count > 2u {
+        out.s[2] = textureSample(t_stage2, s_stage2, uv_of(draw.sets_main.z, in));
+    }
+    if count > 3u {
+        out.s[3] = textureSample(t_stage3, s_stage3, uv_of(draw.sets_main.w, in));
+    }
+    return out;
+}
+
+// One MultiTexture stage (18.4.3): Arg1 the texture, Arg2 from the source.
+fn stage_mode(mode: u32, a1: vec4<f32>, a2: vec4<f32>, diffuse_alpha: f32) -> vec4<f32> {
+    let factor = draw.factor;
+    switch mode {
+        case 1u: { return a1; }                                          // REPLACE
+        case 2u: { return a1 * a2 * 2.0; }                               // MODULATE2X
+        case 3u: { return a1 * a2 * 4.0; }                               // MODULATE4X
+        case 4u: { return a1 + a2; }                                     // ADD
+        case 5u: { return a1 + a2 - vec4<f32>(0.5); }                    // ADDSIGNED
+        case 6u: { return (a1 + a2 - vec4<f32>(0.5)) * 2.0; }            // ADDSIGNED2X
+        case 7u: { return a1 - a2; }                                     // SUBTRACT
+        case 8u: { return a1 + a2 - a1 * a2; }                           // ADDSMOOTH
+        case 9u: { return mix(a2, a1, diffuse_alpha); }                  // BLENDDIFFUSEALPHA
+        case 10u: { return mix(a2, a1, a1.a); }                          // BLENDTEXTUREALPHA
+        case 11u: { return mix(a2, a1, factor.a); }                      // BLENDFACTORALPHA
+        case 12u: { return mix(a2, a1, a2.a); }                          // BLENDCURRENTALPHA
+        case 13u: { return vec4<f32>(a1.rgb + a1.a * a2.rgb, a1.a); }    // MODULATEALPHA_ADDCOLOR
+        case 14u: { return vec4<f32>((1.0 - a1.a) * a2.rgb + a1.rgb, a1.a); } // MODULATEINVALPHA_ADDCOLOR
+        case 15u: { return vec4<f32>((vec3<f32>(1.0) - a1.rgb) * a2.rgb + vec3<f32>(a1.a), a1.a); } // MODULATEINVCOLOR_ADDALPHA
+        case 16u: { return a2; }                                         // OFF: the stage does nothing
+        case 17u: { return a1; }                                         // SELECTARG1
+        case 18u: { return a2; }                                         // SELECTARG2
+        case 19u: {                                                      // DOTPRODUCT3
+            let d = dot(a1.rgb * 2.0 - vec3<f32>(1.0), a2.rgb * 2.0 - vec3<f32>(1.0));
+            return vec4<f32>(d);
+        }
+        default: { return a1 * a2; }                                     // MODULATE
+    }
+}
+
+// mixTexture (17.2.2.3): the main texture applied to `color`. `specular` is the specular
+// colour (the SPECULAR source).
+// X3D 3.x lets a single RGB(A) texture replace the colour; Gouraud shading (`lit`) has
+// lit with white instead and multiplies.
+fn mix_texture(color: vec4<f32>, specular: vec3<f32>, m: Material, samples: StageSamples, lit: bool) -> vec4<f32> {
+    let count = draw.misc.w;
+    if count == 0u {
+        return color;
+    }
+    if count == 1u && draw.stages[0].x == 0u && draw.stages[0].z == 0u && draw.stages[0].w == 0u {
+        let t = samples.s[0];
+        let rgb = select(color.rgb * t.rgb, t.rgb, m.extra.y != 0.0 && !lit);
+        let a = select(color.a * t.a, t.a, m.extra.z != 0.0);
+        return vec4<f32>(rgb, a);
+    }
+    var current = color;
+    for (var i = 0u; i < count; i = i + 1u) {
+        let stage = draw.stages[i];
+        var a1 = samples.s[i];
+        var a2 = current;
+        switch stage.z {
+            case 1u: { a2 = color; }
+            case 2u: { a2 = vec4<f32>(specular, 1.0); }
+            case 3u: { a2 = draw.factor; }
+            default: {}
+        }
+        if stage.w == 1u {
+            a1 = vec4<f32>(1.0) - a1;
+        } else if stage.w == 2u {
+            a1 = vec4<f32>(a1.a);
+        }
+        let rgb = stage_mode(stage.x, a1, a2, color.a);
+        let alpha = stage_mode(stage.y, a1, a2, color.a);
+        current = clamp(vec4<f32>(rgb.rgb, alpha.a), vec4<f32>(0.0), vec4<f32>(1.0));
+    }
+    return current;
+}
+
+// Clip planes (a ClipPlane's plane): what lies on the negative side is cut.
+fn clip(p: vec3<f32>) {
+    for (var i = 0u; i < draw.sets_more.z; i = i + 1u) {
+        let plane = draw.clip_planes[i];
+        if dot(plane.xyz, p) + plane.w < 0.0 {
+            discard;
+        }
+    }
 }
 
 fn apply_fog(color: vec3<f32>, p: vec3<f32>) -> vec3<f32> {
@@ -193,44 +445,146 @@ fn apply_fog(color: vec3<f32>, p: vec3<f32>) -> vec3<f32> {
     return mix(globals.fog_color_range.rgb, color, f);
 }
 
+fn finish(rgb: vec3<f32>, alpha: f32, p: vec3<f32>) -> vec4<f32> {
+    return vec4<f32>(clamp(apply_fog(rgb, p), vec3<f32>(0.0), vec3<f32>(1.0)), clamp(alpha, 0.0, 1.0));
+}
+
 @fragment
-fn fs_main(in: VertexOut, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<f32> {
+fn fs_phong(in: VertexOut, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<f32> {
+    // Every sample first, in uniform control flow (facing and clipping are not uniform).
+    let samples = sample_stages(in);
+    let roles = draw.misc.z;
+    var emissive_t = vec4<f32>(1.0);
+    var normal_t = vec4<f32>(0.5, 0.5, 1.0, 1.0);
+    var occlusion_t = vec4<f32>(1.0);
+    var specular_mr_t = vec4<f32>(1.0);
+    var shininess_t = vec4<f32>(1.0);
+    var ambient_t = vec4<f32>(1.0);
+    if (roles & ROLE_EMISSIVE) != 0u {
+        emissive_t = textureSample(t_emissive, s_emissive, uv_of(draw.sets_roles.x, in));
+    }
+    if (roles & ROLE_NORMAL) != 0u {
+        normal_t = textureSample(t_normal, s_normal, uv_of(draw.sets_roles.y, in));
+    }
+    if (roles & ROLE_OCCLUSION) != 0u {
+        occlusion_t = textureSample(t_occlusion, s_occlusion, uv_of(draw.sets_roles.z, in));
+    }
+    if (roles & ROLE_SPECULAR_OR_MR) != 0u {
+        specular_mr_t = textureSample(t_specular_mr, s_specular_mr, uv_of(draw.sets_roles.w, in));
+    }
+    if (roles & ROLE_SHININESS) != 0u {
+        shininess_t = textureSample(t_shininess, s_shininess, uv_of(draw.sets_more.x, in));
+    }
+    if (roles & ROLE_AMBIENT) != 0u {
+        ambient_t = textureSample(t_ambient, s_ambient, uv_of(draw.sets_more.y, in));
+    }
+    clip(in.position);
+
     var m = draw.front;
-    var n = in.normal;
     if !front_facing {
         m = draw.back;
-        n = -n;
     }
-    let model = u32(m.emissive_model.w);
-    // applyColorPerVertex: the Color node's colour replaces the material colour.
-    var color = vec4<f32>(select(m.diffuse_alpha.rgb, m.emissive_model.rgb, model == 0u), m.diffuse_alpha.a);
-    if draw.misc.y == 1u {
-        color = vec4<f32>(in.color.rgb, color.a);
-    } else if draw.misc.y == 2u {
-        color = in.color;
-    }
-    // mixTexture. Sampled unconditionally: derivatives need uniform control flow.
-    let sample = textureSample(base_texture, base_sampler, in.tex_coord);
-    if m.flags.x != 0u {
-        let rgb = select(color.rgb * sample.rgb, sample.rgb, m.flags.y != 0u);
-        let a = select(color.a * sample.a, sample.a, m.flags.z != 0u);
-        color = vec4<f32>(rgb, a);
-    }
+    let color = mix_texture(material_color(m, in.color), m.specular_shininess.rgb, m, samples, false);
     if color.a < draw.cutoff.x {
         discard;
     }
-    var rgb = color.rgb;
-    let len = length(n);
-    if model != 0u {
-        if len > 0.0 {
-            n = n / len;
+    let model = u32(m.emissive_model.w);
+    if model == 0u {
+        // Unlit: the emissiveTexture (if any) is the main texture; nothing else applies.
+        return finish(color.rgb, color.a, in.position);
+    }
+    // The normal, perturbed by the normal texture in tangent space (12.3.4), then turned
+    // to the side seen.
+    var n = unit_or_zero(in.normal);
+    if (roles & ROLE_NORMAL) != 0u && length(in.tangent.xyz) > 0.0 && length(n) > 0.0 {
+        let t = unit_or_zero(in.tangent.xyz - n * dot(n, in.tangent.xyz));
+        let b = cross(n, t) * in.tangent.w;
+        let scale = m.params.w;
+        let local = unit_or_zero((normal_t.rgb * 2.0 - vec3<f32>(1.0)) * vec3<f32>(scale, scale, 1.0));
+        n = unit_or_zero(t * local.x + b * local.y + n * local.z);
+    }
+    if !front_facing {
+        n = -n;
+    }
+    var s = plain_surface(m, color.rgb);
+    s.emissive = m.emissive_model.rgb * emissive_t.rgb;
+    s.ambient = s.ambient * ambient_t.rgb;
+    if model == 1u {
+        s.specular = s.specular * specular_mr_t.rgb;
+        s.shininess = s.shininess * shininess_t.a;
+    } else {
+        s.metallic = s.metallic * specular_mr_t.b;
+        s.roughness = s.roughness * specular_mr_t.g;
+    }
+    s.occlusion = mix(1.0, occlusion_t.r, m.extra.x);
+    return finish(shade(m, s, in.position, n), color.a, in.position);
+}
+
+@fragment
+fn fs_gouraud(in: VertexOut, @builtin(front_facing) front_facing: bool) -> @location(0) vec4<f32> {
+    let samples = sample_stages(in);
+    clip(in.position);
+    var m = draw.front;
+    var lit = in.lit_front;
+    if !front_facing {
+        m = draw.back;
+        lit = in.lit_back;
+    }
+    let color = mix_texture(lit, m.specular_shininess.rgb, m, samples, true);
+    if color.a < draw.cutoff.x {
+        discard;
+    }
+    return finish(color.rgb, color.a, in.position);
+}
+
+// The Background: a triangle covering the screen, coloured by the direction of each
+// pixel (24.4.1: sky colours by the angle from the zenith, ground colours by the angle
+// from the nadir, interpolated, the ground over the sky up to its last angle).
+struct BackgroundOut {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) ndc: vec2<f32>,
+};
+
+@vertex
+fn vs_background(@builtin(vertex_index) index: u32) -> BackgroundOut {
+    var out: BackgroundOut;
+    let xy = vec2<f32>(f32((index << 1u) & 2u), f32(index & 2u)) * 2.0 - vec2<f32>(1.0);
+    out.clip = vec4<f32>(xy, 0.0, 1.0);
+    out.ndc = xy;
+    return out;
+}
+
+fn gradient_color(angle: f32, is_sky: bool) -> vec3<f32> {
+    let count = select(globals.counts.w, globals.counts.z, is_sky);
+    var entry = select(globals.ground[0], globals.sky[0], is_sky);
+    var color = entry.rgb;
+    for (var i = 1u; i < count; i = i + 1u) {
+        let next = select(globals.ground[i], globals.sky[i], is_sky);
+        if angle <= next.w {
+            let span = next.w - entry.w;
+            let t = select(1.0, (angle - entry.w) / span, span > 0.0);
+            return mix(entry.rgb, next.rgb, clamp(t, 0.0, 1.0));
         }
-        let v = select(vec3<f32>(0.0, 0.0, 1.0), normalize(-in.position), length(in.position) > 0.0);
-        if model == 1u {
-            rgb = phong(m, color.rgb, in.position, n, v);
-        } else {
-            rgb = physical(m, color.rgb, in.position, n, v);
+        entry = next;
+        color = next.rgb;
+    }
+    return color;
+}
+
+@fragment
+fn fs_background(in: BackgroundOut) -> @location(0) vec4<f32> {
+    // Reversed depth: the near plane is at depth 1, the far plane at 0.
+    let near = globals.background_from_clip * vec4<f32>(in.ndc, 1.0, 1.0);
+    let far = globals.background_from_clip * vec4<f32>(in.ndc, 0.0, 1.0);
+    let direction = unit_or_zero(far.xyz / far.w - near.xyz / near.w);
+    let from_zenith = acos(clamp(direction.y, -1.0, 1.0));
+    var rgb = gradient_color(from_zenith, true);
+    if globals.counts.w > 0u {
+        let from_nadir = PI - from_zenith;
+        let last = globals.ground[globals.counts.w - 1u].w;
+        if from_nadir <= last || globals.counts.w == 1u && from_nadir <= PI / 2.0 {
+            rgb = gradient_color(from_nadir, false);
         }
     }
-    return vec4<f32>(clamp(apply_fog(rgb, in.position), vec3<f32>(0.0), vec3<f32>(1.0)), clamp(color.a, 0.0, 1.0));
+    return vec4<f32>(rgb, 1.0);
 }

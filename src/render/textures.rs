@@ -1,11 +1,12 @@
 //! Texture nodes to RGBA images: ImageTexture (PNG, JPEG, GIF files next to the
 //! document), PixelTexture (SFImage, rows from the bottom up), with the sampling of
-//! repeatS/repeatT and TextureProperties.
+//! repeatS/repeatT and TextureProperties (18.4.9) and a mipmap chain where the
+//! minification filter uses one.
 
 use std::path::{Path, PathBuf};
 
-use super::draw_list::Texture;
-use super::fields::{boolean, child};
+use super::draw_list::{Texture, Wrap};
+use super::fields::{boolean, child, float};
 use crate::model::{Document, NodeId};
 
 /// The largest texture side loaded (larger images are reported, not drawn).
@@ -28,31 +29,130 @@ pub fn load(doc: &Document, node: NodeId, base: &Path, root: &Path) -> Result<Lo
         other => return Err(format!("{other} is not drawn")),
     };
     let translucent = rgba.chunks_exact(4).any(|p| p[3] < 255);
-    let mut repeat_s = boolean(doc, node, "repeatS", true);
-    let mut repeat_t = boolean(doc, node, "repeatT", true);
-    let mut linear = true;
-    if let Some(properties) = child(doc, node, "textureProperties") {
-        let mode = |name: &str| doc.string_of(properties, name).unwrap_or_default();
-        // 18.4.8: REPEAT (and MIRRORED_REPEAT, drawn as REPEAT) repeat; the CLAMP modes clamp.
-        repeat_s = mode("boundaryModeS").ends_with("REPEAT");
-        repeat_t = mode("boundaryModeT").ends_with("REPEAT");
-        linear = !matches!(
-            mode("magnificationFilter").as_str(),
-            "NEAREST_PIXEL" | "FASTEST"
-        );
-    }
+    let sampling = Sampling::of(doc, node);
+    let levels = if sampling.mipmaps.is_some() {
+        mipmaps(rgba, width, height)
+    } else {
+        vec![rgba]
+    };
     Ok(Loaded {
         texture: Texture {
             width,
             height,
-            rgba,
-            repeat_s,
-            repeat_t,
-            linear,
+            levels,
+            wrap_s: sampling.wrap_s,
+            wrap_t: sampling.wrap_t,
+            magnify_linear: sampling.magnify_linear,
+            minify_linear: sampling.minify_linear,
+            mipmaps: sampling.mipmaps,
+            anisotropy: sampling.anisotropy,
         },
         channels,
         translucent,
     })
+}
+
+/// How a texture is sampled.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+struct Sampling {
+    wrap_s: Wrap,
+    wrap_t: Wrap,
+    magnify_linear: bool,
+    minify_linear: bool,
+    mipmaps: Option<bool>,
+    anisotropy: u16,
+}
+
+impl Sampling {
+    /// repeatS/repeatT, or the TextureProperties that override them (18.2.3). Without
+    /// TextureProperties the browser's defaults apply: bilinear, trilinear between
+    /// mipmaps.
+    fn of(doc: &Document, node: NodeId) -> Sampling {
+        let repeat = |field| {
+            if boolean(doc, node, field, true) {
+                Wrap::Repeat
+            } else {
+                Wrap::Clamp
+            }
+        };
+        let Some(properties) = child(doc, node, "textureProperties") else {
+            return Sampling {
+                wrap_s: repeat("repeatS"),
+                wrap_t: repeat("repeatT"),
+                magnify_linear: true,
+                minify_linear: true,
+                mipmaps: Some(true),
+                anisotropy: 1,
+            };
+        };
+        let mode = |name: &str| doc.string_of(properties, name).unwrap_or_default();
+        // Table 18.7. CLAMP_TO_BOUNDARY would need a border colour, which not every
+        // adapter has; it is drawn as CLAMP_TO_EDGE.
+        let wrap = |name: &str| match mode(name).as_str() {
+            "MIRRORED_REPEAT" => Wrap::MirroredRepeat,
+            "CLAMP" | "CLAMP_TO_EDGE" | "CLAMP_TO_BOUNDARY" => Wrap::Clamp,
+            _ => Wrap::Repeat,
+        };
+        // Tables 18.8 and 18.9: FASTEST is nearest texel; DEFAULT and NICEST linear.
+        let magnify_linear = !matches!(
+            mode("magnificationFilter").as_str(),
+            "NEAREST_PIXEL" | "FASTEST"
+        );
+        let generate = boolean(doc, properties, "generateMipMaps", false);
+        // (linear within a level, between levels: None no mipmaps / nearest / linear);
+        // a MIPMAP mode without mipmaps is its non-mipmapped mode (18.4.9).
+        let (minify_linear, between) = match mode("minificationFilter").as_str() {
+            "AVG_PIXEL" => (true, None),
+            "AVG_PIXEL_AVG_MIPMAP" => (true, Some(true)),
+            "AVG_PIXEL_NEAREST_MIPMAP" => (true, Some(false)),
+            "NEAREST_PIXEL" => (false, None),
+            "NEAREST_PIXEL_AVG_MIPMAP" => (false, Some(true)),
+            "NEAREST_PIXEL_NEAREST_MIPMAP" | "FASTEST" => (false, Some(false)),
+            _ => (true, Some(true)),
+        };
+        let degree = float(doc, properties, "anisotropicDegree", 1.0);
+        Sampling {
+            wrap_s: wrap("boundaryModeS"),
+            wrap_t: wrap("boundaryModeT"),
+            magnify_linear,
+            minify_linear,
+            mipmaps: between.filter(|_| generate),
+            // Values above the maximum are clamped to it (18.4.9); 16 is WebGPU's.
+            anisotropy: degree.clamp(1.0, 16.0) as u16,
+        }
+    }
+}
+
+/// The mipmap chain of an RGBA8 image down to 1 × 1: each level halves the sides of the
+/// one before (rounding down) and averages the texels each of its texels covers, so an
+/// odd side's last row or column is not lost.
+fn mipmaps(rgba: Vec<u8>, width: u32, height: u32) -> Vec<Vec<u8>> {
+    let mut levels = vec![rgba];
+    let (mut w, mut h) = (width as usize, height as usize);
+    while w > 1 || h > 1 {
+        let (nw, nh) = ((w / 2).max(1), (h / 2).max(1));
+        let previous = levels.last().map(Vec::as_slice).unwrap_or_default();
+        let mut next = Vec::with_capacity(nw * nh * 4);
+        for y in 0..nh {
+            let rows = y * h / nh..(y + 1) * h / nh;
+            for x in 0..nw {
+                let columns = x * w / nw..(x + 1) * w / nw;
+                let count = (rows.len() * columns.len()) as u32;
+                for c in 0..4 {
+                    let mut sum = 0u32;
+                    for sy in rows.clone() {
+                        for sx in columns.clone() {
+                            sum += u32::from(previous[(sy * w + sx) * 4 + c]);
+                        }
+                    }
+                    next.push(((sum + count / 2) / count) as u8);
+                }
+            }
+        }
+        levels.push(next);
+        (w, h) = (nw, nh);
+    }
+    levels
 }
 
 type Pixels = (Vec<u8>, u32, u32, u8);
@@ -163,4 +263,44 @@ fn pixel_texture(doc: &Document, node: NodeId) -> Result<Pixels, String> {
         rgba[at..at + 4].copy_from_slice(&texel);
     }
     Ok((rgba, width, height, components as u8))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn mipmaps_halve_down_to_one_texel_and_average() {
+        // 3 × 2: levels 3×2, 1×1; the 1×1 level averages all six texels.
+        let grey = [0u8, 100, 200, 255, 40, 60];
+        let rgba: Vec<u8> = grey.iter().flat_map(|&v| [v, v, v, 255]).collect();
+        let levels = mipmaps(rgba, 3, 2);
+        assert_eq!(levels.iter().map(Vec::len).collect::<Vec<_>>(), vec![24, 4]);
+        assert_eq!(levels[1][..], [109, 109, 109, 255]);
+    }
+
+    fn sampling(properties: &str) -> Sampling {
+        let source = format!(
+            "<X3D version='4.0'><Scene><Shape><Appearance><PixelTexture>{properties}</PixelTexture></Appearance></Shape></Scene></X3D>"
+        );
+        let doc = crate::parse::read(source.as_bytes()).document.unwrap();
+        let texture = doc.nodes_of_type("PixelTexture").next().unwrap();
+        Sampling::of(&doc, texture)
+    }
+
+    #[test]
+    fn texture_properties_choose_wrapping_and_filters() {
+        assert_eq!(sampling("").mipmaps, Some(true));
+        let s = sampling(
+            "<TextureProperties boundaryModeS='MIRRORED_REPEAT' boundaryModeT='CLAMP_TO_EDGE' \
+             magnificationFilter='NEAREST_PIXEL' minificationFilter='AVG_PIXEL_NEAREST_MIPMAP' \
+             generateMipMaps='true' anisotropicDegree='64'/>",
+        );
+        assert_eq!((s.wrap_s, s.wrap_t), (Wrap::MirroredRepeat, Wrap::Clamp));
+        assert!(!s.magnify_linear && s.minify_linear);
+        assert_eq!((s.mipmaps, s.anisotropy), (Some(false), 16));
+        // A MIPMAP filter without generateMipMaps falls back to its plain mode.
+        let s = sampling("<TextureProperties minificationFilter='AVG_PIXEL_AVG_MIPMAP'/>");
+        assert_eq!(s.mipmaps, None);
+    }
 }

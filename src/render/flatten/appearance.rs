@@ -1,0 +1,536 @@
+//! Appearance → materials and textures by role. The front material and the back one
+//! (backMaterial or TwoSidedMaterial, 12.2.3); the main texture (the material's
+//! diffuse/base/emissive texture, else Appearance.texture, possibly a MultiTexture,
+//! 12.2.5); the other material textures of the lit models (17.2.2.5, 17.2.2.6); each with
+//! the rule that picks its texture coordinates (12.2.4, or the MultiTexture stage order of
+//! 18.4.4 and 18.4.5), resolved per Shape in `shape.rs`.
+
+use super::{Context, Walker, MAX_TEXTURE_BYTES};
+use crate::model::NodeId;
+use crate::render::draw_list::{
+    LightingModel, Material, StageFunction, StageMode, StageSource, MAX_STAGES,
+};
+use crate::render::fields::{boolean, child, color, float, type_is, unit};
+use crate::render::textures;
+
+/// A texture in the draw list.
+#[derive(Copy, Clone, Debug)]
+pub struct LoadedTexture {
+    pub index: usize,
+    /// 1 intensity, 2 intensity + alpha, 3 RGB, 4 RGBA.
+    pub channels: u8,
+    pub translucent: bool,
+}
+
+/// Which texture coordinates and transformation a texture takes.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Rule {
+    /// An xxxTextureMapping (12.2.4); "" for Appearance.texture (the first of each list).
+    Mapping(String),
+    /// MultiTexture stage i: coordinates i (or the last), transformation i (or none).
+    Stage(usize),
+}
+
+/// What a texture does in the lighting equations.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum Role {
+    /// A stage of the main texture.
+    Stage {
+        mode: StageMode,
+        alpha_mode: StageMode,
+        source: StageSource,
+        function: StageFunction,
+    },
+    Emissive,
+    Normal,
+    Occlusion,
+    Specular,
+    Shininess,
+    Ambient,
+    MetallicRoughness,
+}
+
+#[derive(Clone, Debug)]
+pub struct TextureUse {
+    pub role: Role,
+    pub texture: LoadedTexture,
+    pub rule: Rule,
+}
+
+pub struct Look {
+    pub front: Material,
+    pub back: Option<Material>,
+    pub textures: Vec<TextureUse>,
+    /// MultiTexture color and alpha.
+    pub factor: [f32; 4],
+    pub alpha_mode: String,
+    pub alpha_cutoff: f32,
+}
+
+impl Look {
+    /// Whether the main texture has texels with alpha below 1.
+    pub fn translucent_texture(&self) -> bool {
+        self.textures
+            .iter()
+            .any(|t| matches!(t.role, Role::Stage { .. }) && t.texture.translucent)
+    }
+}
+
+/// The material fields holding textures other than the main one, per lighting model.
+fn role_fields(model: LightingModel) -> &'static [(&'static str, Role)] {
+    match model {
+        LightingModel::Unlit => &[],
+        LightingModel::Phong => &[
+            ("emissiveTexture", Role::Emissive),
+            ("normalTexture", Role::Normal),
+            ("occlusionTexture", Role::Occlusion),
+            ("specularTexture", Role::Specular),
+            ("shininessTexture", Role::Shininess),
+            ("ambientTexture", Role::Ambient),
+        ],
+        LightingModel::Physical => &[
+            ("emissiveTexture", Role::Emissive),
+            ("normalTexture", Role::Normal),
+            ("occlusionTexture", Role::Occlusion),
+            ("metallicRoughnessTexture", Role::MetallicRoughness),
+        ],
+    }
+}
+
+/// The main texture field of a one-sided material (12.2.5).
+fn main_field(model: LightingModel) -> &'static str {
+    match model {
+        LightingModel::Unlit => "emissiveTexture",
+        LightingModel::Phong => "diffuseTexture",
+        LightingModel::Physical => "baseTexture",
+    }
+}
+
+impl Walker<'_> {
+    pub(super) fn appearance(&mut self, context: Context, appearance: Option<NodeId>) -> Look {
+        let doc = context.doc;
+        let mut look = Look {
+            front: default_unlit(),
+            back: None,
+            textures: Vec::new(),
+            factor: [1.0; 4],
+            alpha_mode: "AUTO".to_string(),
+            alpha_cutoff: 0.5,
+        };
+        let Some(appearance) = appearance else {
+            return look;
+        };
+        look.alpha_mode = doc
+            .string_of(appearance, "alphaMode")
+            .unwrap_or_else(|| "AUTO".into());
+        look.alpha_cutoff = unit(float(doc, appearance, "alphaCutoff", 0.5));
+        for field in [
+            "shaders",
+            "lineProperties",
+            "pointProperties",
+            "fillProperties",
+        ] {
+            if !doc.node(appearance).children(field).is_empty() {
+                self.note(
+                    context,
+                    appearance,
+                    format!("Appearance.{field} is not applied"),
+                );
+            }
+        }
+        let material = child(doc, appearance, "material");
+        if let Some(material) = material {
+            let (front, back) = self.material(context, material);
+            look.front = front;
+            look.back = back;
+        }
+        let back_material = child(doc, appearance, "backMaterial");
+        if let Some(back_material) = back_material {
+            look.back = Some(self.material(context, back_material).0);
+            let front_textures = material
+                .map(|m| self.material_textures(context, m))
+                .unwrap_or_default();
+            if self.material_textures(context, back_material) != front_textures {
+                // 12.2.3 requires the same textures and mappings on both sides.
+                self.note(
+                    context,
+                    back_material,
+                    "the backMaterial's textures differ from the material's: both sides are drawn with the material's".into(),
+                );
+            }
+        }
+        // The main texture: the material's own, else Appearance.texture (12.2.5).
+        let model = look.front.model;
+        let own_main = material
+            .filter(|&m| doc.node(m).is_a("X3DOneSidedMaterialNode"))
+            .and_then(|m| {
+                let field = main_field(model);
+                child(doc, m, field).map(|t| (t, mapping(doc, m, field)))
+            });
+        match own_main {
+            Some((texture, mapping)) => {
+                self.main_single(context, texture, Rule::Mapping(mapping), &mut look)
+            }
+            None => match child(doc, appearance, "texture") {
+                Some(t) if type_is(doc, t, "MultiTexture") => {
+                    self.multi_texture(context, t, &mut look)
+                }
+                Some(t) => self.main_single(context, t, Rule::Mapping(String::new()), &mut look),
+                None => {}
+            },
+        }
+        if let Some(material) = material.filter(|&m| doc.node(m).is_a("X3DOneSidedMaterialNode")) {
+            for &(field, role) in role_fields(model) {
+                if let Some(texture) = child(doc, material, field) {
+                    if let Some(loaded) = self.texture(context, texture) {
+                        look.textures.push(TextureUse {
+                            role,
+                            texture: loaded,
+                            rule: Rule::Mapping(mapping(doc, material, field)),
+                        });
+                    }
+                }
+            }
+        }
+        look
+    }
+
+    /// The texture nodes and mappings of a material's texture fields, to compare sides.
+    fn material_textures(&self, context: Context, material: NodeId) -> Vec<(NodeId, String)> {
+        let doc = context.doc;
+        doc.node(material)
+            .def()
+            .map(|def| {
+                def.fields
+                    .iter()
+                    .filter(|f| f.name.ends_with("Texture"))
+                    .filter_map(|f| {
+                        child(doc, material, f.name).map(|t| (t, mapping(doc, material, f.name)))
+                    })
+                    .collect()
+            })
+            .unwrap_or_default()
+    }
+
+    fn main_single(&mut self, context: Context, texture: NodeId, rule: Rule, look: &mut Look) {
+        let Some(loaded) = self.texture(context, texture) else {
+            return;
+        };
+        if self.options.x3d_version_3 {
+            // 17.2.2.2 (3.x tables 17.2 and 17.3): an RGB texture replaces the diffuse
+            // colour, a texture with alpha replaces the transparency.
+            for m in std::iter::once(&mut look.front).chain(look.back.as_mut()) {
+                m.texture_replaces_rgb = loaded.channels >= 3;
+                m.texture_replaces_alpha = loaded.channels == 2 || loaded.channels == 4;
+            }
+        }
+        look.textures.push(TextureUse {
+            role: Role::Stage {
+                mode: StageMode::Modulate,
+                alpha_mode: StageMode::Modulate,
+                source: StageSource::Previous,
+                function: StageFunction::None,
+            },
+            texture: loaded,
+            rule,
+        });
+    }
+
+    /// MultiTexture (18.4.3): one stage per texture with its mode, source and function.
+    fn multi_texture(&mut self, context: Context, multi: NodeId, look: &mut Look) {
+        let doc = context.doc;
+        let strings = |field: &str| -> Vec<String> {
+            doc.value_of(multi, field)
+                .and_then(|v| v.as_strings().map(<[String]>::to_vec))
+                .unwrap_or_default()
+        };
+        let (modes, sources, functions) = (strings("mode"), strings("source"), strings("function"));
+        let [r, g, b] = color(doc, multi, "color", [1.0; 3]);
+        look.factor = [r, g, b, unit(float(doc, multi, "alpha", 1.0))];
+        let stages: Vec<NodeId> = doc
+            .node(multi)
+            .children("texture")
+            .iter()
+            .map(|c| c.node)
+            .collect();
+        if stages.len() > MAX_STAGES {
+            self.note(
+                context,
+                multi,
+                format!("MultiTexture: textures beyond the first {MAX_STAGES} are not drawn"),
+            );
+        }
+        for (i, &texture) in stages.iter().enumerate().take(MAX_STAGES) {
+            if type_is(doc, texture, "MultiTexture") {
+                self.note(
+                    context,
+                    texture,
+                    "a MultiTexture inside a MultiTexture is not drawn".into(),
+                );
+                continue;
+            }
+            let Some(loaded) = self.texture(context, texture) else {
+                continue;
+            };
+            let (mode, alpha_mode) = match modes
+                .get(i)
+                .map(String::as_str)
+                .unwrap_or("MODULATE")
+                .split_once(',')
+            {
+                Some((rgb, alpha)) => (stage_mode(rgb.trim()), stage_mode(alpha.trim())),
+                None => {
+                    let m = stage_mode(modes.get(i).map_or("MODULATE", String::as_str));
+                    (m, m)
+                }
+            };
+            let (Some(mode), Some(alpha_mode)) = (mode, alpha_mode) else {
+                self.note(
+                    context,
+                    multi,
+                    format!(
+                        "MultiTexture mode `{}` is not drawn; MODULATE is used",
+                        modes[i]
+                    ),
+                );
+                look.textures.push(TextureUse {
+                    role: Role::Stage {
+                        mode: StageMode::Modulate,
+                        alpha_mode: StageMode::Modulate,
+                        source: StageSource::Previous,
+                        function: StageFunction::None,
+                    },
+                    texture: loaded,
+                    rule: Rule::Stage(i),
+                });
+                continue;
+            };
+            let source = match sources.get(i).map(String::as_str).unwrap_or("") {
+                "DIFFUSE" => StageSource::Diffuse,
+                "SPECULAR" => StageSource::Specular,
+                "FACTOR" => StageSource::Factor,
+                _ => StageSource::Previous,
+            };
+            let function = match functions.get(i).map(String::as_str).unwrap_or("") {
+                "COMPLEMENT" => StageFunction::Complement,
+                "ALPHAREPLICATE" => StageFunction::AlphaReplicate,
+                _ => StageFunction::None,
+            };
+            look.textures.push(TextureUse {
+                role: Role::Stage {
+                    mode,
+                    alpha_mode,
+                    source,
+                    function,
+                },
+                texture: loaded,
+                rule: Rule::Stage(i),
+            });
+        }
+    }
+
+    /// A single-image texture in the draw list (loaded once per node), or None, noted.
+    fn texture(&mut self, context: Context, texture: NodeId) -> Option<LoadedTexture> {
+        let doc = context.doc;
+        let key = (context.serial, texture);
+        if let Some(entry) = self.texture_cache.get(&key) {
+            return *entry;
+        }
+        let loaded = match textures::load(doc, texture, context.base, &self.options.base_dir) {
+            Ok(loaded) => {
+                let bytes: usize = loaded.texture.levels.iter().map(Vec::len).sum();
+                if self.spent.texture_bytes + bytes > MAX_TEXTURE_BYTES {
+                    let mib = MAX_TEXTURE_BYTES >> 20;
+                    self.note(
+                        context,
+                        texture,
+                        format!("texture not drawn: the textures would take more than {mib} MiB"),
+                    );
+                    None
+                } else {
+                    self.spent.texture_bytes += bytes;
+                    self.textures.push(loaded.texture);
+                    Some(LoadedTexture {
+                        index: self.textures.len() - 1,
+                        channels: loaded.channels,
+                        translucent: loaded.translucent,
+                    })
+                }
+            }
+            Err(reason) => {
+                self.note(context, texture, reason);
+                None
+            }
+        };
+        self.texture_cache.insert(key, loaded);
+        loaded
+    }
+
+    /// The front material and, for TwoSidedMaterial, the back one.
+    fn material(&mut self, context: Context, id: NodeId) -> (Material, Option<Material>) {
+        let doc = context.doc;
+        let alpha = |field: &str| 1.0 - unit(float(doc, id, field, 0.0));
+        let name = doc.node(id).type_name();
+        let shared = |m: Material| Material {
+            normal_scale: float(doc, id, "normalScale", 1.0).max(0.0),
+            occlusion_strength: unit(float(doc, id, "occlusionStrength", 1.0)),
+            ..m
+        };
+        let phong = |prefix: &str| {
+            let field = |f: &str| {
+                if prefix.is_empty() {
+                    f.to_string()
+                } else {
+                    let mut c = f.chars();
+                    let first = c.next().map(|c| c.to_ascii_uppercase()).unwrap_or('x');
+                    format!("{prefix}{first}{}", c.as_str())
+                }
+            };
+            Material {
+                model: LightingModel::Phong,
+                diffuse: color(doc, id, &field("diffuseColor"), [0.8; 3]),
+                emissive: color(doc, id, &field("emissiveColor"), [0.0; 3]),
+                specular: color(doc, id, &field("specularColor"), [0.0; 3]),
+                ambient_intensity: unit(float(doc, id, &field("ambientIntensity"), 0.2)),
+                shininess: unit(float(doc, id, &field("shininess"), 0.2)) * 128.0,
+                alpha: alpha(&field("transparency")),
+                ..default_unlit()
+            }
+        };
+        match name {
+            "Material" => (shared(phong("")), None),
+            "TwoSidedMaterial" => {
+                let front = phong("");
+                let back = if boolean(doc, id, "separateBackColor", false) {
+                    phong("back")
+                } else {
+                    front
+                };
+                (front, Some(back))
+            }
+            "PhysicalMaterial" => (
+                shared(Material {
+                    model: LightingModel::Physical,
+                    diffuse: color(doc, id, "baseColor", [1.0; 3]),
+                    emissive: color(doc, id, "emissiveColor", [0.0; 3]),
+                    metallic: unit(float(doc, id, "metallic", 1.0)),
+                    roughness: unit(float(doc, id, "roughness", 1.0)),
+                    alpha: alpha("transparency"),
+                    ..default_unlit()
+                }),
+                None,
+            ),
+            "UnlitMaterial" => (
+                Material {
+                    emissive: color(doc, id, "emissiveColor", [1.0; 3]),
+                    alpha: alpha("transparency"),
+                    ..default_unlit()
+                },
+                None,
+            ),
+            other => {
+                self.note(
+                    context,
+                    id,
+                    format!("{other} is not drawn; drawn unlit white"),
+                );
+                (default_unlit(), None)
+            }
+        }
+    }
+}
+
+/// The xxxTextureMapping of a material's xxxTexture field.
+fn mapping(doc: &crate::model::Document, material: NodeId, texture_field: &str) -> String {
+    doc.string_of(material, &format!("{texture_field}Mapping"))
+        .unwrap_or_default()
+}
+
+/// Table 18.3.
+fn stage_mode(text: &str) -> Option<StageMode> {
+    Some(match text {
+        "MODULATE" => StageMode::Modulate,
+        // Replace the current colour with the texture (Arg1): the table's "Arg2"
+        // contradicts its own description and the example under it ("MODULATE",
+        // "REPLACE" gives Arg1.alpha).
+        "REPLACE" => StageMode::Replace,
+        "MODULATE2X" => StageMode::Modulate2x,
+        "MODULATE4X" => StageMode::Modulate4x,
+        "ADD" => StageMode::Add,
+        "ADDSIGNED" => StageMode::AddSigned,
+        "ADDSIGNED2X" => StageMode::AddSigned2x,
+        "SUBTRACT" => StageMode::Subtract,
+        "ADDSMOOTH" => StageMode::AddSmooth,
+        "BLENDDIFFUSEALPHA" => StageMode::BlendDiffuseAlpha,
+        "BLENDTEXTUREALPHA" => StageMode::BlendTextureAlpha,
+        "BLENDFACTORALPHA" => StageMode::BlendFactorAlpha,
+        "BLENDCURRENTALPHA" => StageMode::BlendCurrentAlpha,
+        "MODULATEALPHA_ADDCOLOR" => StageMode::ModulateAlphaAddColor,
+        "MODULATEINVALPHA_ADDCOLOR" => StageMode::ModulateInvAlphaAddColor,
+        "MODULATEINVCOLOR_ADDALPHA" => StageMode::ModulateInvColorAddAlpha,
+        "OFF" => StageMode::Off,
+        "SELECTARG1" => StageMode::SelectArg1,
+        "SELECTARG2" => StageMode::SelectArg2,
+        "DOTPRODUCT3" => StageMode::DotProduct3,
+        _ => return None,
+    })
+}
+
+pub fn default_unlit() -> Material {
+    Material {
+        model: LightingModel::Unlit,
+        diffuse: [1.0; 3],
+        emissive: [1.0; 3],
+        specular: [0.0; 3],
+        ambient_intensity: 0.0,
+        shininess: 0.0,
+        metallic: 0.0,
+        roughness: 1.0,
+        alpha: 1.0,
+        normal_scale: 1.0,
+        occlusion_strength: 1.0,
+        texture_replaces_rgb: false,
+        texture_replaces_alpha: false,
+    }
+}
+
+pub fn unlit_from(m: Material) -> Material {
+    Material {
+        model: LightingModel::Unlit,
+        ..m
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_mode_of_table_18_3_is_known() {
+        for mode in [
+            "MODULATE",
+            "REPLACE",
+            "MODULATE2X",
+            "MODULATE4X",
+            "ADD",
+            "ADDSIGNED",
+            "ADDSIGNED2X",
+            "SUBTRACT",
+            "ADDSMOOTH",
+            "BLENDDIFFUSEALPHA",
+            "BLENDTEXTUREALPHA",
+            "BLENDFACTORALPHA",
+            "BLENDCURRENTALPHA",
+            "MODULATEALPHA_ADDCOLOR",
+            "MODULATEINVALPHA_ADDCOLOR",
+            "MODULATEINVCOLOR_ADDALPHA",
+            "OFF",
+            "SELECTARG1",
+            "SELECTARG2",
+            "DOTPRODUCT3",
+        ] {
+            assert!(stage_mode(mode).is_some(), "{mode}");
+        }
+        assert_eq!(stage_mode("modulate"), None);
+    }
+}

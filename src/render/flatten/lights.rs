@@ -1,0 +1,95 @@
+//! Light nodes (17.4) into draw-list lights: world location and direction composed in
+//! f64, parameters clamped to what the lighting equations accept, and the headlight.
+
+use glam::{DMat4, DQuat, DVec3};
+
+use super::{place, Context, Walker};
+use crate::model::NodeId;
+use crate::render::draw_list::{Light, LightKind, MAX_LIGHTS};
+use crate::render::fields::{boolean, color, float, unit, vec3};
+
+pub struct PendingLight {
+    pub light: Light,
+    /// World location (point and spot lights), made relative to the eye at the end.
+    pub location: DVec3,
+}
+
+impl Walker<'_> {
+    /// Registers a light; its bit, or None when it is off or over the limit.
+    pub(super) fn add_light(&mut self, context: Context, id: NodeId, world: DMat4) -> Option<u32> {
+        let doc = context.doc;
+        if !boolean(doc, id, "on", true) {
+            return None;
+        }
+        if self.lights.len() >= MAX_LIGHTS - 1 {
+            // One slot stays free for the headlight.
+            self.note(
+                context,
+                id,
+                format!("lights beyond the first {} are not drawn", MAX_LIGHTS - 1),
+            );
+            return None;
+        }
+        let kind = match doc.node(id).type_name() {
+            "DirectionalLight" => LightKind::Directional,
+            "PointLight" => LightKind::Point,
+            "SpotLight" => LightKind::Spot,
+            other => {
+                self.note(context, id, format!("{other} is not drawn"));
+                return None;
+            }
+        };
+        let direction = world.transform_vector3(DVec3::from_array(
+            vec3(doc, id, "direction", [0.0, 0.0, -1.0]).map(f64::from),
+        ));
+        let location = world.transform_point3(DVec3::from_array(
+            vec3(doc, id, "location", [0.0; 3]).map(f64::from),
+        ));
+        // 17.4.3: attenuation (0, 0, 0) is (1, 0, 0); negative values are out of range.
+        let mut attenuation = vec3(doc, id, "attenuation", [1.0, 0.0, 0.0]).map(|c| c.max(0.0));
+        if attenuation == [0.0; 3] {
+            attenuation = [1.0, 0.0, 0.0];
+        }
+        let scale = world.to_scale_rotation_translation().0.abs().max_element();
+        let radius = f64::from(float(doc, id, "radius", 100.0).max(0.0)) * scale;
+        // 17.4.4: angles in [0, π/2]; a beamWidth beyond cutOffAngle is cutOffAngle.
+        let cut_off_angle = float(doc, id, "cutOffAngle", std::f32::consts::FRAC_PI_2)
+            .clamp(0.0, std::f32::consts::FRAC_PI_2);
+        let beam_width =
+            float(doc, id, "beamWidth", std::f32::consts::FRAC_PI_4).clamp(0.0, cut_off_angle);
+        let light = Light {
+            kind,
+            color: color(doc, id, "color", [1.0; 3]),
+            intensity: float(doc, id, "intensity", 1.0).max(0.0),
+            ambient_intensity: unit(float(doc, id, "ambientIntensity", 0.0)),
+            location: [0.0; 3],
+            direction: place::unit_vector(direction),
+            attenuation,
+            radius: if radius.is_finite() {
+                radius as f32
+            } else {
+                f32::MAX
+            },
+            beam_width,
+            cut_off_angle,
+        };
+        self.lights.push(PendingLight { light, location });
+        Some(1 << (self.lights.len() - 1))
+    }
+}
+
+/// NavigationInfo.headlight: a white directional light along the view (23.4.4).
+pub fn headlight(orientation: DQuat) -> Light {
+    Light {
+        kind: LightKind::Directional,
+        color: [1.0; 3],
+        intensity: 1.0,
+        ambient_intensity: 0.0,
+        location: [0.0; 3],
+        direction: place::unit_vector(orientation * DVec3::NEG_Z),
+        attenuation: [1.0, 0.0, 0.0],
+        radius: f32::INFINITY,
+        beam_width: 0.0,
+        cut_off_angle: 0.0,
+    }
+}

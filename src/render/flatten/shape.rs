@@ -1,0 +1,264 @@
+//! One Shape: its look, the texture coordinate sets its textures sample (12.2.4 resolved
+//! against this geometry and Appearance, the same resolution the checker uses), its
+//! geometry built with only what those need, waiting in local coordinates for the camera.
+
+use glam::DMat4;
+
+use super::appearance::{unlit_from, Role, Rule};
+use super::place::{Channel, Pending, TextureTransform};
+use super::{Context, Scope, Walker};
+use crate::model::bounds::{geometry_bounds, Affine};
+use crate::model::texture_mapping::{texture_coordinates, texture_transforms, MappingList};
+use crate::model::NodeId;
+use crate::render::draw_list::{LightingModel, Stage, TextureRef, Textures, MAX_TEX_COORD_SETS};
+use crate::render::fields::{child, type_is};
+use crate::render::geometry::{self, Built, Needs, TexCoordSource};
+use crate::render::texgen::Generator;
+
+/// A texture coordinate set as the shape's textures ask for it: its source node (None:
+/// the default coordinates) and its transformation node.
+type SetKey = (Option<NodeId>, Option<NodeId>);
+
+impl Walker<'_> {
+    pub(super) fn shape(&mut self, context: Context, id: NodeId, world: DMat4, scope: &Scope) {
+        let doc = context.doc;
+        let Some(geometry) = child(doc, id, "geometry") else {
+            return;
+        };
+        let appearance = child(doc, id, "appearance");
+        let look = self.appearance(context, appearance);
+        let coordinates = texture_coordinates(doc, geometry);
+        let transforms = texture_transforms(doc, appearance);
+
+        // Each texture's set, shared by the textures that ask for the same one.
+        let mut keys: Vec<SetKey> = Vec::new();
+        let mut sets_of_uses = Vec::with_capacity(look.textures.len());
+        for used in &look.textures {
+            let key = set_key(doc, &coordinates, &transforms, &used.rule);
+            let set = match keys.iter().position(|k| *k == key) {
+                Some(set) => set,
+                None if keys.len() < MAX_TEX_COORD_SETS => {
+                    keys.push(key);
+                    keys.len() - 1
+                }
+                None => {
+                    self.note(
+                        context,
+                        id,
+                        format!(
+                            "textures needing more than {MAX_TEX_COORD_SETS} texture coordinate sets use the first"
+                        ),
+                    );
+                    0
+                }
+            };
+            sets_of_uses.push(set);
+        }
+        let mut sources = Vec::with_capacity(keys.len());
+        let mut channels = Vec::with_capacity(keys.len());
+        for &(source, transform) in &keys {
+            let (source, generator) = self.tex_coord_source(context, source);
+            sources.push(source);
+            channels.push(Channel {
+                generator,
+                transform: transform.and_then(|t| self.texture_transform(context, t)),
+            });
+        }
+
+        let lit = |m: &crate::render::draw_list::Material| m.model != LightingModel::Unlit;
+        let any_lit = lit(&look.front) || look.back.as_ref().is_some_and(lit);
+        let generators_need_normals = channels
+            .iter()
+            .any(|c| c.generator.is_some_and(|g| g.mode.needs_normals()));
+        let needs = Needs {
+            normals: any_lit || generators_need_normals,
+            tex_coords: sources,
+        };
+        let (mut mesh, shading) = match geometry::build(doc, geometry, &needs) {
+            Built::Mesh(mesh, shading) => (mesh, shading),
+            Built::NotDrawn(reason) => {
+                self.note(context, geometry, reason);
+                return;
+            }
+        };
+        let mut front = look.front;
+        let mut back = look.back;
+        if shading.unlit {
+            // Lines and points without normals are unlit: the emissive colour (17.2.2.4).
+            front = unlit_from(front);
+            back = back.map(unlit_from);
+        }
+        let lit_now = lit(&front) || back.as_ref().is_some_and(lit);
+        if !(lit_now || generators_need_normals) {
+            mesh.normals = None;
+        }
+        // Lines and points have no texture coordinates: their textures are not sampled.
+        let textured = mesh.tex_coords.len() == keys.len() && !keys.is_empty();
+        if !textured {
+            mesh.tex_coords.clear();
+            channels.clear();
+        }
+        let mut textures = Textures {
+            factor: look.factor,
+            ..Textures::default()
+        };
+        if textured {
+            for (used, &set) in look.textures.iter().zip(&sets_of_uses) {
+                let texture = TextureRef {
+                    texture: used.texture.index,
+                    tex_coords: set,
+                };
+                match used.role {
+                    Role::Stage {
+                        mode,
+                        alpha_mode,
+                        source,
+                        function,
+                    } => textures.main.push(Stage {
+                        texture,
+                        mode,
+                        alpha_mode,
+                        source,
+                        function,
+                    }),
+                    // Only the lit models sample the other textures.
+                    _ if !lit_now => {}
+                    Role::Emissive => textures.emissive = Some(texture),
+                    Role::Normal => textures.normal = Some(texture),
+                    Role::Occlusion => textures.occlusion = Some(texture),
+                    Role::Specular => textures.specular = Some(texture),
+                    Role::Shininess => textures.shininess = Some(texture),
+                    Role::Ambient => textures.ambient = Some(texture),
+                    Role::MetallicRoughness => textures.metallic_roughness = Some(texture),
+                }
+            }
+        }
+        let tangents_for = textures
+            .normal
+            .filter(|_| mesh.normals.is_some())
+            .map(|t| t.tex_coords);
+        if textures.normal.is_some() && tangents_for.is_none() {
+            textures.normal = None;
+        }
+
+        let back = if shading.solid {
+            None
+        } else {
+            Some(back.unwrap_or(front))
+        };
+        let translucent_colors = mesh.colors_have_alpha
+            && mesh
+                .colors
+                .as_ref()
+                .is_some_and(|c| c.iter().any(|c| c[3] < 1.0));
+        let blended = match look.alpha_mode.as_str() {
+            "OPAQUE" | "MASK" => false,
+            "BLEND" => true,
+            _ => {
+                front.alpha < 1.0
+                    || back.is_some_and(|b| b.alpha < 1.0)
+                    || (!textures.main.is_empty() && look.translucent_texture())
+                    || translucent_colors
+            }
+        };
+        let primitives = mesh.indices.len() / mesh.primitive.arity();
+        if self.spent.primitives + primitives > self.options.primitive_budget {
+            let budget = self.options.primitive_budget;
+            self.stop(context, format!("{budget} triangles, lines and points"));
+            return;
+        }
+        self.spent.primitives += primitives;
+        if let Some(b) = geometry_bounds(doc, geometry, &affine(world)) {
+            self.bounds = self.bounds.union(&b);
+        }
+        self.shapes.push(Pending {
+            mesh,
+            world,
+            front,
+            back,
+            textures,
+            channels,
+            tangents_for,
+            scope: scope.clone(),
+            blended,
+            alpha_cutoff: if look.alpha_mode == "MASK" {
+                look.alpha_cutoff
+            } else {
+                0.0
+            },
+        });
+    }
+
+    /// How the geometry supplies a set whose source node is `source` (None: default).
+    fn tex_coord_source(
+        &mut self,
+        context: Context,
+        source: Option<NodeId>,
+    ) -> (TexCoordSource, Option<Generator>) {
+        let doc = context.doc;
+        let Some(node) = source else {
+            return (TexCoordSource::Default, None);
+        };
+        match doc.node(node).type_name() {
+            "TextureCoordinate" => (TexCoordSource::Given(node), None),
+            "TextureCoordinateGenerator" => match Generator::of(doc, node) {
+                Ok(generator) => (TexCoordSource::Generated, Some(generator)),
+                Err(reason) => {
+                    self.note(context, node, reason);
+                    (TexCoordSource::Default, None)
+                }
+            },
+            other => {
+                self.note(
+                    context,
+                    node,
+                    format!("{other} is not drawn: the default texture coordinates are used"),
+                );
+                (TexCoordSource::Default, None)
+            }
+        }
+    }
+
+    fn texture_transform(&mut self, context: Context, node: NodeId) -> Option<TextureTransform> {
+        let doc = context.doc;
+        if type_is(doc, node, "TextureTransform") {
+            return Some(TextureTransform::of(doc, node));
+        }
+        let name = doc.node(node).type_name().to_string();
+        self.note(context, node, format!("{name} is not applied"));
+        None
+    }
+}
+
+/// The set a texture samples: by its xxxTextureMapping (12.2.4, unresolved mappings fall
+/// back as 4.1 says), or as MultiTexture stage i (18.4.4: the i-th coordinates, the last
+/// when there are fewer; 18.4.5: the i-th transformation, none when there are fewer).
+fn set_key(
+    doc: &crate::model::Document,
+    coordinates: &MappingList,
+    transforms: &MappingList,
+    rule: &Rule,
+) -> SetKey {
+    match rule {
+        Rule::Mapping(mapping) => (
+            coordinates.resolve(doc, mapping).used(),
+            transforms.resolve(doc, mapping).used(),
+        ),
+        Rule::Stage(i) => (
+            coordinates
+                .items
+                .get(*i)
+                .or(coordinates.items.last())
+                .map(|c| c.node),
+            transforms.items.get(*i).map(|c| c.node),
+        ),
+    }
+}
+
+/// A transform as model::bounds takes it.
+fn affine(m: DMat4) -> Affine {
+    Affine {
+        linear: std::array::from_fn(|r| std::array::from_fn(|c| m.col(c)[r])),
+        translation: m.w_axis.truncate().to_array(),
+    }
+}

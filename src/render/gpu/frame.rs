@@ -1,0 +1,295 @@
+//! One frame: render targets, the background, the meshes in their order (opaque first,
+//! then blended ones back to front), and the read-back of the pixels.
+
+use wgpu::util::DeviceExt;
+
+use super::pipelines::{PipelineKey, Pipelines, COLOR_FORMAT, DEPTH_FORMAT, VERTEX_SLOTS};
+use super::resources::{upload_mesh, TextureBindings};
+use super::uniforms::{draw_uniform, globals, GpuDraw};
+use super::{GpuError, Shading};
+use crate::render::draw_list::{DrawList, Mesh};
+
+#[derive(Copy, Clone)]
+pub struct Target {
+    pub width: u32,
+    pub height: u32,
+    pub samples: u32,
+    pub shading: Shading,
+}
+
+/// Draws the list and returns RGBA8 pixels, rows from the top.
+pub async fn draw(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    mut list: DrawList,
+    target: Target,
+) -> Result<Vec<u8>, GpuError> {
+    let extent = wgpu::Extent3d {
+        width: target.width,
+        height: target.height,
+        depth_or_array_layers: 1,
+    };
+    let texture = |format, samples, usage| {
+        device.create_texture(&wgpu::TextureDescriptor {
+            label: None,
+            size: extent,
+            mip_level_count: 1,
+            sample_count: samples,
+            dimension: wgpu::TextureDimension::D2,
+            format,
+            usage,
+            view_formats: &[],
+        })
+    };
+    let resolved = texture(
+        COLOR_FORMAT,
+        1,
+        wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+    );
+    let multisampled = (target.samples > 1).then(|| {
+        texture(
+            COLOR_FORMAT,
+            target.samples,
+            wgpu::TextureUsages::RENDER_ATTACHMENT,
+        )
+    });
+    let depth = texture(
+        DEPTH_FORMAT,
+        target.samples,
+        wgpu::TextureUsages::RENDER_ATTACHMENT,
+    );
+    let resolved_view = resolved.create_view(&Default::default());
+    let multisampled_view = multisampled
+        .as_ref()
+        .map(|t| t.create_view(&Default::default()));
+    let depth_view = depth.create_view(&Default::default());
+
+    let mut pipelines = Pipelines::new(device, target.samples, target.shading);
+    let globals = globals(&list, target.width as f32 / target.height as f32);
+    let globals_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("globals"),
+        contents: bytemuck::bytes_of(&globals),
+        usage: wgpu::BufferUsages::UNIFORM,
+    });
+    let globals_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: None,
+        layout: &pipelines.globals_layout,
+        entries: &[wgpu::BindGroupEntry {
+            binding: 0,
+            resource: globals_buffer.as_entire_binding(),
+        }],
+    });
+
+    let order = draw_order(&list.meshes);
+    let alignment = device.limits().min_uniform_buffer_offset_alignment as usize;
+    let stride = size_of::<GpuDraw>().div_ceil(alignment) * alignment;
+    let mut draw_bytes = vec![0u8; stride * order.len().max(1)];
+    for (slot, &index) in order.iter().enumerate() {
+        let bytes = bytemuck::bytes_of(&draw_uniform(&list.meshes[index])).to_vec();
+        draw_bytes[slot * stride..slot * stride + bytes.len()].copy_from_slice(&bytes);
+    }
+    let draw_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("draws"),
+        contents: &draw_bytes,
+        usage: wgpu::BufferUsages::UNIFORM,
+    });
+    drop(draw_bytes);
+    let draw_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: None,
+        layout: &pipelines.draw_layout,
+        entries: &[wgpu::BindGroupEntry {
+            binding: 0,
+            resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+                buffer: &draw_buffer,
+                offset: 0,
+                size: wgpu::BufferSize::new(size_of::<GpuDraw>() as u64),
+            }),
+        }],
+    });
+    let texture_layout = pipelines.texture_layout.clone();
+    let mut bindings = TextureBindings::new(device, queue, &texture_layout, &list.textures);
+    list.textures.clear();
+    list.textures.shrink_to_fit();
+    let zeros = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("absent attribute"),
+        contents: &[0u8; 16],
+        usage: wgpu::BufferUsages::VERTEX,
+    });
+    // Everything a draw call refers to exists before the pass begins.
+    let mut draws = Vec::with_capacity(order.len());
+    for &index in &order {
+        let mesh = &mut list.meshes[index];
+        let key = PipelineKey::of(mesh);
+        pipelines.get(key);
+        bindings.group(&mesh.textures);
+        let textures = std::mem::take(&mut mesh.textures);
+        draws.push((key, textures, upload_mesh(device, mesh)));
+    }
+    let background = list_background_pipeline(&list, &pipelines);
+
+    let mut encoder = device.create_command_encoder(&Default::default());
+    {
+        let [r, g, b] = list
+            .background
+            .sky
+            .first()
+            .map_or([0.0; 3], |(color, _)| *color)
+            .map(f64::from);
+        let (view, resolve_target) = match &multisampled_view {
+            Some(ms) => (ms, Some(&resolved_view)),
+            None => (&resolved_view, None),
+        };
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("scene"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view,
+                depth_slice: None,
+                resolve_target,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color { r, g, b, a: 1.0 }),
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &depth_view,
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(0.0),
+                    store: wgpu::StoreOp::Discard,
+                }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        pass.set_bind_group(0, &globals_group, &[]);
+        if let Some(background) = &background {
+            pass.set_pipeline(background);
+            pass.draw(0..3, 0..1);
+        }
+        for (slot, (key, textures, buffers)) in draws.iter().enumerate() {
+            pass.set_pipeline(pipelines.get(*key));
+            pass.set_bind_group(1, &draw_group, &[(slot * stride) as u32]);
+            pass.set_bind_group(2, bindings.group(textures), &[]);
+            for (i, buffer) in buffers.vertices.iter().enumerate().take(VERTEX_SLOTS) {
+                pass.set_vertex_buffer(i as u32, buffer.as_ref().unwrap_or(&zeros).slice(..));
+            }
+            pass.set_index_buffer(buffers.indices.slice(..), wgpu::IndexFormat::Uint32);
+            pass.draw_indexed(0..buffers.index_count, 0, 0..1);
+        }
+    }
+    read_back(
+        device,
+        queue,
+        encoder,
+        &resolved,
+        target.width,
+        target.height,
+    )
+    .await
+}
+
+/// The gradient pipeline when the Background is more than one colour.
+fn list_background_pipeline(
+    list: &DrawList,
+    pipelines: &Pipelines,
+) -> Option<wgpu::RenderPipeline> {
+    let background = &list.background;
+    (background.sky.len() > 1 || !background.ground.is_empty()).then(|| pipelines.background())
+}
+
+async fn read_back(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    mut encoder: wgpu::CommandEncoder,
+    texture: &wgpu::Texture,
+    width: u32,
+    height: u32,
+) -> Result<Vec<u8>, GpuError> {
+    let row = width * 4;
+    let padded_row =
+        row.div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
+    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("read back"),
+        size: u64::from(padded_row) * u64::from(height),
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    encoder.copy_texture_to_buffer(
+        texture.as_image_copy(),
+        wgpu::TexelCopyBufferInfo {
+            buffer: &buffer,
+            layout: wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(padded_row),
+                rows_per_image: Some(height),
+            },
+        },
+        wgpu::Extent3d {
+            width,
+            height,
+            depth_or_array_layers: 1,
+        },
+    );
+    queue.submit([encoder.finish()]);
+    let slice = buffer.slice(..);
+    let (sender, receiver) = std::sync::mpsc::channel();
+    slice.map_async(wgpu::MapMode::Read, move |result| {
+        let _ = sender.send(result);
+    });
+    device
+        .poll(wgpu::PollType::wait_indefinitely())
+        .map_err(|e| GpuError::Failed(e.to_string()))?;
+    receiver
+        .recv()
+        .map_err(|e| GpuError::Failed(e.to_string()))?
+        .map_err(|e| GpuError::Failed(e.to_string()))?;
+    let mapped = slice
+        .get_mapped_range()
+        .map_err(|e| GpuError::Failed(e.to_string()))?;
+    let mut pixels = Vec::with_capacity((row * height) as usize);
+    for y in 0..height as usize {
+        let start = y * padded_row as usize;
+        pixels.extend_from_slice(&mapped[start..start + row as usize]);
+    }
+    // The preview is opaque: blending leaves coverage, not transparency, in alpha.
+    for alpha in pixels.iter_mut().skip(3).step_by(4) {
+        *alpha = 255;
+    }
+    Ok(pixels)
+}
+
+/// Opaque meshes first, in list order; then blended ones from the farthest to the nearest
+/// (by the distance of their bounding-box centre from the eye). Empty meshes are left out.
+fn draw_order(meshes: &[Mesh]) -> Vec<usize> {
+    let mut opaque = Vec::new();
+    let mut blended = Vec::new();
+    for (i, mesh) in meshes.iter().enumerate() {
+        if mesh.indices.is_empty() {
+            continue;
+        }
+        if mesh.blended {
+            blended.push((centre_distance(mesh), i));
+        } else {
+            opaque.push(i);
+        }
+    }
+    blended.sort_by(|a, b| b.0.total_cmp(&a.0));
+    opaque.extend(blended.into_iter().map(|(_, i)| i));
+    opaque
+}
+
+fn centre_distance(mesh: &Mesh) -> f64 {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    for p in &mesh.positions {
+        for k in 0..3 {
+            lo[k] = lo[k].min(f64::from(p[k]));
+            hi[k] = hi[k].max(f64::from(p[k]));
+        }
+    }
+    (0..3)
+        .map(|k| ((lo[k] + hi[k]) / 2.0).powi(2))
+        .sum::<f64>()
+        .sqrt()
+}

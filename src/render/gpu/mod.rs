@@ -1,0 +1,172 @@
+//! The GPU part: draws a [`DrawList`] offscreen with wgpu and reads the image back. It
+//! trusts the draw list's guarantees (see [`super::draw_list`]) and knows nothing of X3D.
+
+mod frame;
+mod pipelines;
+mod resources;
+mod uniforms;
+
+use super::draw_list::DrawList;
+
+/// Why no image could be made.
+#[derive(Debug, thiserror::Error)]
+pub enum GpuError {
+    #[error(
+        "no graphics adapter found (not even a software one); install Mesa's software \
+         drivers, e.g. on Debian/Ubuntu `apt-get install mesa-vulkan-drivers` (lavapipe, \
+         Vulkan) or `libegl1 libgl1-mesa-dri` (llvmpipe, OpenGL)"
+    )]
+    NoAdapter,
+    #[error("the graphics device could not be opened: {0}")]
+    Device(String),
+    #[error("the graphics device failed while rendering: {0}")]
+    Failed(String),
+}
+
+/// Where the lighting equations are evaluated (17.2.2.8).
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum Shading {
+    /// Per vertex, the main texture applied per fragment.
+    Gouraud,
+    /// Per fragment, with every material texture.
+    Phong,
+}
+
+/// How an image is made: the speed/accuracy trade of the quality presets.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct Settings {
+    pub shading: Shading,
+    /// Multisampling: 1 or 4 (the counts every adapter supports).
+    pub msaa_samples: u32,
+    /// The image is drawn this many times larger on each side and averaged down.
+    pub supersampling: u32,
+}
+
+/// Renders the draw list into a `width` × `height` RGBA image (rows from the top). The
+/// list is consumed: each mesh's arrays are freed once they are on the GPU.
+pub fn render(
+    list: DrawList,
+    width: u32,
+    height: u32,
+    settings: Settings,
+) -> Result<image::RgbaImage, GpuError> {
+    pollster::block_on(render_async(list, width, height, settings))
+}
+
+async fn render_async(
+    list: DrawList,
+    width: u32,
+    height: u32,
+    settings: Settings,
+) -> Result<image::RgbaImage, GpuError> {
+    let (device, queue) = open_device().await?;
+    let max_side = device.limits().max_texture_dimension_2d;
+    if width > max_side || height > max_side {
+        return Err(GpuError::Device(format!(
+            "the image is larger than the device's largest texture ({max_side} pixels)"
+        )));
+    }
+    // Supersampling shrinks until the enlarged image fits the device.
+    let mut scale = settings.supersampling.max(1);
+    while scale > 1 && (width * scale > max_side || height * scale > max_side) {
+        scale -= 1;
+    }
+    let (target_width, target_height) = (width * scale, height * scale);
+    // Device errors become a GpuError rather than wgpu's default panic; scopes pop in
+    // reverse order.
+    let scopes = [
+        wgpu::ErrorFilter::Validation,
+        wgpu::ErrorFilter::OutOfMemory,
+        wgpu::ErrorFilter::Internal,
+    ]
+    .map(|filter| device.push_error_scope(filter));
+    let drawn = frame::draw(
+        &device,
+        &queue,
+        list,
+        frame::Target {
+            width: target_width,
+            height: target_height,
+            samples: settings.msaa_samples,
+            shading: settings.shading,
+        },
+    )
+    .await;
+    for scope in scopes.into_iter().rev() {
+        if let Some(error) = scope.pop().await {
+            return Err(GpuError::Failed(error.to_string()));
+        }
+    }
+    let pixels = drawn?;
+    let image = image::RgbaImage::from_raw(target_width, target_height, pixels)
+        .ok_or_else(|| GpuError::Failed("the read-back image has the wrong size".into()))?;
+    Ok(if scale == 1 {
+        image
+    } else {
+        downsample(&image, scale)
+    })
+}
+
+async fn open_device() -> Result<(wgpu::Device, wgpu::Queue), GpuError> {
+    let adapter = find_adapter().await.ok_or(GpuError::NoAdapter)?;
+    adapter
+        .request_device(&wgpu::DeviceDescriptor {
+            label: Some("x3dcheck"),
+            required_limits: wgpu::Limits::downlevel_defaults().using_resolution(adapter.limits()),
+            ..Default::default()
+        })
+        .await
+        .map_err(|e| GpuError::Device(e.to_string()))
+}
+
+/// Any adapter, software ones included. Vulkan first (lavapipe is the most complete
+/// software driver, and probing GL/EGL without a display prints warnings), then the
+/// others; `WGPU_BACKEND` overrides the choice.
+async fn find_adapter() -> Option<wgpu::Adapter> {
+    let from_env = wgpu::Backends::from_env();
+    let attempts = match from_env {
+        Some(backends) => vec![backends],
+        None => vec![
+            wgpu::Backends::VULKAN | wgpu::Backends::METAL | wgpu::Backends::DX12,
+            wgpu::Backends::GL,
+        ],
+    };
+    for backends in attempts {
+        let mut descriptor = wgpu::InstanceDescriptor::new_without_display_handle();
+        descriptor.backends = backends;
+        let instance = wgpu::Instance::new(descriptor);
+        if let Ok(adapter) = instance
+            .request_adapter(&wgpu::RequestAdapterOptions::default())
+            .await
+        {
+            return Some(adapter);
+        }
+        if let Some(adapter) = instance
+            .enumerate_adapters(backends)
+            .await
+            .into_iter()
+            .next()
+        {
+            return Some(adapter);
+        }
+    }
+    None
+}
+
+/// Averages `scale` × `scale` blocks (supersampling).
+fn downsample(image: &image::RgbaImage, scale: u32) -> image::RgbaImage {
+    let (width, height) = (image.width() / scale, image.height() / scale);
+    let count = scale * scale;
+    image::RgbaImage::from_fn(width, height, |x, y| {
+        let mut sum = [0u32; 4];
+        for dy in 0..scale {
+            for dx in 0..scale {
+                let p = image.get_pixel(x * scale + dx, y * scale + dy).0;
+                for c in 0..4 {
+                    sum[c] += u32::from(p[c]);
+                }
+            }
+        }
+        image::Rgba(sum.map(|s| ((s + count / 2) / count) as u8))
+    })
+}

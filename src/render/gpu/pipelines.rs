@@ -1,0 +1,304 @@
+//! The shader, its bind group layouts and the render pipelines, one per combination of
+//! primitive, blending, culling and the vertex attributes a mesh has (made when first
+//! needed: a scene uses few combinations).
+
+use std::collections::HashMap;
+
+use super::uniforms::{Globals, GpuDraw};
+use super::Shading;
+use crate::render::draw_list::{Mesh, Primitive, MAX_TEX_COORD_SETS};
+
+pub const COLOR_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
+pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
+
+/// Texture bindings of group 2, in the shader's order: four MultiTexture stages, then
+/// emissive, normal, occlusion, specular or metallicRoughness, shininess, ambient. Each
+/// texture's sampler follows at `binding + TEXTURE_SLOTS`.
+pub const TEXTURE_SLOTS: usize = 10;
+
+/// Vertex buffer slots: position, normal, colour, tangent, then the texture coordinate
+/// sets. An attribute a mesh lacks reads a constant zero (an instance-rate buffer).
+pub const VERTEX_SLOTS: usize = 4 + MAX_TEX_COORD_SETS;
+const FORMATS: [wgpu::VertexFormat; VERTEX_SLOTS] = [
+    wgpu::VertexFormat::Float32x3,
+    wgpu::VertexFormat::Float32x3,
+    wgpu::VertexFormat::Float32x4,
+    wgpu::VertexFormat::Float32x4,
+    wgpu::VertexFormat::Float32x2,
+    wgpu::VertexFormat::Float32x2,
+    wgpu::VertexFormat::Float32x2,
+    wgpu::VertexFormat::Float32x2,
+];
+
+/// Which pipeline a mesh needs.
+#[derive(Copy, Clone, PartialEq, Eq, Hash)]
+pub struct PipelineKey {
+    primitive: u8,
+    blended: bool,
+    cull_back: bool,
+    /// Bit i: vertex slot i has per-vertex data.
+    attributes: u8,
+}
+
+impl PipelineKey {
+    pub fn of(mesh: &Mesh) -> PipelineKey {
+        let present = [
+            true,
+            mesh.normals.is_some(),
+            mesh.colors.is_some(),
+            mesh.tangents.is_some(),
+        ]
+        .into_iter()
+        .chain((0..MAX_TEX_COORD_SETS).map(|i| i < mesh.tex_coords.len()));
+        PipelineKey {
+            primitive: match mesh.primitive {
+                Primitive::Triangles => 0,
+                Primitive::Lines => 1,
+                Primitive::Points => 2,
+            },
+            blended: mesh.blended,
+            cull_back: mesh.back.is_none() && mesh.primitive == Primitive::Triangles,
+            attributes: present
+                .enumerate()
+                .fold(0, |bits, (i, p)| bits | (u8::from(p) << i)),
+        }
+    }
+
+    pub fn has(&self, slot: usize) -> bool {
+        self.attributes & (1 << slot) != 0
+    }
+}
+
+pub struct Pipelines<'d> {
+    device: &'d wgpu::Device,
+    shader: wgpu::ShaderModule,
+    layout: wgpu::PipelineLayout,
+    background_layout: wgpu::PipelineLayout,
+    pub globals_layout: wgpu::BindGroupLayout,
+    pub draw_layout: wgpu::BindGroupLayout,
+    pub texture_layout: wgpu::BindGroupLayout,
+    samples: u32,
+    shading: Shading,
+    made: HashMap<PipelineKey, wgpu::RenderPipeline>,
+}
+
+impl<'d> Pipelines<'d> {
+    pub fn new(device: &'d wgpu::Device, samples: u32, shading: Shading) -> Self {
+        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("x3d lighting"),
+            source: wgpu::ShaderSource::Wgsl(include_str!("../shader.wgsl").into()),
+        });
+        let uniform_entry = |dynamic: bool, size: usize| wgpu::BindGroupLayoutEntry {
+            binding: 0,
+            visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+            ty: wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Uniform,
+                has_dynamic_offset: dynamic,
+                min_binding_size: wgpu::BufferSize::new(size as u64),
+            },
+            count: None,
+        };
+        let globals_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("globals"),
+            entries: &[uniform_entry(false, size_of::<Globals>())],
+        });
+        let draw_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("draw"),
+            entries: &[uniform_entry(true, size_of::<GpuDraw>())],
+        });
+        let textures = (0..TEXTURE_SLOTS as u32).map(|binding| wgpu::BindGroupLayoutEntry {
+            binding,
+            visibility: wgpu::ShaderStages::FRAGMENT,
+            ty: wgpu::BindingType::Texture {
+                sample_type: wgpu::TextureSampleType::Float { filterable: true },
+                view_dimension: wgpu::TextureViewDimension::D2,
+                multisampled: false,
+            },
+            count: None,
+        });
+        let samplers = (0..TEXTURE_SLOTS as u32).map(|slot| wgpu::BindGroupLayoutEntry {
+            binding: TEXTURE_SLOTS as u32 + slot,
+            visibility: wgpu::ShaderStages::FRAGMENT,
+            ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+            count: None,
+        });
+        let entries: Vec<_> = textures.chain(samplers).collect();
+        let texture_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("textures"),
+            entries: &entries,
+        });
+        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("x3d"),
+            bind_group_layouts: &[
+                Some(&globals_layout),
+                Some(&draw_layout),
+                Some(&texture_layout),
+            ],
+            immediate_size: 0,
+        });
+        let background_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("background"),
+            bind_group_layouts: &[Some(&globals_layout)],
+            immediate_size: 0,
+        });
+        Pipelines {
+            device,
+            shader,
+            layout,
+            background_layout,
+            globals_layout,
+            draw_layout,
+            texture_layout,
+            samples,
+            shading,
+            made: HashMap::new(),
+        }
+    }
+
+    pub fn get(&mut self, key: PipelineKey) -> &wgpu::RenderPipeline {
+        if !self.made.contains_key(&key) {
+            let pipeline = self.make(key);
+            self.made.insert(key, pipeline);
+        }
+        &self.made[&key]
+    }
+
+    fn make(&self, key: PipelineKey) -> wgpu::RenderPipeline {
+        let attributes: Vec<[wgpu::VertexAttribute; 1]> = FORMATS
+            .iter()
+            .enumerate()
+            .map(|(slot, &format)| {
+                [wgpu::VertexAttribute {
+                    format,
+                    offset: 0,
+                    shader_location: slot as u32,
+                }]
+            })
+            .collect();
+        let buffers: Vec<Option<wgpu::VertexBufferLayout>> = attributes
+            .iter()
+            .enumerate()
+            .map(|(slot, attribute)| {
+                Some(wgpu::VertexBufferLayout {
+                    array_stride: attribute[0].format.size(),
+                    step_mode: if key.has(slot) {
+                        wgpu::VertexStepMode::Vertex
+                    } else {
+                        wgpu::VertexStepMode::Instance
+                    },
+                    attributes: attribute,
+                })
+            })
+            .collect();
+        let topology = match key.primitive {
+            0 => wgpu::PrimitiveTopology::TriangleList,
+            1 => wgpu::PrimitiveTopology::LineList,
+            _ => wgpu::PrimitiveTopology::PointList,
+        };
+        let blend = if key.blended {
+            wgpu::BlendState::ALPHA_BLENDING
+        } else {
+            wgpu::BlendState::REPLACE
+        };
+        let (vertex, fragment) = match self.shading {
+            Shading::Gouraud => ("vs_gouraud", "fs_gouraud"),
+            Shading::Phong => ("vs_main", "fs_phong"),
+        };
+        self.device
+            .create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some("x3d shapes"),
+                layout: Some(&self.layout),
+                vertex: wgpu::VertexState {
+                    module: &self.shader,
+                    entry_point: Some(vertex),
+                    compilation_options: Default::default(),
+                    buffers: &buffers,
+                },
+                primitive: wgpu::PrimitiveState {
+                    topology,
+                    front_face: wgpu::FrontFace::Ccw,
+                    cull_mode: key.cull_back.then_some(wgpu::Face::Back),
+                    ..Default::default()
+                },
+                depth_stencil: Some(wgpu::DepthStencilState {
+                    format: DEPTH_FORMAT,
+                    depth_write_enabled: Some(!key.blended),
+                    depth_compare: Some(wgpu::CompareFunction::GreaterEqual),
+                    stencil: Default::default(),
+                    bias: Default::default(),
+                }),
+                multisample: wgpu::MultisampleState {
+                    count: self.samples,
+                    ..Default::default()
+                },
+                fragment: Some(wgpu::FragmentState {
+                    module: &self.shader,
+                    entry_point: Some(fragment),
+                    compilation_options: Default::default(),
+                    targets: &[Some(wgpu::ColorTargetState {
+                        format: COLOR_FORMAT,
+                        blend: Some(blend),
+                        write_mask: wgpu::ColorWrites::ALL,
+                    })],
+                }),
+                multiview_mask: None,
+                cache: None,
+            })
+    }
+
+    /// The Background gradient, drawn first, behind everything (no depth written).
+    pub fn background(&self) -> wgpu::RenderPipeline {
+        self.device
+            .create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some("background"),
+                layout: Some(&self.background_layout),
+                vertex: wgpu::VertexState {
+                    module: &self.shader,
+                    entry_point: Some("vs_background"),
+                    compilation_options: Default::default(),
+                    buffers: &[],
+                },
+                primitive: wgpu::PrimitiveState::default(),
+                depth_stencil: Some(wgpu::DepthStencilState {
+                    format: DEPTH_FORMAT,
+                    depth_write_enabled: Some(false),
+                    depth_compare: Some(wgpu::CompareFunction::Always),
+                    stencil: Default::default(),
+                    bias: Default::default(),
+                }),
+                multisample: wgpu::MultisampleState {
+                    count: self.samples,
+                    ..Default::default()
+                },
+                fragment: Some(wgpu::FragmentState {
+                    module: &self.shader,
+                    entry_point: Some("fs_background"),
+                    compilation_options: Default::default(),
+                    targets: &[Some(wgpu::ColorTargetState {
+                        format: COLOR_FORMAT,
+                        blend: Some(wgpu::BlendState::REPLACE),
+                        write_mask: wgpu::ColorWrites::ALL,
+                    })],
+                }),
+                multiview_mask: None,
+                cache: None,
+            })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    /// The shader parses and validates (naga, as wgpu does), without a GPU.
+    #[test]
+    fn the_shader_is_valid_wgsl() {
+        let source = include_str!("../shader.wgsl");
+        let module = naga::front::wgsl::parse_str(source)
+            .unwrap_or_else(|e| panic!("{}", e.emit_to_string(source)));
+        naga::valid::Validator::new(
+            naga::valid::ValidationFlags::all(),
+            naga::valid::Capabilities::empty(),
+        )
+        .validate(&module)
+        .unwrap_or_else(|e| panic!("{}", e.emit_to_string(source)));
+    }
+}

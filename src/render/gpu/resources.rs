@@ -1,0 +1,250 @@
+//! What the draw list puts on the GPU: textures with their samplers, the texture bind
+//! group of each distinct combination a mesh uses, and each mesh's vertex and index
+//! buffers (only the attributes it has).
+
+use std::collections::HashMap;
+
+use wgpu::util::DeviceExt;
+
+use super::pipelines::{TEXTURE_SLOTS, VERTEX_SLOTS};
+use crate::render::draw_list::{Mesh, Texture, Textures, Wrap, MAX_STAGES};
+
+/// The textures of a draw list on the GPU, and the bind groups made from them.
+pub struct TextureBindings<'d> {
+    device: &'d wgpu::Device,
+    layout: &'d wgpu::BindGroupLayout,
+    /// Per draw-list texture: its view and sampler (None: larger than the device allows,
+    /// drawn white).
+    uploaded: Vec<Option<(wgpu::TextureView, wgpu::Sampler)>>,
+    white: (wgpu::TextureView, wgpu::Sampler),
+    groups: HashMap<[Option<usize>; TEXTURE_SLOTS], wgpu::BindGroup>,
+}
+
+impl<'d> TextureBindings<'d> {
+    pub fn new(
+        device: &'d wgpu::Device,
+        queue: &wgpu::Queue,
+        layout: &'d wgpu::BindGroupLayout,
+        textures: &[Texture],
+    ) -> Self {
+        let max_side = device.limits().max_texture_dimension_2d;
+        let uploaded = textures
+            .iter()
+            .map(|t| {
+                (t.width <= max_side && t.height <= max_side).then(|| upload(device, queue, t))
+            })
+            .collect();
+        let white = upload(
+            device,
+            queue,
+            &Texture {
+                width: 1,
+                height: 1,
+                levels: vec![vec![255; 4]],
+                wrap_s: Wrap::Repeat,
+                wrap_t: Wrap::Repeat,
+                magnify_linear: false,
+                minify_linear: false,
+                mipmaps: None,
+                anisotropy: 1,
+            },
+        );
+        TextureBindings {
+            device,
+            layout,
+            uploaded,
+            white,
+            groups: HashMap::new(),
+        }
+    }
+
+    /// The bind group for a mesh's textures (shared by every mesh with the same ones).
+    pub fn group(&mut self, textures: &Textures) -> &wgpu::BindGroup {
+        let key = slots(textures);
+        if !self.groups.contains_key(&key) {
+            let pick = |slot: Option<usize>| {
+                slot.and_then(|t| self.uploaded.get(t).and_then(Option::as_ref))
+                    .unwrap_or(&self.white)
+            };
+            let views = key
+                .iter()
+                .enumerate()
+                .map(|(i, &slot)| wgpu::BindGroupEntry {
+                    binding: i as u32,
+                    resource: wgpu::BindingResource::TextureView(&pick(slot).0),
+                });
+            let samplers = key
+                .iter()
+                .enumerate()
+                .map(|(i, &slot)| wgpu::BindGroupEntry {
+                    binding: (TEXTURE_SLOTS + i) as u32,
+                    resource: wgpu::BindingResource::Sampler(&pick(slot).1),
+                });
+            let entries: Vec<_> = views.chain(samplers).collect();
+            let group = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: None,
+                layout: self.layout,
+                entries: &entries,
+            });
+            self.groups.insert(key, group);
+        }
+        &self.groups[&key]
+    }
+}
+
+/// The draw-list texture in each binding slot (the order of `pipelines::TEXTURE_SLOTS`).
+fn slots(textures: &Textures) -> [Option<usize>; TEXTURE_SLOTS] {
+    let mut key = [None; TEXTURE_SLOTS];
+    for (slot, stage) in key.iter_mut().zip(textures.main.iter().take(MAX_STAGES)) {
+        *slot = Some(stage.texture.texture);
+    }
+    let roles = [
+        textures.emissive,
+        textures.normal,
+        textures.occlusion,
+        textures.specular.or(textures.metallic_roughness),
+        textures.shininess,
+        textures.ambient,
+    ];
+    for (slot, role) in key[MAX_STAGES..].iter_mut().zip(roles) {
+        *slot = role.map(|r| r.texture);
+    }
+    key
+}
+
+fn upload(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    texture: &Texture,
+) -> (wgpu::TextureView, wgpu::Sampler) {
+    let gpu_texture = device.create_texture_with_data(
+        queue,
+        &wgpu::TextureDescriptor {
+            label: Some("texture"),
+            size: wgpu::Extent3d {
+                width: texture.width,
+                height: texture.height,
+                depth_or_array_layers: 1,
+            },
+            mip_level_count: texture.levels.len() as u32,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: wgpu::TextureFormat::Rgba8Unorm,
+            usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+            view_formats: &[],
+        },
+        wgpu::util::TextureDataOrder::LayerMajor,
+        &texture.levels.concat(),
+    );
+    let address = |wrap: Wrap| match wrap {
+        Wrap::Repeat => wgpu::AddressMode::Repeat,
+        Wrap::MirroredRepeat => wgpu::AddressMode::MirrorRepeat,
+        Wrap::Clamp => wgpu::AddressMode::ClampToEdge,
+    };
+    let filter = |linear: bool| {
+        if linear {
+            wgpu::FilterMode::Linear
+        } else {
+            wgpu::FilterMode::Nearest
+        }
+    };
+    let all_linear =
+        texture.magnify_linear && texture.minify_linear && texture.mipmaps == Some(true);
+    let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
+        address_mode_u: address(texture.wrap_s),
+        address_mode_v: address(texture.wrap_t),
+        mag_filter: filter(texture.magnify_linear),
+        min_filter: filter(texture.minify_linear),
+        mipmap_filter: if texture.mipmaps == Some(true) {
+            wgpu::MipmapFilterMode::Linear
+        } else {
+            wgpu::MipmapFilterMode::Nearest
+        },
+        // Anisotropic filtering needs every filter linear (a WebGPU rule).
+        anisotropy_clamp: if all_linear { texture.anisotropy } else { 1 },
+        ..Default::default()
+    });
+    (gpu_texture.create_view(&Default::default()), sampler)
+}
+
+/// A mesh's buffers: one per vertex slot (None: the constant zero buffer) and indices.
+pub struct MeshBuffers {
+    pub vertices: [Option<wgpu::Buffer>; VERTEX_SLOTS],
+    pub indices: wgpu::Buffer,
+    pub index_count: u32,
+}
+
+/// Uploads a mesh's arrays and frees them: on a software driver the GPU copy lives in
+/// the same memory, so keeping both would double the peak.
+pub fn upload_mesh(device: &wgpu::Device, mesh: &mut Mesh) -> MeshBuffers {
+    let buffer = |bytes: &[u8], usage| {
+        device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: None,
+            contents: bytes,
+            usage,
+        })
+    };
+    let vertex = |bytes: &[u8]| Some(buffer(bytes, wgpu::BufferUsages::VERTEX));
+    let mut vertices: [Option<wgpu::Buffer>; VERTEX_SLOTS] = Default::default();
+    vertices[0] = vertex(bytemuck::cast_slice(&std::mem::take(&mut mesh.positions)));
+    vertices[1] = mesh
+        .normals
+        .take()
+        .and_then(|n| vertex(bytemuck::cast_slice(&n)));
+    vertices[2] = mesh
+        .colors
+        .take()
+        .and_then(|c| vertex(bytemuck::cast_slice(&c)));
+    vertices[3] = mesh
+        .tangents
+        .take()
+        .and_then(|t| vertex(bytemuck::cast_slice(&t)));
+    for (slot, set) in vertices[4..]
+        .iter_mut()
+        .zip(std::mem::take(&mut mesh.tex_coords))
+    {
+        *slot = vertex(bytemuck::cast_slice(&set));
+    }
+    let indices = std::mem::take(&mut mesh.indices);
+    MeshBuffers {
+        vertices,
+        index_count: indices.len() as u32,
+        indices: buffer(bytemuck::cast_slice(&indices), wgpu::BufferUsages::INDEX),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::draw_list::{Stage, TextureRef};
+
+    #[test]
+    fn texture_slots_follow_the_shader_bindings() {
+        let at = |texture| TextureRef {
+            texture,
+            tex_coords: 0,
+        };
+        let textures = Textures {
+            main: vec![Stage::modulate(at(7)), Stage::modulate(at(8))],
+            emissive: Some(at(1)),
+            metallic_roughness: Some(at(2)),
+            ambient: Some(at(3)),
+            ..Textures::default()
+        };
+        assert_eq!(
+            slots(&textures),
+            [
+                Some(7),
+                Some(8),
+                None,
+                None,
+                Some(1),
+                None,
+                None,
+                Some(2),
+                None,
+                Some(3)
+            ]
+        );
+    }
+}
