@@ -1,5 +1,6 @@
 //! Render cases: every `corpus/render/<case>/scene.x3d` is rendered at 160×120 (balanced
-//! quality) and compared per channel with `reference.png` beside it. A pixel differs when
+//! quality, unless a `render.toml` beside it says `quality = "fast"` or `"accurate"`) and
+//! compared per channel with `reference.png` beside it. A pixel differs when
 //! one channel differs by more than `CHANNEL_TOLERANCE`; a case fails when more than
 //! `PIXEL_BUDGET` of its pixels differ (software rasterizers differ slightly at edges).
 //! On failure `actual.png` and `diff.png` are written next to the reference.
@@ -40,6 +41,25 @@ fn args() -> RenderArgs {
     }
 }
 
+/// The case's arguments: `render.toml` may set `quality` and `camera`.
+fn case_args(case: &Path) -> RenderArgs {
+    let mut args = args();
+    let Ok(text) = std::fs::read_to_string(case.join("render.toml")) else {
+        return args;
+    };
+    let table: toml::Table = text.parse().expect("render.toml parses");
+    for (key, value) in table {
+        match (key.as_str(), value.as_str()) {
+            ("quality", Some("fast")) => args.quality = Quality::Fast,
+            ("quality", Some("balanced")) => args.quality = Quality::Balanced,
+            ("quality", Some("accurate")) => args.quality = Quality::Accurate,
+            ("camera", Some(def)) => args.camera = def.to_string(),
+            _ => panic!("{}: unknown render.toml entry {key}", case.display()),
+        }
+    }
+    args
+}
+
 #[test]
 fn render_cases_match_their_references() {
     if std::env::var_os("X3DCHECK_NO_GPU").is_some_and(|v| v == "1") {
@@ -58,7 +78,7 @@ fn render_cases_match_their_references() {
             &source,
             &CheckConfig::default(),
         );
-        let image = render_image(&args(), &scene, &source, doc.as_ref(), &mut report)
+        let image = render_image(&case_args(case), &scene, &source, doc.as_ref(), &mut report)
             .unwrap_or_else(|e| panic!("{}: {e}", case.display()));
         let reference_path = case.join("reference.png");
         if update || !reference_path.exists() {
@@ -195,5 +215,57 @@ fn exponential_use_expansion_renders_quickly_with_a_note() {
             .iter()
             .map(|d| &d.message)
             .collect::<Vec<_>>()
+    );
+}
+
+#[test]
+fn coordinate_double_far_from_the_origin_keeps_its_precision() {
+    if std::env::var_os("X3DCHECK_NO_GPU").is_some_and(|v| v == "1") {
+        eprintln!("precision test SKIPPED: X3DCHECK_NO_GPU=1");
+        return;
+    }
+    // A 0.001-wide quad made of CoordinateDouble points at x = 10,000,000 (where f32 steps
+    // by 1), seen from 0.002 away, renders as the same quad at the origin.
+    let scene = |x: f64| {
+        let points: Vec<String> = [
+            (-0.0005, -0.0005),
+            (0.0005, -0.0005),
+            (0.0005, 0.0005),
+            (-0.0005, 0.0005),
+        ]
+        .iter()
+        .map(|(dx, dy)| format!("{} {dy} 0", x + dx))
+        .collect();
+        format!(
+            "<X3D profile='Full' version='4.0'><Scene><Viewpoint position='{x} 0 0.002'/>\
+             <Shape><Appearance><Material diffuseColor='0.2 0.6 1'/></Appearance>\
+             <IndexedFaceSet coordIndex='0 1 2 3 -1'><CoordinateDouble point='{}'/></IndexedFaceSet>\
+             </Shape></Scene></X3D>",
+            points.join(" ")
+        )
+    };
+    let render = |source: String| {
+        let (mut report, doc) = x3dcheck::check::check_document(
+            "scene.x3d",
+            source.as_bytes(),
+            &CheckConfig::default(),
+        );
+        render_image(
+            &args(),
+            Path::new("scene.x3d"),
+            source.as_bytes(),
+            doc.as_ref(),
+            &mut report,
+        )
+        .unwrap()
+    };
+    let near = render(scene(0.0));
+    let far = render(scene(10_000_000.0));
+    // The quad fills the middle of the image.
+    let centre = near.get_pixel(80, 60);
+    assert!(centre[2] > 100, "the quad is drawn: {centre:?}");
+    assert!(
+        compare(&far, &near, Path::new("target")).is_none(),
+        "the far quad differs from the near one"
     );
 }

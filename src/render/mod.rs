@@ -120,6 +120,17 @@ pub fn run(
         .map_err(|e| format!("cannot write {}: {e}", out.display()))
 }
 
+/// Mesa's software drivers complain on stderr ("XDG_RUNTIME_DIR is invalid or not set")
+/// when the variable is missing, as on CI machines and containers; it then points at the
+/// temporary directory. Call it before any thread starts.
+pub fn prepare_environment() {
+    #[cfg(feature = "render")]
+    if std::env::var_os("XDG_RUNTIME_DIR").is_none_or(|v| v.is_empty()) {
+        // Sound here: the caller runs this while the process has one thread.
+        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
+    }
+}
+
 /// `--render` in a build without the `render` feature.
 #[cfg(not(feature = "render"))]
 pub fn run(
