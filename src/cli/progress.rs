@@ -31,7 +31,7 @@ impl Progress {
             let bar =
                 ProgressBar::with_draw_target(Some(files as u64), ProgressDrawTarget::hidden());
             let style = ProgressStyle::with_template(
-                "{bar:40} {pos}/{len} files checked, {elapsed} (about {eta} left)",
+                "{bar:30} {pos}/{len} files checked, {elapsed} (about {eta} left)",
             )
             .expect("the template is valid")
             .progress_chars("=> ");
