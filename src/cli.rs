@@ -1,6 +1,10 @@
-//! The command line: arguments, finding the inputs, checking them in parallel, writing the
-//! report, and the exit code — 0 nothing at or above the fail level, 1 something is,
-//! 2 usage, I/O or internal failure ("could not be checked" is never "invalid").
+//! The command line: arguments, finding the inputs (of one shard, `--shard`), checking them
+//! in parallel, writing the report, and the exit code — 0 nothing at or above the fail
+//! level, 1 something is, 2 usage, I/O or internal failure ("could not be checked" is never
+//! "invalid"). `merge` combines JSON reports ([`merge`]); [`progress`] draws the bar.
+
+mod merge;
+mod progress;
 
 use std::borrow::Cow;
 use std::fs;
@@ -16,6 +20,7 @@ use x3dcheck::config_file::{known_code, Effective, Resolver, Settings};
 use x3dcheck::model::MAX_INPUT_BYTES;
 use x3dcheck::report::{concise, github, human, json, junit, sarif, statistics};
 use x3dcheck::report::{FileReport, Summary};
+use x3dcheck::shard::Shard;
 use x3dcheck::validate::{Level, Rule, Severity, RULES};
 
 #[derive(Parser, Debug)]
@@ -40,6 +45,8 @@ enum Command {
         /// A rule code, e.g. DEF_DUPLICATE
         code: Option<String>,
     },
+    /// Combine JSON reports (e.g. of `--shard K/N` runs) into the report of one run
+    Merge(merge::MergeArgs),
 }
 
 #[derive(Args, Debug)]
@@ -88,6 +95,15 @@ struct CheckArgs {
     /// Files checked in parallel (default: all cores)
     #[arg(short, long, value_name = "N")]
     jobs: Option<usize>,
+    /// Check only shard K of N (1 ≤ K ≤ N), for CI jobs that split a tree
+    ///
+    /// A file's shard depends on its path alone: the path relative to the directory
+    /// argument it was found under (as given, for a file named directly), with `/` as
+    /// separator and no `.` components, is hashed with SHA-256; the first 8 bytes of the
+    /// hash as a big-endian number, mod N, plus 1, is the shard. stdin is in shard 1.
+    /// `x3dcheck merge` combines the shards' JSON reports.
+    #[arg(long, value_name = "K/N")]
+    shard: Option<Shard>,
     /// No colours in the human format
     #[arg(long)]
     no_color: bool,
@@ -119,6 +135,7 @@ const USAGE: u8 = 2;
 pub fn run(cli: Cli) -> ExitCode {
     let result = match cli.command {
         Some(Command::Rules { code }) => rules(code.as_deref()),
+        Some(Command::Merge(args)) => merge::merge(&args),
         None => check(&cli.check),
     };
     match result {
@@ -131,16 +148,14 @@ pub fn run(cli: Cli) -> ExitCode {
 }
 
 fn check(args: &CheckArgs) -> Result<ExitCode, String> {
-    if args.statistics && !matches!(args.format, Format::Human | Format::Concise | Format::Json) {
-        return Err("--statistics prints with the human, concise or json format".to_string());
-    }
+    check_statistics_format(args.statistics, args.format)?;
     let mut resolver =
         Resolver::new(args.config.as_deref(), settings(args)?).map_err(|e| e.to_string())?;
     let color = !args.no_color
         && args.output.is_none()
         && io::stdout().is_terminal()
         && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty());
-    let (inputs, mut failed) = find_inputs(&args.paths);
+    let (inputs, mut failed) = find_inputs(&args.paths, args.shard);
     // Configuration errors stop the run before anything is checked.
     let configs = inputs
         .iter()
@@ -161,15 +176,19 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
         .num_threads(args.jobs.unwrap_or(0))
         .build()
         .map_err(|e| format!("cannot start worker threads: {e}"))?;
+    let progress = progress::Progress::start(inputs.len(), args.output.is_some());
     let outcomes: Vec<Outcome> = pool.install(|| {
         inputs
             .par_iter()
             .zip(&configs)
             .map(|(input, config)| {
-                check_input(input, &config.check, text_format, color, &args.render)
+                let outcome = check_input(input, &config.check, text_format, color, &args.render);
+                progress.file_done();
+                outcome
             })
             .collect()
     });
+    progress.finish();
 
     let mut reports = Vec::with_capacity(outcomes.len());
     let mut fail_levels = Vec::with_capacity(outcomes.len());
@@ -187,30 +206,74 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
             }
         }
     }
-    let summary = Summary::of(&reports);
-    match (args.statistics, args.format) {
-        (true, Format::Json) => text = statistics::render_json(&statistics::of(&reports), &reports),
-        (true, _) => {
-            text = statistics::render_text(&statistics::of(&reports));
-            text.push_str(&human::summary_line(&summary));
-            text.push('\n');
-        }
-        (false, Format::Json) => text = json::render(&reports),
-        (false, Format::Sarif) => text = sarif::render(&reports),
-        (false, Format::Junit) => text = junit::render(&reports, &fail_levels),
-        (false, Format::Github) => {}
-        (false, Format::Human | Format::Concise) => {
-            text.push_str(&human::summary_line(&summary));
-            text.push('\n');
-        }
-    }
-    write_output(args.output.as_deref(), &text)?;
-
-    let fails = reports
-        .iter()
-        .zip(&fail_levels)
-        .any(|(r, &level)| r.diagnostics.iter().any(|d| d.severity >= level));
+    let report = ReportOutput {
+        format: args.format,
+        statistics: args.statistics,
+        shard: args.shard,
+        output: args.output.as_deref(),
+    };
+    let fails = report.write(&reports, &fail_levels, text)?;
     Ok(ExitCode::from(if failed { USAGE } else { u8::from(fails) }))
+}
+
+fn check_statistics_format(statistics: bool, format: Format) -> Result<(), String> {
+    if statistics && !matches!(format, Format::Human | Format::Concise | Format::Json) {
+        return Err("--statistics prints with the human, concise or json format".to_string());
+    }
+    Ok(())
+}
+
+/// How the report of a run (or of a merge) is written.
+struct ReportOutput<'a> {
+    format: Format,
+    statistics: bool,
+    /// The part of a split the run checked, said in the JSON report.
+    shard: Option<Shard>,
+    output: Option<&'a Path>,
+}
+
+impl ReportOutput<'_> {
+    /// Writes the report of `reports`, after `text`: the files' own text in the human,
+    /// concise and github formats. Whether a file has a diagnostic at or above its fail
+    /// level (`fail_levels[i]` is that of `reports[i]`).
+    fn write(
+        &self,
+        reports: &[FileReport],
+        fail_levels: &[Severity],
+        mut text: String,
+    ) -> Result<bool, String> {
+        let summary = Summary::of(reports);
+        match (self.statistics, self.format) {
+            (true, Format::Json) => {
+                text = statistics::render_json(&statistics::of(reports), reports)
+            }
+            (true, _) => {
+                text = statistics::render_text(&statistics::of(reports));
+                text.push_str(&human::summary_line(&summary));
+                text.push('\n');
+            }
+            (false, Format::Json) => text = json::render(reports, self.shard),
+            (false, Format::Sarif) => text = sarif::render(reports),
+            (false, Format::Junit) => text = junit::render(reports, fail_levels),
+            (false, Format::Github) => {}
+            (false, Format::Human | Format::Concise) => {
+                text.push_str(&human::summary_line(&summary));
+                text.push('\n');
+            }
+        }
+        write_output(self.output, &text)?;
+        Ok(reports
+            .iter()
+            .zip(fail_levels)
+            .any(|(r, &level)| r.diagnostics.iter().any(|d| d.severity >= level)))
+    }
+}
+
+fn fail_level(fail_on: FailOn) -> Severity {
+    match fail_on {
+        FailOn::Error => Severity::Error,
+        FailOn::Warning => Severity::Warning,
+    }
 }
 
 /// The settings the command line gives; they win over x3dcheck.toml.
@@ -222,10 +285,7 @@ fn settings(args: &CheckArgs) -> Result<Settings, String> {
     };
     let mut settings = Settings {
         level: args.level,
-        fail_on: args.fail_on.map(|f| match f {
-            FailOn::Error => Severity::Error,
-            FailOn::Warning => Severity::Warning,
-        }),
+        fail_on: args.fail_on.map(fail_level),
         max_diagnostics: args.max_diagnostics,
         fold: args.no_fold.then_some(false),
         ..Settings::default()
@@ -272,9 +332,10 @@ enum Input {
     },
 }
 
-/// The inputs in argument order, each directory's files sorted by path. Unreadable paths
-/// are reported here (and make the exit code 2); the rest are still checked.
-fn find_inputs(paths: &[PathBuf]) -> (Vec<Input>, bool) {
+/// The inputs in argument order, each directory's files sorted by path; with a shard, only
+/// those in it. Unreadable paths are reported here (and make the exit code 2); the rest are
+/// still checked.
+fn find_inputs(paths: &[PathBuf], shard: Option<Shard>) -> (Vec<Input>, bool) {
     let mut inputs = Vec::new();
     let mut failed = false;
     let mut fail = |path: &Path, error: io::Error| {
@@ -283,6 +344,9 @@ fn find_inputs(paths: &[PathBuf]) -> (Vec<Input>, bool) {
     };
     for path in paths {
         if path.as_os_str() == "-" {
+            if shard.is_some_and(|s| !s.holds_stdin()) {
+                continue;
+            }
             match read_stdin() {
                 Ok(bytes) => inputs.push(Input::Stdin(bytes)),
                 Err(e) => fail(Path::new("<stdin>"), e),
@@ -293,12 +357,16 @@ fn find_inputs(paths: &[PathBuf]) -> (Vec<Input>, bool) {
             Ok(meta) if meta.is_dir() => {
                 let mut files = Vec::new();
                 walk(path, &mut files, &mut fail);
+                if let Some(shard) = shard {
+                    files.retain(|file| shard.holds(file.strip_prefix(path).unwrap_or(file)));
+                }
                 files.sort();
                 inputs.extend(files.into_iter().map(|file| Input::File {
                     path: file,
                     root: path.clone(),
                 }));
             }
+            Ok(_) if shard.is_some_and(|s| !s.holds(path)) => {}
             Ok(_) => inputs.push(Input::File {
                 path: path.clone(),
                 root: file_root(path),

@@ -11,6 +11,7 @@ pub mod parse;
 pub mod render;
 pub mod report;
 pub mod schema;
+pub mod shard;
 pub mod validate;
 
 pub use check::check_source;

@@ -45,7 +45,7 @@ fn check_all(extensions: &[&str]) {
                 ));
             }
         }
-        let json = x3dcheck::report::json::render(std::slice::from_ref(&report));
+        let json = x3dcheck::report::json::render(std::slice::from_ref(&report), None);
         if let Err(e) = serde_json::from_str::<serde_json::Value>(&json) {
             problems.push(format!("{name}: JSON report does not parse: {e}"));
         }

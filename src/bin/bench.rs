@@ -49,6 +49,9 @@ struct Args {
     /// Time a directory of X3D files per level instead of the generated scene
     #[arg(long, value_name = "DIR")]
     corpus: Option<PathBuf>,
+    /// With --corpus: pass `-j N` to x3dcheck [default: x3dcheck's, all cores]
+    #[arg(long, value_name = "N", requires = "corpus")]
+    jobs: Option<usize>,
     /// Do not run xmllint
     #[arg(long)]
     no_peers: bool,
@@ -122,7 +125,9 @@ fn bench(args: &Args, runs: usize, dir: &Path, scratch: &Path) -> Result<(), Str
     let mut out = String::new();
     machine(&mut out, &x3dcheck, xmllint.as_deref(), &timer);
     if let Some(corpus) = &args.corpus {
-        corpus_bench(&mut out, &timer, &x3dcheck, corpus, runs, scratch)?;
+        corpus_bench(
+            &mut out, &timer, &x3dcheck, corpus, args.jobs, runs, scratch,
+        )?;
         print!("{out}");
         return Ok(());
     }
@@ -768,6 +773,7 @@ fn corpus_bench(
     timer: &Timer,
     x3dcheck: &Path,
     corpus: &Path,
+    jobs: Option<usize>,
     runs: usize,
     scratch: &Path,
 ) -> Result<(), String> {
@@ -789,6 +795,7 @@ fn corpus_bench(
     let _ = writeln!(out, "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|");
     let report = scratch.join("report.json");
     let stderr = scratch.join("stderr.txt");
+    let jobs = jobs.map(|n| n.to_string());
     for level in LEVELS {
         eprintln!(
             "x3dcheck-bench: x3dcheck --level {level} {} ×{runs}",
@@ -796,6 +803,9 @@ fn corpus_bench(
         );
         let _ = fs::remove_file(&report);
         let mut argv = x3dcheck_args(level, &report, corpus);
+        if let Some(jobs) = &jobs {
+            argv.extend([OsStr::new("-j"), OsStr::new(jobs)]);
+        }
         let warm = timer
             .run(x3dcheck.as_os_str(), &argv, Some(&stderr))
             .map_err(|e| format!("cannot run {}: {e}", x3dcheck.display()))?;
@@ -838,9 +848,11 @@ fn corpus_bench(
     }
     let _ = writeln!(
         out,
-        "\nOne x3dcheck run per level over the whole directory; time: median wall clock of {runs} \
+        "\nOne x3dcheck run per level over the whole directory ({}); time: median wall clock of {runs} \
          runs after one warm-up run; CPU use: (user + system CPU time) / wall time, of {} cores; \
          MB = 10⁶ bytes of .x3d/.x3dj/.json files; exit 2 means some file could not be checked.",
+        jobs.as_ref()
+            .map_or("all cores".to_string(), |n| format!("-j {n}")),
         cores()
     );
     Ok(())

@@ -1,53 +1,84 @@
 //! The JSON report of DESIGN.md: pretty-printed, deterministic (same input, same bytes).
+//! [`read`] reads it back (for `x3dcheck merge`) through the same types, so that a report
+//! read and written again is the same bytes.
+//!
+//! Beyond DESIGN.md's example: a diagnostic's `index`, `indices`, `value`, `help`,
+//! `related` (other places that explain it: `line`, `column`, `message`) and `count` appear
+//! when set (`count` when above 1); a report of a `--shard K/N` run says which shard it
+//! is (`"shard": { "index": K, "count": N }`).
 
-use serde::Serialize;
+use std::borrow::Cow;
 
-use super::{FileReport, Resolved, Stats, Summary};
-use crate::model::Encoding;
-use crate::validate::Severity;
+use serde::{Deserialize, Serialize};
 
-#[derive(Serialize)]
+use super::{FileReport, Related, Resolved, Stats, Summary};
+use crate::model::{Encoding, Span};
+use crate::shard::Shard;
+use crate::validate::{find_rule, Severity};
+
+const TOOL: &str = "x3dcheck";
+const VERSION: &str = env!("CARGO_PKG_VERSION");
+
+// Written from borrowed data, read into owned data: hence `Cow`s.
+#[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 struct Report<'a> {
-    tool: &'static str,
-    version: &'static str,
+    tool: Cow<'a, str>,
+    version: Cow<'a, str>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    shard: Option<Shard>,
     files: Vec<File<'a>>,
     summary: Summary,
 }
 
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Serialize, Deserialize)]
+#[serde(rename_all = "camelCase", deny_unknown_fields)]
 struct File<'a> {
-    path: &'a str,
+    path: Cow<'a, str>,
     encoding: Option<Encoding>,
-    x3d_version: Option<&'a str>,
-    profile: Option<&'a str>,
+    x3d_version: Option<Cow<'a, str>>,
+    profile: Option<Cow<'a, str>>,
     diagnostics: Vec<Diagnostic<'a>>,
     truncated: bool,
-    stats: &'a Stats,
+    stats: Cow<'a, Stats>,
 }
 
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
+#[derive(Serialize, Deserialize)]
+#[serde(rename_all = "camelCase", deny_unknown_fields)]
 struct Diagnostic<'a> {
-    code: &'static str,
+    code: Cow<'a, str>,
     severity: Severity,
-    message: &'a str,
+    message: Cow<'a, str>,
     line: usize,
     column: usize,
     end_line: usize,
     end_column: usize,
-    path: &'a str,
-    clause: &'static str,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    path: Cow<'a, str>,
+    clause: Cow<'a, str>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     index: Option<usize>,
-    #[serde(skip_serializing_if = "<[usize]>::is_empty")]
-    indices: &'a [usize],
-    #[serde(skip_serializing_if = "Option::is_none")]
-    value: Option<&'a str>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    help: Option<&'a str>,
-    #[serde(skip_serializing_if = "is_one")]
+    #[serde(default, skip_serializing_if = "<[usize]>::is_empty")]
+    indices: Cow<'a, [usize]>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    value: Option<Cow<'a, str>>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    help: Option<Cow<'a, str>>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    related: Vec<RelatedPlace<'a>>,
+    #[serde(default = "one", skip_serializing_if = "is_one")]
     count: usize,
+}
+
+#[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RelatedPlace<'a> {
+    line: usize,
+    column: usize,
+    message: Cow<'a, str>,
+}
+
+fn one() -> usize {
+    1
 }
 
 fn is_one(count: &usize) -> bool {
@@ -57,39 +88,50 @@ fn is_one(count: &usize) -> bool {
 impl<'a> From<&'a Resolved> for Diagnostic<'a> {
     fn from(d: &'a Resolved) -> Diagnostic<'a> {
         Diagnostic {
-            code: d.code,
+            code: d.code.into(),
             severity: d.severity,
-            message: &d.message,
+            message: d.message.as_str().into(),
             line: d.line,
             column: d.column,
             end_line: d.end_line,
             end_column: d.end_column,
-            path: &d.path,
-            clause: d.clause,
+            path: d.path.as_str().into(),
+            clause: d.clause.into(),
             index: d.index,
-            indices: &d.indices,
-            value: d.value.as_deref(),
-            help: d.help.as_deref(),
+            indices: d.indices.as_slice().into(),
+            value: d.value.as_deref().map(Cow::from),
+            help: d.help.as_deref().map(Cow::from),
+            related: d
+                .related
+                .iter()
+                .map(|r| RelatedPlace {
+                    line: r.line,
+                    column: r.column,
+                    message: r.label.as_str().into(),
+                })
+                .collect(),
             count: d.count,
         }
     }
 }
 
-/// The whole report, with a trailing newline.
-pub fn render(reports: &[FileReport]) -> String {
+/// The whole report, with a trailing newline. `shard`: the part of a split this run
+/// checked, if any.
+pub fn render(reports: &[FileReport], shard: Option<Shard>) -> String {
     let report = Report {
-        tool: "x3dcheck",
-        version: env!("CARGO_PKG_VERSION"),
+        tool: TOOL.into(),
+        version: VERSION.into(),
+        shard,
         files: reports
             .iter()
             .map(|r| File {
-                path: &r.path,
+                path: r.path.as_str().into(),
                 encoding: r.encoding,
-                x3d_version: r.x3d_version.as_deref(),
-                profile: r.profile.as_deref(),
+                x3d_version: r.x3d_version.as_deref().map(Cow::from),
+                profile: r.profile.as_deref().map(Cow::from),
                 diagnostics: r.diagnostics.iter().map(Diagnostic::from).collect(),
                 truncated: r.truncated,
-                stats: &r.stats,
+                stats: Cow::Borrowed(&r.stats),
             })
             .collect(),
         summary: Summary::of(reports),
@@ -98,4 +140,200 @@ pub fn render(reports: &[FileReport]) -> String {
     let mut text = serde_json::to_string_pretty(&report).expect("the report serializes");
     text.push('\n');
     text
+}
+
+/// A report read back.
+#[derive(Debug)]
+pub struct ReadReport {
+    pub shard: Option<Shard>,
+    pub files: Vec<FileReport>,
+}
+
+#[derive(Debug, thiserror::Error)]
+pub enum ReadError {
+    #[error("not JSON: {0}")]
+    NotJson(serde_json::Error),
+    #[error("not an x3dcheck JSON report (one of `x3dcheck --format json`)")]
+    NotReport,
+    #[error("a --statistics report, which lists no files")]
+    Statistics,
+    #[error("written by x3dcheck {0}, this is {VERSION}: reports merge only within one version")]
+    Version(String),
+    #[error("not a valid x3dcheck {VERSION} report: {0}")]
+    Invalid(serde_json::Error),
+    #[error("{0}")]
+    Inconsistent(String),
+}
+
+/// Just enough of any JSON to tell what it is.
+#[derive(Deserialize)]
+struct Header {
+    tool: Option<serde_json::Value>,
+    version: Option<serde_json::Value>,
+    statistics: Option<serde::de::IgnoredAny>,
+}
+
+/// Reads a report written by [`render`] of this version. Spans are not in the report:
+/// the diagnostics read have empty spans at 0, which the formats that need them (human,
+/// with the source) must not be given.
+pub fn read(text: &str) -> Result<ReadReport, ReadError> {
+    let header: Header = serde_json::from_str(text).map_err(|e| match e.classify() {
+        serde_json::error::Category::Data => ReadError::NotReport,
+        _ => ReadError::NotJson(e),
+    })?;
+    if header.tool.as_ref().and_then(|t| t.as_str()) != Some(TOOL) {
+        return Err(ReadError::NotReport);
+    }
+    if header.statistics.is_some() {
+        return Err(ReadError::Statistics);
+    }
+    match header.version.as_ref().and_then(|v| v.as_str()) {
+        Some(VERSION) => {}
+        Some(other) => return Err(ReadError::Version(other.to_string())),
+        None => return Err(ReadError::NotReport),
+    }
+    let report: Report = serde_json::from_str(text).map_err(ReadError::Invalid)?;
+    if let Some(shard) = report.shard {
+        Shard::new(shard.index, shard.count).map_err(ReadError::Inconsistent)?;
+    }
+    let files = report
+        .files
+        .into_iter()
+        .map(file_report)
+        .collect::<Result<Vec<_>, _>>()?;
+    if Summary::of(&files) != report.summary {
+        return Err(ReadError::Inconsistent(
+            "its summary does not count its diagnostics".to_string(),
+        ));
+    }
+    Ok(ReadReport {
+        shard: report.shard,
+        files,
+    })
+}
+
+fn file_report(file: File) -> Result<FileReport, ReadError> {
+    let diagnostics = file
+        .diagnostics
+        .into_iter()
+        .map(|d| {
+            let rule = find_rule(&d.code).ok_or_else(|| {
+                ReadError::Inconsistent(format!("{}: unknown code {}", file.path, d.code))
+            })?;
+            Ok(Resolved {
+                code: rule.code,
+                severity: d.severity,
+                message: d.message.into_owned(),
+                line: d.line,
+                column: d.column,
+                end_line: d.end_line,
+                end_column: d.end_column,
+                path: d.path.into_owned(),
+                clause: rule.clause,
+                index: d.index,
+                indices: d.indices.into_owned(),
+                value: d.value.map(Cow::into_owned),
+                help: d.help.map(Cow::into_owned),
+                related: d
+                    .related
+                    .into_iter()
+                    .map(|r| Related {
+                        line: r.line,
+                        column: r.column,
+                        label: r.message.into_owned(),
+                        span: Span::default(),
+                    })
+                    .collect(),
+                count: d.count,
+                span: Span::default(),
+            })
+        })
+        .collect::<Result<Vec<_>, ReadError>>()?;
+    Ok(FileReport {
+        path: file.path.into_owned(),
+        encoding: file.encoding,
+        x3d_version: file.x3d_version.map(Cow::into_owned),
+        profile: file.profile.map(Cow::into_owned),
+        diagnostics,
+        truncated: file.truncated,
+        stats: file.stats.into_owned(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::report::resolve;
+    use crate::validate::find_rule;
+
+    fn report() -> FileReport {
+        let source = b"<X3D>\n  <Scene>\n    <Shape/>\n  </Scene>\n</X3D>\n";
+        let rule = find_rule("DEF_DUPLICATE").unwrap();
+        let folded = crate::report::Diagnostic {
+            indices: vec![3, 7],
+            count: 2,
+            ..crate::report::Diagnostic::new(rule, Span { start: 12, end: 19 }, "a \"quoted\"\n")
+        };
+        let diagnostics = [
+            crate::report::Diagnostic::new(rule, Span { start: 20, end: 28 }, "DEF `A` again")
+                .related(Span { start: 6, end: 13 }, "first defined here")
+                .help("rename it")
+                .value("A")
+                .index(2),
+            folded,
+        ];
+        FileReport {
+            path: "dir/ü scene.x3d".to_string(),
+            encoding: Some(Encoding::Xml),
+            x3d_version: Some("4.0".to_string()),
+            profile: None,
+            diagnostics: resolve(&diagnostics, source, None),
+            truncated: true,
+            stats: Stats::default(),
+        }
+    }
+
+    #[test]
+    fn a_report_read_back_renders_the_same_bytes() {
+        let reports = [report(), report()];
+        let shard = Some(Shard::new(2, 3).unwrap());
+        let text = render(&reports, shard);
+        assert!(text.contains("\"related\": [") && text.contains("\"index\": 2"));
+        let read = read(&text).unwrap();
+        assert_eq!(read.shard, shard);
+        assert_eq!(render(&read.files, shard), text);
+        assert_eq!(read.files[0].diagnostics[0].related[0].line, 2);
+    }
+
+    #[test]
+    fn what_is_not_a_report_is_refused() {
+        let text = render(&[report()], None);
+        let error = |text: &str| read(text).unwrap_err().to_string();
+        assert!(error("{").starts_with("not JSON"), "{}", error("{"));
+        assert!(error("[1]").starts_with("not an x3dcheck"));
+        assert!(error("{\"version\": \"2.1.0\", \"runs\": []}").starts_with("not an x3dcheck"));
+        assert!(error("{\"tool\": \"x3dcheck\", \"statistics\": []}").contains("--statistics"));
+        let old = text.replacen(VERSION, "0.0.1", 1);
+        assert!(
+            error(&old).contains("written by x3dcheck 0.0.1"),
+            "{}",
+            error(&old)
+        );
+        let extra = text.replacen("\"truncated\"", "\"extra\": 1, \"truncated\"", 1);
+        assert!(
+            error(&extra).contains("unknown field `extra`"),
+            "{}",
+            error(&extra)
+        );
+        let code = text.replacen("\"DEF_DUPLICATE\"", "\"NO_SUCH_CODE\"", 1);
+        assert!(error(&code).contains("unknown code NO_SUCH_CODE"));
+        let summary = text.replacen("\"errors\": 3", "\"errors\": 2", 1);
+        assert!(error(&summary).contains("summary"), "{}", error(&summary));
+        let shard = text.replacen(
+            "\"files\"",
+            "\"shard\": {\"index\": 4, \"count\": 3}, \"files\"",
+            1,
+        );
+        assert!(error(&shard).contains("4/3"), "{}", error(&shard));
+    }
 }

@@ -18,7 +18,7 @@ pub use diagnostic::Diagnostic;
 pub use resolve::{resolve, Related, Resolved};
 pub use stats::Stats;
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::model::Encoding;
 use crate::validate::Severity;
@@ -37,7 +37,8 @@ pub struct FileReport {
 }
 
 /// Diagnostics per severity over the files checked; a folded diagnostic counts as many.
-#[derive(Copy, Clone, Debug, Default, PartialEq, Eq, Serialize)]
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Summary {
     pub files: usize,
     pub errors: usize,
