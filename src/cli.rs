@@ -475,18 +475,26 @@ fn check_input(
         }
     };
     // A panic in a rule is an internal failure of this file, not of the run.
-    std::panic::catch_unwind(|| {
+    let failure = format!("internal error while checking {name}");
+    std::panic::catch_unwind(move || {
         let (mut report, doc) = x3dcheck::check::check_document(&name, &bytes, config);
-        x3dcheck::render::run(render, Path::new(&name), &bytes, doc.as_ref(), &mut report)?;
+        let preview =
+            x3dcheck::render::prepare(render, Path::new(&name), &bytes, doc.as_ref(), &mut report)?;
+        drop(doc);
         let text = match format {
             Some(Format::Human) => human::render(&report, &bytes, color),
             Some(Format::Concise) => concise::render(&report),
             Some(Format::Github) => github::render(&report),
             Some(Format::Json | Format::Sarif | Format::Junit) | None => String::new(),
         };
+        // The preview no longer needs the document or its source.
+        drop(bytes);
+        if let Some(preview) = preview {
+            preview.save()?;
+        }
         Ok((report, text))
     })
-    .map_err(|_| format!("internal error while checking {name}"))?
+    .map_err(|_| failure)?
 }
 
 fn write_output(output: Option<&Path>, text: &str) -> Result<(), String> {

@@ -42,10 +42,74 @@ use crate::report::{resolve, Diagnostic};
 #[cfg(feature = "render")]
 use crate::validate::document::validation_incomplete::VALIDATION_INCOMPLETE;
 
+/// A scene ready to draw: the draw list, taken apart from the document, so that the
+/// document and its source can be freed before the GPU work (the two together can be
+/// larger than the meshes).
 #[cfg(feature = "render")]
-/// Renders `doc` (read from `source`, the document at `path`) into an image, adding what
-/// cannot be drawn to `report`. Err: why no image could be made (no document, no adapter,
-/// bad --camera).
+pub struct Preview {
+    list: draw_list::DrawList,
+    width: u32,
+    height: u32,
+    settings: Settings,
+    out: Option<std::path::PathBuf>,
+}
+
+/// Without the renderer there is never a preview.
+#[cfg(not(feature = "render"))]
+pub enum Preview {}
+
+#[cfg(feature = "render")]
+impl Preview {
+    /// Draws the image.
+    pub fn draw(self) -> Result<image::RgbaImage, String> {
+        gpu::render(self.list, self.width, self.height, self.settings).map_err(|e| e.to_string())
+    }
+
+    /// Draws the image into the `--render` file.
+    pub fn save(self) -> Result<(), String> {
+        let Some(out) = self.out.clone() else {
+            return Ok(());
+        };
+        self.draw()?
+            .save_with_format(&out, image::ImageFormat::Png)
+            .map_err(|e| format!("cannot write {}: {e}", out.display()))
+    }
+}
+
+#[cfg(not(feature = "render"))]
+impl Preview {
+    pub fn save(self) -> Result<(), String> {
+        match self {}
+    }
+}
+
+/// `--render`: takes `doc` (as [`crate::check::check_document`] read it, from `source`,
+/// the document at `path`) apart into a [`Preview`], adding what cannot be drawn to
+/// `report`. None when `--render` was not given; Err: why no image can be made (no
+/// document, bad --camera, a build without the renderer).
+pub fn prepare(
+    args: &RenderArgs,
+    path: &Path,
+    source: &[u8],
+    doc: Option<&Document>,
+    report: &mut FileReport,
+) -> Result<Option<Preview>, String> {
+    if args.render.is_none() {
+        return Ok(None);
+    }
+    #[cfg(feature = "render")]
+    {
+        preview(args, args.quality.settings(), path, source, doc, report).map(Some)
+    }
+    #[cfg(not(feature = "render"))]
+    {
+        let _ = (path, source, doc, report);
+        Err("--render: this x3dcheck was built without the `render` feature".to_string())
+    }
+}
+
+/// Renders `doc` into an image with the preset of `args` (see [`prepare`]).
+#[cfg(feature = "render")]
 pub fn render_image(
     args: &RenderArgs,
     path: &Path,
@@ -53,19 +117,20 @@ pub fn render_image(
     doc: Option<&Document>,
     report: &mut FileReport,
 ) -> Result<image::RgbaImage, String> {
-    render_with(args, args.quality.settings(), path, source, doc, report)
+    preview(args, args.quality.settings(), path, source, doc, report)?.draw()
 }
 
-/// [`render_image`] with explicit [`Settings`] instead of a quality preset (the benchmark
-/// measures the presets against a heavily supersampled reference this way).
-pub fn render_with(
+/// The [`Preview`] of `doc` with explicit [`Settings`] instead of a quality preset (the
+/// benchmark measures the presets against a heavily supersampled reference this way).
+#[cfg(feature = "render")]
+pub fn preview(
     args: &RenderArgs,
     settings: Settings,
     path: &Path,
     source: &[u8],
     doc: Option<&Document>,
     report: &mut FileReport,
-) -> Result<image::RgbaImage, String> {
+) -> Result<Preview, String> {
     let Some(doc) = doc else {
         return Err(format!("{}: no scene to render", path.display()));
     };
@@ -97,27 +162,13 @@ pub fn render_with(
     report
         .diagnostics
         .extend(resolve(&diagnostics, source, Some(doc)));
-    gpu::render(flattened.list, args.size.width, args.size.height, settings)
-        .map_err(|e| e.to_string())
-}
-
-/// `--render`: renders `doc` (as [`crate::check::check_document`] read it) and writes the
-/// PNG. Does nothing when `--render` was not given.
-#[cfg(feature = "render")]
-pub fn run(
-    args: &RenderArgs,
-    path: &Path,
-    source: &[u8],
-    doc: Option<&Document>,
-    report: &mut FileReport,
-) -> Result<(), String> {
-    let Some(out) = &args.render else {
-        return Ok(());
-    };
-    let image = render_image(args, path, source, doc, report)?;
-    image
-        .save_with_format(out, image::ImageFormat::Png)
-        .map_err(|e| format!("cannot write {}: {e}", out.display()))
+    Ok(Preview {
+        list: flattened.list,
+        width: args.size.width,
+        height: args.size.height,
+        settings,
+        out: args.render.clone(),
+    })
 }
 
 /// Mesa's software drivers complain on stderr ("XDG_RUNTIME_DIR is invalid or not set")
@@ -128,22 +179,5 @@ pub fn prepare_environment() {
     if std::env::var_os("XDG_RUNTIME_DIR").is_none_or(|v| v.is_empty()) {
         // Sound here: the caller runs this while the process has one thread.
         std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
-    }
-}
-
-/// `--render` in a build without the `render` feature.
-#[cfg(not(feature = "render"))]
-pub fn run(
-    args: &RenderArgs,
-    _path: &Path,
-    _source: &[u8],
-    _doc: Option<&Document>,
-    _report: &mut FileReport,
-) -> Result<(), String> {
-    match &args.render {
-        None => Ok(()),
-        Some(_) => {
-            Err("--render: this x3dcheck was built without the `render` feature".to_string())
-        }
     }
 }

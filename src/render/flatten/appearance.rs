@@ -236,7 +236,9 @@ impl Walker<'_> {
         });
     }
 
-    /// MultiTexture (18.4.3): one stage per texture with its mode, source and function.
+    /// MultiTexture (18.4.3): one stage per texture with its mode, source and function. A
+    /// mode may name the colour and the alpha operation apart, "MODULATE,REPLACE" (the
+    /// example under Table 18.3) or "MODULATE / REPLACE" (as Castle Game Engine writes it).
     fn multi_texture(&mut self, context: Context, multi: NodeId, look: &mut Look) {
         let doc = context.doc;
         let strings = |field: &str| -> Vec<String> {
@@ -276,7 +278,7 @@ impl Walker<'_> {
                 .get(i)
                 .map(String::as_str)
                 .unwrap_or("MODULATE")
-                .split_once(',')
+                .split_once([',', '/'])
             {
                 Some((rgb, alpha)) => (stage_mode(rgb.trim()), stage_mode(alpha.trim())),
                 None => {
