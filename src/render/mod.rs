@@ -32,6 +32,13 @@ mod textures;
 use std::path::Path;
 
 pub use cli_args::{ImageSize, Quality, RenderArgs};
+
+/// The lighting equations in WGSL (one light at one point), on their own for tests.
+#[cfg(feature = "render")]
+pub const LIGHTING_WGSL: &str = include_str!("lighting.wgsl");
+/// The whole shader: the lighting equations, then the shading that uses them.
+#[cfg(feature = "render")]
+const SHADER_WGSL: &str = concat!(include_str!("lighting.wgsl"), include_str!("shader.wgsl"));
 #[cfg(feature = "render")]
 pub use gpu::{GpuError, Settings, Shading};
 

@@ -1,17 +1,10 @@
-// The lighting equations of 19775-1 clause 17 (17.2.2) and the texturing of clause 18.
+// The shading of 19775-1 clause 17 (17.2.2) and the texturing of clause 18, over the
+// lighting equations of `lighting.wgsl` (which this file follows when compiled).
 // Positions are relative to the eye, in world orientation: V = normalize(-p).
 //
 // Two shadings share the equations: Phong shading (`vs_main` + `fs_phong`, per fragment,
 // every material texture) and Gouraud shading (`vs_gouraud` + `fs_gouraud`, per vertex,
 // with the main texture applied per fragment as 17.2.2.8 recommends).
-
-struct Light {
-    color_intensity: vec4<f32>,    // rgb colour, intensity
-    location_kind: vec4<f32>,      // xyz location, kind (0 directional, 1 point, 2 spot)
-    direction_ambient: vec4<f32>,  // xyz unit direction of travel, ambientIntensity
-    attenuation_radius: vec4<f32>, // c1, c2, c3, radius
-    spot: vec4<f32>,               // beamWidth, cutOffAngle
-};
 
 struct Globals {
     view_projection: mat4x4<f32>,
@@ -122,132 +115,24 @@ fn vs_main(v: VertexIn) -> VertexOut {
     return common_vertex(v);
 }
 
-const PI: f32 = 3.14159265358979;
-
-// x · y of 17.2.2.3: never negative.
-fn pdot(x: vec3<f32>, y: vec3<f32>) -> f32 {
-    return max(0.0, dot(x, y));
-}
-
-fn unit_or_zero(v: vec3<f32>) -> vec3<f32> {
-    let len = length(v);
-    return select(vec3<f32>(0.0), v / len, len > 0.0);
-}
-
-// on × attenuation × spot of light i at point p, with L (towards the light).
-struct Incidence {
-    factor: f32,
-    to_light: vec3<f32>,
-};
-
-fn incidence(light: Light, p: vec3<f32>) -> Incidence {
-    var result: Incidence;
-    let kind = u32(light.location_kind.w);
-    if kind == 0u {
-        result.factor = 1.0;
-        result.to_light = -light.direction_ambient.xyz;
-        return result;
-    }
-    let offset = light.location_kind.xyz - p;
-    let distance = length(offset);
-    result.to_light = select(vec3<f32>(0.0, 0.0, 1.0), offset / distance, distance > 0.0);
-    if distance > light.attenuation_radius.w {
-        result.factor = 0.0;
-        return result;
-    }
-    let c = light.attenuation_radius.xyz;
-    var factor = 1.0 / max(c.x + c.y * distance + c.z * distance * distance, 1.0);
-    if kind == 2u {
-        // Table 17.4, in its order.
-        let spot_angle = acos(clamp(dot(-result.to_light, light.direction_ambient.xyz), -1.0, 1.0));
-        let beam = light.spot.x;
-        let cut_off = light.spot.y;
-        if spot_angle >= cut_off {
-            factor = 0.0;
-        } else if spot_angle > beam {
-            factor = factor * (spot_angle - cut_off) / (beam - cut_off);
-        }
-    }
-    result.factor = factor;
-    return result;
-}
-
-// The inputs of the lighting equations at one point (17.2.2.5, 17.2.2.6).
-struct Surface {
-    diffuse: vec3<f32>,    // diffuseParameter / baseParameter
-    emissive: vec3<f32>,   // emissiveParameter
-    specular: vec3<f32>,   // specularParameter
-    shininess: f32,        // shininessParameter (× 128 already)
-    ambient: vec3<f32>,    // ambientParameter
-    metallic: f32,
-    roughness: f32,
-    occlusion: f32,        // occlusion() as a factor on the sum over the lights
-};
-
 fn phong(s: Surface, p: vec3<f32>, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
     var sum = vec3<f32>(0.0);
     for (var i = 0u; i < globals.counts.y; i = i + 1u) {
-        if (draw.misc.x & (1u << i)) == 0u {
-            continue;
+        if (draw.misc.x & (1u << i)) != 0u {
+            sum = sum + light_phong(globals.lights[i], s, p, n, v);
         }
-        let light = globals.lights[i];
-        let inc = incidence(light, p);
-        if inc.factor <= 0.0 {
-            continue;
-        }
-        let l = inc.to_light;
-        let intensity = light.color_intensity.w;
-        let ambient = light.direction_ambient.w * s.ambient;
-        let diffuse_term = intensity * s.diffuse * pdot(n, l);
-        var specular_term = vec3<f32>(0.0);
-        let half_sum = l + v;
-        if dot(half_sum, half_sum) > 0.0 && dot(n, l) > 0.0 {
-            let h = normalize(half_sum);
-            let lobe = select(pow(pdot(n, h), s.shininess), 1.0, s.shininess <= 0.0);
-            specular_term = intensity * s.specular * lobe;
-        }
-        sum = sum + light.color_intensity.rgb * inc.factor * (ambient + diffuse_term + specular_term);
     }
-    return s.emissive + s.occlusion * sum;
+    return s.emissive + s.occlusion * min(sum, vec3<f32>(MAX_RADIANCE));
 }
 
-// The glTF 2.0 metallic-roughness BRDF (glTF 2.0 Appendix B), as 17.2.2.6 requires.
 fn physical(s: Surface, p: vec3<f32>, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
-    let metallic = clamp(s.metallic, 0.0, 1.0);
-    let roughness = clamp(s.roughness, 0.0, 1.0);
-    let alpha = roughness * roughness;
-    let alpha2 = alpha * alpha;
-    let c_diff = mix(s.diffuse, vec3<f32>(0.0), metallic);
-    let f0 = mix(vec3<f32>(0.04), s.diffuse, metallic);
     var sum = vec3<f32>(0.0);
     for (var i = 0u; i < globals.counts.y; i = i + 1u) {
-        if (draw.misc.x & (1u << i)) == 0u {
-            continue;
+        if (draw.misc.x & (1u << i)) != 0u {
+            sum = sum + light_physical(globals.lights[i], s, p, n, v);
         }
-        let light = globals.lights[i];
-        let inc = incidence(light, p);
-        let l = inc.to_light;
-        let n_dot_l = pdot(n, l);
-        if inc.factor <= 0.0 || n_dot_l <= 0.0 {
-            continue;
-        }
-        let half_sum = l + v;
-        let h = select(n, normalize(half_sum), dot(half_sum, half_sum) > 0.0);
-        let n_dot_v = pdot(n, v);
-        let n_dot_h = pdot(n, h);
-        let v_dot_h = pdot(v, h);
-        let fresnel = f0 + (vec3<f32>(1.0) - f0) * pow(1.0 - v_dot_h, 5.0);
-        let ggx_v = n_dot_l * sqrt(n_dot_v * n_dot_v * (1.0 - alpha2) + alpha2);
-        let ggx_l = n_dot_v * sqrt(n_dot_l * n_dot_l * (1.0 - alpha2) + alpha2);
-        let ggx = ggx_v + ggx_l;
-        let visibility = select(0.0, 0.5 / ggx, ggx > 0.0);
-        let d_denominator = n_dot_h * n_dot_h * (alpha2 - 1.0) + 1.0;
-        let distribution = alpha2 / max(PI * d_denominator * d_denominator, 1e-30);
-        let f_diffuse = (vec3<f32>(1.0) - fresnel) * c_diff / PI;
-        let f_specular = fresnel * visibility * distribution;
-        sum = sum + light.color_intensity.rgb * light.color_intensity.w * inc.factor * n_dot_l * (f_diffuse + f_specular);
     }
-    return s.emissive + s.occlusion * sum;
+    return s.emissive + s.occlusion * min(sum, vec3<f32>(MAX_RADIANCE));
 }
 
 // The material's colour before textures: diffuseParameter (Phong), baseParameter
@@ -428,20 +313,7 @@ fn clip(p: vec3<f32>) {
 }
 
 fn apply_fog(color: vec3<f32>, p: vec3<f32>) -> vec3<f32> {
-    let kind = globals.counts.x;
-    if kind == 0u {
-        return color;
-    }
-    let range = globals.fog_color_range.w;
-    let d = length(p);
-    var f = 0.0;
-    if d < range {
-        if kind == 1u {
-            f = (range - d) / range;
-        } else {
-            f = exp(-d / (range - d));
-        }
-    }
+    let f = fog_interpolant(globals.counts.x, globals.fog_color_range.w, length(p));
     return mix(globals.fog_color_range.rgb, color, f);
 }
 

@@ -86,7 +86,7 @@ impl<'d> Pipelines<'d> {
     pub fn new(device: &'d wgpu::Device, samples: u32, shading: Shading) -> Self {
         let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("x3d lighting"),
-            source: wgpu::ShaderSource::Wgsl(include_str!("../shader.wgsl").into()),
+            source: wgpu::ShaderSource::Wgsl(super::super::SHADER_WGSL.into()),
         });
         let uniform_entry = |dynamic: bool, size: usize| wgpu::BindGroupLayoutEntry {
             binding: 0,
@@ -291,7 +291,7 @@ mod tests {
     /// The shader parses and validates (naga, as wgpu does), without a GPU.
     #[test]
     fn the_shader_is_valid_wgsl() {
-        let source = include_str!("../shader.wgsl");
+        let source = crate::render::SHADER_WGSL;
         let module = naga::front::wgsl::parse_str(source)
             .unwrap_or_else(|e| panic!("{}", e.emit_to_string(source)));
         naga::valid::Validator::new(
