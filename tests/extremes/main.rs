@@ -3,4 +3,5 @@
 //! field's precision, and never make a rule panic or a report print NaN.
 
 mod parsing;
+mod ranges;
 mod support;
