@@ -2,6 +2,7 @@
 //! values one ulp either side of a range bound are read exactly, judged exactly at the
 //! field's precision, and never make a rule panic or a report print NaN.
 
+mod normals;
 mod parsing;
 mod ranges;
 mod support;

@@ -17,7 +17,9 @@ use x3dcheck::model::Value;
 use x3dcheck::schema::{schema, Version};
 use x3dcheck::validate::Level;
 
-use crate::support::{check, document, numbers, of, read, value_of, Encoding, NodeText, ENCODINGS};
+use crate::support::{
+    check, document, is_json_number, of, read, value_of, El, Encoding, ENCODINGS,
+};
 
 /// SFFloat and MFVec3f fields without a range, so that only the number itself is judged.
 const SF_FLOAT: (&str, &str) = ("TextureTransform", "rotation");
@@ -38,24 +40,6 @@ fn assert_unbounded((node, field): (&str, &str)) {
     }
 }
 
-/// Whether `text` is a JSON number (RFC 8259 grammar); the others are XML-only tokens.
-fn is_json_number(text: &str) -> bool {
-    let s = text.strip_prefix('-').unwrap_or(text);
-    let (mantissa, exponent) = match s.find(['e', 'E']) {
-        Some(at) => (&s[..at], Some(&s[at + 1..])),
-        None => (s, None),
-    };
-    let (int, fraction) = match mantissa.split_once('.') {
-        Some((i, f)) => (i, Some(f)),
-        None => (mantissa, None),
-    };
-    let digits = |d: &str| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit());
-    digits(int)
-        && (int == "0" || !int.starts_with('0'))
-        && fraction.is_none_or(digits)
-        && exponent.is_none_or(|e| digits(e.strip_prefix(['+', '-']).unwrap_or(e)))
-}
-
 /// The filler around the probed element of an MF value, and where the probe goes.
 const FILLER: &str = "0.5";
 const PROBE_AT: usize = 4;
@@ -66,8 +50,8 @@ const PROBE_AT: usize = 4;
 /// element indices.
 fn read_both<T>(
     text: &str,
-    sf: (&str, &str),
-    mf: (&str, &str),
+    sf: (&'static str, &'static str),
+    mf: (&'static str, &'static str),
     get: impl Fn(&Value, bool) -> Option<T>,
 ) -> Vec<(Encoding, bool, Option<T>, Vec<Option<usize>>, usize)> {
     let mut out = Vec::new();
@@ -84,18 +68,13 @@ fn read_both<T>(
             } else {
                 vec![text.to_string()]
             };
-            let fields = [(field, numbers(encoding, &tokens, !mf_case))];
             let source = document(
                 encoding,
                 Version::V4_0,
-                &NodeText {
-                    node,
-                    fields: &fields,
-                },
+                &[El::new(node).field(field, tokens)],
             );
             let doc = read(&source);
-            let value = value_of(&doc, node, field);
-            let probe = get(value, mf_case);
+            let probe = value_of(&doc, node, field).and_then(|v| get(v, mf_case));
             let report = check(&source, Level::Fast);
             let syntax = of(&report, "FIELD_VALUE_SYNTAX").len();
             let nonfinite = of(&report, "FIELD_VALUE_NONFINITE")
@@ -329,23 +308,16 @@ fn int32_text_at_the_extremes() {
                 } else {
                     vec![text.to_string()]
                 };
-                let fields = [(field, numbers(encoding, &tokens, !mf))];
                 let source = document(
                     encoding,
                     Version::V4_0,
-                    &NodeText {
-                        node,
-                        fields: &fields,
-                    },
+                    &[El::new(node).field(field, tokens)],
                 );
                 let place = format!("{text:?} in {encoding:?} (MF: {mf})");
                 let report = check(&source, Level::Fast);
                 let syntax = of(&report, "FIELD_VALUE_SYNTAX");
                 let doc = read(&source);
-                let stored = doc
-                    .nodes_of_type(node)
-                    .next()
-                    .and_then(|id| doc.node(id).value(field))
+                let stored = value_of(&doc, node, field)
                     .and_then(Value::as_int32s)
                     .map(|v| v[if mf { PROBE_AT } else { 0 }]);
                 match expected {
@@ -543,15 +515,7 @@ fn overflow_and_underflow_against_ranges() {
             if encoding == Encoding::Json && !is_json_number(text) {
                 continue;
             }
-            let fields = [(field, text.to_string())];
-            let source = document(
-                encoding,
-                version,
-                &NodeText {
-                    node,
-                    fields: &fields,
-                },
-            );
+            let source = document(encoding, version, &[El::new(node).field(field, [text])]);
             let report = check(&source, Level::Fast);
             let place = format!("{node}.{field} = {text} in X3D {version}, {encoding:?}");
             assert_eq!(

@@ -16,7 +16,7 @@ use proptest::prelude::*;
 use x3dcheck::schema::{schema, Bound, FieldDef, NodeDef, Scalar, Version};
 use x3dcheck::validate::Level;
 
-use crate::support::{check, document, numbers, of, Encoding, NodeText, ENCODINGS};
+use crate::support::{check, document, of, El, Encoding, ENCODINGS};
 
 const SEED_COMPONENTS: [&str; 4] = ["Rendering", "Shape", "Lighting", "Texturing"];
 
@@ -238,21 +238,8 @@ impl Slot {
 /// is false, once, at the slot, quoting the text.
 fn judge(case: &BoundCase, slot: &Slot, encoding: Encoding, text: &str, expect_in: bool) {
     let (rule, level) = case.rule();
-    let ty = case.field.ty;
-    let value = numbers(
-        encoding,
-        &slot.tokens(case, text),
-        !ty.is_mf() && ty.arity() == 1,
-    );
-    let fields = [(case.field.name, value)];
-    let source = document(
-        encoding,
-        case.version,
-        &NodeText {
-            node: case.node.name,
-            fields: &fields,
-        },
-    );
+    let node = El::new(case.node.name).field(case.field.name, slot.tokens(case, text));
+    let source = document(encoding, case.version, &[node]);
     let report = check(&source, level);
     let what = format!("{}: `{text}` in {encoding:?} at {slot:?}", case.name());
     for code in ["FIELD_VALUE_SYNTAX", "FIELD_VALUE_NONFINITE"] {

@@ -1,9 +1,9 @@
-//! Documents around one node or field, in both encodings, and what the checker says of them.
+//! Scenes written in both encodings, and what the checker says of them.
 
 use x3dcheck::config::CheckConfig;
 use x3dcheck::model::{Document, Value};
 use x3dcheck::report::{FileReport, Resolved};
-use x3dcheck::schema::Version;
+use x3dcheck::schema::{schema, Version};
 use x3dcheck::validate::Level;
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
@@ -14,49 +14,132 @@ pub enum Encoding {
 
 pub const ENCODINGS: [Encoding; 2] = [Encoding::Xml, Encoding::Json];
 
-/// A scene node of type `node` with field values already written in the encoding's
-/// syntax: `(name, text)`, the text an XML attribute value or a JSON value.
-pub struct NodeText<'a> {
-    pub node: &'a str,
-    pub fields: &'a [(&'a str, String)],
+/// A node to write: its fields as number (or boolean) tokens, and its child nodes by
+/// field name. Tokens go in as written, so a test controls every character of a number.
+#[derive(Clone, Debug)]
+pub struct El {
+    pub name: &'static str,
+    pub fields: Vec<(&'static str, Vec<String>)>,
+    pub children: Vec<(&'static str, El)>,
 }
 
-/// A whole document holding `node` at the top of the Scene.
-pub fn document(encoding: Encoding, version: Version, node: &NodeText) -> String {
-    match encoding {
-        Encoding::Xml => {
-            let attributes: String = node
-                .fields
-                .iter()
-                .map(|(name, text)| format!(" {name}='{text}'"))
-                .collect();
-            format!(
-                "<X3D profile='Full' version='{version}'><Scene><{}{attributes}/></Scene></X3D>",
-                node.node
-            )
+impl El {
+    pub fn new(name: &'static str) -> El {
+        El {
+            name,
+            fields: Vec::new(),
+            children: Vec::new(),
         }
-        Encoding::Json => {
-            let members: Vec<String> = node
-                .fields
-                .iter()
-                .map(|(name, text)| format!("\"@{name}\": {text}"))
-                .collect();
-            format!(
-                "{{\"X3D\": {{\"@profile\": \"Full\", \"@version\": \"{version}\", \"Scene\": {{\"-children\": [{{\"{}\": {{{}}}}}]}}}}}}",
-                node.node,
-                members.join(", ")
-            )
+    }
+
+    pub fn field<S: ToString>(
+        mut self,
+        name: &'static str,
+        tokens: impl IntoIterator<Item = S>,
+    ) -> El {
+        self.fields
+            .push((name, tokens.into_iter().map(|t| t.to_string()).collect()));
+        self
+    }
+
+    pub fn child(mut self, field: &'static str, child: El) -> El {
+        self.children.push((field, child));
+        self
+    }
+
+    fn xml(&self, out: &mut String) {
+        out.push('<');
+        out.push_str(self.name);
+        for (name, tokens) in &self.fields {
+            out.push_str(&format!(" {name}='{}'", tokens.join(" ")));
         }
+        if self.children.is_empty() {
+            out.push_str("/>");
+            return;
+        }
+        out.push('>');
+        for (_, child) in &self.children {
+            child.xml(out);
+        }
+        out.push_str(&format!("</{}>", self.name));
+    }
+
+    /// The JSON object of the node. Whether a value is an array, and whether a node field
+    /// holds one node or a list, comes from the schema of `version`.
+    fn json(&self, version: Version, out: &mut String) {
+        let def = schema(version)
+            .node(self.name)
+            .unwrap_or_else(|| panic!("no {} in X3D {version}", self.name));
+        let mut members = Vec::new();
+        for (name, tokens) in &self.fields {
+            let ty = def
+                .field(name)
+                .unwrap_or_else(|| panic!("no {}.{name} in X3D {version}", self.name))
+                .ty;
+            let value = if !ty.is_mf() && ty.arity() == 1 {
+                tokens.join(" ")
+            } else {
+                format!("[{}]", tokens.join(", "))
+            };
+            members.push(format!("\"@{name}\": {value}"));
+        }
+        let mut fields: Vec<&str> = Vec::new();
+        for (field, _) in &self.children {
+            if !fields.contains(field) {
+                fields.push(field);
+            }
+        }
+        for field in fields {
+            let many = def.field(field).is_some_and(|f| f.ty.is_mf());
+            let nodes: Vec<String> = self
+                .children
+                .iter()
+                .filter(|(f, _)| *f == field)
+                .map(|(_, child)| {
+                    let mut text = String::new();
+                    child.json(version, &mut text);
+                    text
+                })
+                .collect();
+            let value = if many {
+                format!("[{}]", nodes.join(", "))
+            } else {
+                nodes.join(", ")
+            };
+            members.push(format!("\"-{field}\": {value}"));
+        }
+        out.push_str(&format!(
+            "{{\"{}\": {{{}}}}}",
+            self.name,
+            members.join(", ")
+        ));
     }
 }
 
-/// A value of numbers as the encoding writes it: space-separated in XML, an array in
-/// JSON unless it is a single value of an SF type of arity 1 (`scalar`).
-pub fn numbers(encoding: Encoding, tokens: &[String], scalar: bool) -> String {
+/// A whole document with `nodes` at the top of its Scene.
+pub fn document(encoding: Encoding, version: Version, nodes: &[El]) -> String {
     match encoding {
-        Encoding::Xml => tokens.join(" "),
-        Encoding::Json if scalar => tokens[0].clone(),
-        Encoding::Json => format!("[{}]", tokens.join(", ")),
+        Encoding::Xml => {
+            let mut scene = String::new();
+            for node in nodes {
+                node.xml(&mut scene);
+            }
+            format!("<X3D profile='Full' version='{version}'><Scene>{scene}</Scene></X3D>")
+        }
+        Encoding::Json => {
+            let children: Vec<String> = nodes
+                .iter()
+                .map(|node| {
+                    let mut text = String::new();
+                    node.json(version, &mut text);
+                    text
+                })
+                .collect();
+            format!(
+                "{{\"X3D\": {{\"@profile\": \"Full\", \"@version\": \"{version}\", \"Scene\": {{\"-children\": [{}]}}}}}}",
+                children.join(", ")
+            )
+        }
     }
 }
 
@@ -67,8 +150,12 @@ pub fn config(level: Level) -> CheckConfig {
     }
 }
 
+pub fn check_with(source: &str, config: &CheckConfig) -> FileReport {
+    x3dcheck::check_source("extreme.x3d", source.as_bytes(), config)
+}
+
 pub fn check(source: &str, level: Level) -> FileReport {
-    x3dcheck::check_source("extreme.x3d", source.as_bytes(), &config(level))
+    check_with(source, &config(level))
 }
 
 /// The diagnostics of one code.
@@ -87,26 +174,34 @@ pub fn read(source: &str) -> Document {
         .unwrap_or_else(|| panic!("not a document: {source}"))
 }
 
-/// The value the first node of type `node` holds for `field`.
-pub fn value_of<'d>(doc: &'d Document, node: &str, field: &str) -> &'d Value {
-    let id = doc
-        .nodes_of_type(node)
-        .next()
-        .unwrap_or_else(|| panic!("no {node}"));
-    doc.node(id)
-        .value(field)
-        .unwrap_or_else(|| panic!("{node}.{field} is not set"))
+/// The value the first node of type `node` holds for `field`, if it holds one.
+pub fn value_of<'d>(doc: &'d Document, node: &str, field: &str) -> Option<&'d Value> {
+    let id = doc.nodes_of_type(node).next()?;
+    doc.node(id).value(field)
 }
 
-/// Words of a text (letters and digits), to look for `NaN` and `inf` as words.
-pub fn words(text: &str) -> impl Iterator<Item = &str> {
-    text.split(|c: char| !c.is_ascii_alphanumeric())
-        .filter(|w| !w.is_empty())
+/// Whether `text` is a JSON number (RFC 8259 grammar); the others are XML-only tokens.
+pub fn is_json_number(text: &str) -> bool {
+    let s = text.strip_prefix('-').unwrap_or(text);
+    let (mantissa, exponent) = match s.find(['e', 'E']) {
+        Some(at) => (&s[..at], Some(&s[at + 1..])),
+        None => (s, None),
+    };
+    let (int, fraction) = match mantissa.split_once('.') {
+        Some((i, f)) => (i, Some(f)),
+        None => (mantissa, None),
+    };
+    let digits = |d: &str| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit());
+    digits(int)
+        && (int == "0" || !int.starts_with('0'))
+        && fraction.is_none_or(digits)
+        && exponent.is_none_or(|e| digits(e.strip_prefix(['+', '-']).unwrap_or(e)))
 }
 
-/// Whether a text spells a non-finite number the way Rust, C or JSON tools print one.
+/// Whether a text spells a non-finite number the way Rust, C or JSON tools print one
+/// (`NaN`, `inf`, `-inf`, `Infinity`), as a word of its own.
 pub fn has_non_finite_word(text: &str) -> bool {
-    words(text).any(|w| {
+    text.split(|c: char| !c.is_ascii_alphanumeric()).any(|w| {
         ["nan", "inf", "infinity"]
             .iter()
             .any(|bad| w.eq_ignore_ascii_case(bad))
