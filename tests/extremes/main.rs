@@ -6,3 +6,4 @@ mod normals;
 mod parsing;
 mod ranges;
 mod support;
+mod triangles;
