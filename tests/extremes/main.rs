@@ -6,4 +6,5 @@ mod normals;
 mod parsing;
 mod ranges;
 mod support;
+mod transforms;
 mod triangles;
