@@ -5,6 +5,7 @@
 mod normals;
 mod parsing;
 mod ranges;
+mod reports;
 mod support;
 mod transforms;
 mod triangles;
