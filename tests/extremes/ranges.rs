@@ -331,64 +331,139 @@ fn light_intensity_differs_between_versions() {
     }
 }
 
-/// The f32 values a decimal text of a Single-precision case may round to, with the
-/// decision each gets.
-fn single_decisions(case: &BoundCase) -> Vec<(f32, bool)> {
+/// The values at, inside and outside a bound of a floating-point case, as f64 (exact for
+/// f32 too), with their decisions.
+fn float_decisions(case: &BoundCase) -> Vec<(f64, bool)> {
     [Place::At, Place::Inside, Place::Outside]
         .into_iter()
-        .map(|p| match probe(case, p) {
-            Number::Single(x) => (x, in_range(case, p)),
-            other => panic!("{other:?}"),
+        .filter_map(|p| {
+            let x = match probe(case, p) {
+                Number::Single(x) => f64::from(x),
+                Number::Double(x) => x,
+                Number::Int(_) => return None,
+            };
+            Some((x, in_range(case, p)))
         })
         .collect()
 }
 
-fn single_cases() -> Vec<BoundCase> {
-    Version::ALL
-        .into_iter()
-        .flat_map(bound_cases)
-        .filter(|c| c.field.ty.scalar() == Scalar::Float)
+/// The digits of |x| in positional notation with `FRACTION` decimals: exact for every
+/// f64 (the smallest subnormal has 1074).
+const FRACTION: usize = 1100;
+
+fn fixed_digits(x: f64) -> Vec<u8> {
+    format!("{:.FRACTION$}", x.abs())
+        .bytes()
+        .filter(u8::is_ascii_digit)
+        .map(|b| b - b'0')
         .collect()
 }
 
-/// The exact decimal expansion of an f64 (every one is a finite decimal), in exponent
-/// notation without trailing zeros.
-fn exact_decimal(x: f64) -> String {
-    let text = format!("{x:.1100e}");
-    let (mantissa, exponent) = text.split_once('e').unwrap();
-    let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
-    assert!(mantissa.len() < 1000, "{x:e} needs more digits");
-    format!("{mantissa}e{exponent}")
+/// The exact midpoint of two neighbouring floats (f64, or f32 widened) as decimal text,
+/// and texts just below and just above it in magnitude: the digits are summed and halved
+/// as decimals, so no rounding is involved.
+fn midpoint_texts(a: f64, b: f64) -> [String; 3] {
+    let (mut x, mut y) = (fixed_digits(a), fixed_digits(b));
+    let width = x.len().max(y.len()) + 1;
+    for v in [&mut x, &mut y] {
+        v.splice(0..0, std::iter::repeat_n(0, width - v.len()));
+    }
+    // Sum, then halve, most significant digit first; the sum of two integers in units of
+    // 10^-FRACTION may be odd, which the halving carries into one more digit.
+    let mut sum = vec![0u8; width];
+    let mut carry = 0;
+    for i in (0..width).rev() {
+        let d = x[i] + y[i] + carry;
+        sum[i] = d % 10;
+        carry = d / 10;
+    }
+    sum.push(0);
+    let mut half = Vec::with_capacity(sum.len());
+    let mut remainder = 0;
+    for d in sum {
+        let v = remainder * 10 + d;
+        half.push(v / 2);
+        remainder = v % 2;
+    }
+    let point = width - FRACTION;
+    let int: String = half[..point].iter().map(|d| char::from(b'0' + d)).collect();
+    let fraction: String = half[point..].iter().map(|d| char::from(b'0' + d)).collect();
+    let int = int.trim_start_matches('0');
+    let fraction = fraction.trim_end_matches('0');
+    let sign = if a < 0.0 || b < 0.0 { "-" } else { "" };
+    let exact = format!(
+        "{sign}{}.{}",
+        if int.is_empty() { "0" } else { int },
+        if fraction.is_empty() { "0" } else { fraction }
+    );
+    // The midpoint is never a short decimal: cutting its last digit lowers the magnitude,
+    // appending a 1 raises it.
+    let below = exact[..exact.len() - 1].to_string();
+    let above = format!("{exact}1");
+    [below, exact, above]
+}
+
+#[test]
+fn midpoints_are_exact() {
+    let [below, exact, above] = midpoint_texts(1.0, f64::from(1.0f32.next_up()));
+    assert_eq!(exact, "1.000000059604644775390625");
+    assert_eq!(
+        (below.as_str(), above.as_str()),
+        ("1.00000005960464477539062", "1.0000000596046447753906251")
+    );
+    let [below, exact, above] = midpoint_texts(0.0, -f64::from_bits(1));
+    assert!(exact.starts_with("-0.000") && exact.ends_with("4703282292062327208828439643411068618252990130716238221279284125033775363510437593264991818081799618989828234772285886546332835517796989819938739800539093906315035659515570226392290858392449105184435931802849936536152500319370457678249219365623669863658480757001585769269903706311928279558551332927834338409351978015531246597263579574622766465272827220056374006485499977096599470454020828166226237857393450736339007967761930577506740176324673600968951340535537458516661134223766678604162159680461914467291840300530057530849048765391711386591646239524912623653881879636239373280423891018672348497668235089863388587925628302755995657524455507255189313690836254779186948667994968324049705821028513185451396213837722826145437693412532098591327667236328125"));
+    // 2^-1075: a tie, to even (-0); a hair either side rounds either way.
+    assert_eq!(exact.parse::<f64>().unwrap().to_bits(), (-0.0f64).to_bits());
+    assert_eq!(below.parse::<f64>().unwrap().to_bits(), (-0.0f64).to_bits());
+    assert_eq!(above.parse::<f64>().unwrap(), -f64::from_bits(1));
+}
+
+fn float_cases() -> Vec<BoundCase> {
+    Version::ALL
+        .into_iter()
+        .flat_map(bound_cases)
+        .filter(|c| matches!(c.field.ty.scalar(), Scalar::Float | Scalar::Double))
+        .collect()
 }
 
 /// Text at, just below and just above the midpoints between the value at the bound and
-/// its neighbours: each rounds to the f32 the standard library says, and is judged as that
-/// value. At an exact midpoint, ties go to the even neighbour.
+/// its neighbours, for f32 and f64 fields: each is judged as the value the standard
+/// library rounds it to at the field's precision. At an exact midpoint, ties go to the
+/// even neighbour, which for a bound at 0 is 0 itself.
 #[test]
 fn text_around_the_rounding_midpoints() {
     let mut random = SplitMix(1_000_003);
-    for case in single_cases() {
+    let mut ties = 0;
+    for case in float_cases() {
         let slot = Slot::pick(&case, &mut random);
-        let decisions = single_decisions(&case);
+        let decisions = float_decisions(&case);
+        let single = case.field.ty.scalar() == Scalar::Float;
         let at = decisions[0].0;
-        for neighbour in [at.next_up(), at.next_down()] {
-            let mid = (f64::from(at) + f64::from(neighbour)) / 2.0; // exact
-            let texts = [
-                format!("{:e}", mid.next_down()),
-                format!("{:e}", mid.next_up()),
-                exact_decimal(mid),
-            ];
-            for text in texts {
-                let rounded: f32 = text.parse().unwrap();
+        let neighbours = if single {
+            let at = at as f32;
+            [at.next_up(), at.next_down()].map(f64::from)
+        } else {
+            [at.next_up(), at.next_down()]
+        };
+        for neighbour in neighbours {
+            for text in midpoint_texts(at, neighbour) {
+                let rounded = if single {
+                    f64::from(text.parse::<f32>().unwrap())
+                } else {
+                    text.parse::<f64>().unwrap()
+                };
                 let Some(&(_, expect_in)) = decisions.iter().find(|(x, _)| *x == rounded) else {
                     continue;
                 };
+                ties += 1;
                 for encoding in ENCODINGS {
                     judge(&case, &slot, encoding, &text, expect_in);
                 }
             }
         }
     }
+    assert!(ties > 0);
 }
 
 proptest! {
@@ -405,9 +480,13 @@ proptest! {
         digits in 8usize..17,
         seed in any::<u64>(),
     ) {
-        let cases = single_cases();
+        let cases: Vec<BoundCase> = float_cases()
+            .into_iter()
+            .filter(|c| c.field.ty.scalar() == Scalar::Float)
+            .collect();
         let case = cases[pick.index(cases.len())];
-        let (x, expect_in) = single_decisions(&case)[place];
+        let (x, expect_in) = float_decisions(&case)[place];
+        let x = x as f32;
         let (low, high) = (f64::from(x.next_down()), f64::from(x.next_up()));
         let x64 = f64::from(x);
         // A point strictly inside the interval that rounds to x: between the midpoints.
