@@ -44,7 +44,7 @@ mod tests {
         assert_eq!(readable(2.0), "2");
         assert_eq!(readable(-1.5), "-1.5");
         assert_eq!(readable(-0.0), "0");
-        assert_eq!(readable(39.000000000000004), "39");
+        assert_eq!(readable(39f64.next_up()), "39");
         // What the f32 holds, not the decimal it was written as.
         assert_eq!(readable(f64::from(1.0100001f32)), "1.0100001");
         assert_eq!(readable(f64::from(0.1f32)), "0.1");

@@ -44,29 +44,37 @@ fn assert_unbounded((node, field): (&str, &str)) {
 const FILLER: &str = "0.5";
 const PROBE_AT: usize = 4;
 
+/// One reading of a text: where it went, what the model stored (widened to f64, which is
+/// exact for f32 and keeps the sign of zero), and what the fast rules said.
+struct Reading {
+    place: String,
+    index: usize,
+    stored: Option<f64>,
+    nonfinite: Vec<Option<usize>>,
+    syntax: usize,
+}
+
 /// Reads `text` as the whole SF value of `sf` and as element `PROBE_AT` of the MF value of
-/// `mf` (arity `mf_arity`), in every encoding where it is a number; returns per case the
-/// encoding, the stored scalar (through `get`) and the FIELD_VALUE_NONFINITE diagnostics'
-/// element indices.
-fn read_both<T>(
+/// `mf`, in every encoding where it is a number.
+fn readings(
     text: &str,
     sf: (&'static str, &'static str),
     mf: (&'static str, &'static str),
-    get: impl Fn(&Value, bool) -> Option<T>,
-) -> Vec<(Encoding, bool, Option<T>, Vec<Option<usize>>, usize)> {
+    get: impl Fn(&Value, usize) -> Option<f64>,
+) -> Vec<Reading> {
     let mut out = Vec::new();
     for encoding in ENCODINGS {
         if encoding == Encoding::Json && !is_json_number(text) {
             continue;
         }
-        for mf_case in [false, true] {
-            let (node, field) = if mf_case { mf } else { sf };
-            let tokens: Vec<String> = if mf_case {
+        for is_mf in [false, true] {
+            let (node, field) = if is_mf { mf } else { sf };
+            let (tokens, index) = if is_mf {
                 let mut t = vec![FILLER.to_string(); 9];
                 t[PROBE_AT] = text.to_string();
-                t
+                (t, PROBE_AT)
             } else {
-                vec![text.to_string()]
+                (vec![text.to_string()], 0)
             };
             let source = document(
                 encoding,
@@ -74,77 +82,52 @@ fn read_both<T>(
                 &[El::new(node).field(field, tokens)],
             );
             let doc = read(&source);
-            let probe = value_of(&doc, node, field).and_then(|v| get(v, mf_case));
             let report = check(&source, Level::Fast);
-            let syntax = of(&report, "FIELD_VALUE_SYNTAX").len();
-            let nonfinite = of(&report, "FIELD_VALUE_NONFINITE")
-                .iter()
-                .map(|d| d.index)
-                .collect();
-            out.push((encoding, mf_case, probe, nonfinite, syntax));
+            out.push(Reading {
+                place: format!("{text:?} in {encoding:?} {node}.{field}"),
+                index,
+                stored: value_of(&doc, node, field).and_then(|v| get(v, index)),
+                nonfinite: of(&report, "FIELD_VALUE_NONFINITE")
+                    .iter()
+                    .map(|d| d.index)
+                    .collect(),
+                syntax: of(&report, "FIELD_VALUE_SYNTAX").len(),
+            });
         }
     }
     out
 }
 
-fn f32_at(value: &Value, mf: bool) -> Option<u32> {
-    let v = value.as_floats()?;
-    v.get(if mf { PROBE_AT } else { 0 }).map(|x| x.to_bits())
+/// Checks that every reading of `text` stored `expected` (bit for bit, or NaN) and was
+/// reported non-finite exactly when it is, at the right element.
+fn expect(readings: Vec<Reading>, expected: f64) {
+    for r in readings {
+        let place = &r.place;
+        assert_eq!(r.syntax, 0, "{place}: FIELD_VALUE_SYNTAX");
+        let stored = r.stored.unwrap_or_else(|| panic!("{place}: not stored"));
+        assert!(
+            stored.to_bits() == expected.to_bits() || stored.is_nan() && expected.is_nan(),
+            "{place}: stored {stored:e}, expected {expected:e}"
+        );
+        let reports = if expected.is_finite() {
+            vec![]
+        } else {
+            vec![Some(r.index)]
+        };
+        assert_eq!(r.nonfinite, reports, "{place}: FIELD_VALUE_NONFINITE");
+    }
 }
 
-fn f64_at(value: &Value, mf: bool) -> Option<u64> {
-    let v = value.as_doubles()?;
-    v.get(if mf { PROBE_AT } else { 0 }).map(|x| x.to_bits())
-}
-
-/// Checks one text in an SFFloat and an MFVec3f: stored as `expected`, and reported as
-/// non-finite exactly when it is, at the right element.
+/// `text` in an SFFloat and an MFVec3f.
 fn expect_f32(text: &str, expected: f32) {
-    for (encoding, mf, stored, nonfinite, syntax) in read_both(text, SF_FLOAT, MF_FLOAT, f32_at) {
-        {
-            let place = format!("{text:?} in {encoding:?} (MF: {mf})");
-            assert_eq!(syntax, 0, "{place}: FIELD_VALUE_SYNTAX");
-            let stored = f32::from_bits(stored.unwrap_or_else(|| panic!("{place}: not stored")));
-            assert!(
-                stored.to_bits() == expected.to_bits() || stored.is_nan() && expected.is_nan(),
-                "{place}: stored {stored:e}, expected {expected:e}"
-            );
-            let index = if mf { PROBE_AT } else { 0 };
-            let expected_reports: Vec<Option<usize>> = if expected.is_finite() {
-                vec![]
-            } else {
-                vec![Some(index)]
-            };
-            assert_eq!(
-                nonfinite, expected_reports,
-                "{place}: FIELD_VALUE_NONFINITE"
-            );
-        }
-    }
+    let get = |v: &Value, i: usize| v.as_floats()?.get(i).map(|x| f64::from(*x));
+    expect(readings(text, SF_FLOAT, MF_FLOAT, get), f64::from(expected));
 }
 
+/// `text` in an SFTime and an MFVec3d.
 fn expect_f64(text: &str, expected: f64) {
-    for (encoding, mf, stored, nonfinite, syntax) in read_both(text, SF_DOUBLE, MF_DOUBLE, f64_at) {
-        {
-            let place = format!("{text:?} in {encoding:?} (MF: {mf})");
-            assert_eq!(syntax, 0, "{place}: FIELD_VALUE_SYNTAX");
-            let stored = f64::from_bits(stored.unwrap_or_else(|| panic!("{place}: not stored")));
-            assert!(
-                stored.to_bits() == expected.to_bits() || stored.is_nan() && expected.is_nan(),
-                "{place}: stored {stored:e}, expected {expected:e}"
-            );
-            let index = if mf { PROBE_AT } else { 0 };
-            let expected_reports: Vec<Option<usize>> = if expected.is_finite() {
-                vec![]
-            } else {
-                vec![Some(index)]
-            };
-            assert_eq!(
-                nonfinite, expected_reports,
-                "{place}: FIELD_VALUE_NONFINITE"
-            );
-        }
-    }
+    let get = |v: &Value, i: usize| v.as_doubles()?.get(i).copied();
+    expect(readings(text, SF_DOUBLE, MF_DOUBLE, get), expected);
 }
 
 #[test]

@@ -257,7 +257,7 @@ proptest! {
     ) {
         let scene = scene(version, FLOATS, &choices);
         for encoding in ENCODINGS {
-            let source = document(encoding, version, &[scene.clone()]);
+            let source = document(encoding, version, std::slice::from_ref(&scene));
             for config in configs() {
                 let report = check_with(&source, &config);
                 check_outputs(&report, &source, &[])?;
