@@ -516,6 +516,18 @@ fn overflow_and_underflow_against_ranges() {
     }
 }
 
+/// A number in one of Rust's three notations: exponent, debug and shortest positional.
+fn written<T: std::fmt::LowerExp + std::fmt::Debug + std::fmt::Display>(
+    x: T,
+    notation: usize,
+) -> String {
+    match notation {
+        0 => format!("{x:e}"),
+        1 => format!("{x:?}"),
+        _ => format!("{x}"),
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 
@@ -524,23 +536,13 @@ proptest! {
     #[test]
     fn any_f32_reads_back_exactly(bits in any::<u32>(), notation in 0usize..3) {
         let x = f32::from_bits(bits);
-        let text = match notation {
-            0 => format!("{x:e}"),
-            1 => format!("{x:?}"),
-            _ => format!("{x}"),
-        };
-        expect_f32(&text, x);
+        expect_f32(&written(x, notation), x);
     }
 
     #[test]
     fn any_f64_reads_back_exactly(bits in any::<u64>(), notation in 0usize..3) {
         let x = f64::from_bits(bits);
-        let text = match notation {
-            0 => format!("{x:e}"),
-            1 => format!("{x:?}"),
-            _ => format!("{x}"),
-        };
-        expect_f64(&text, x);
+        expect_f64(&written(x, notation), x);
     }
 
     /// Decimal text near f32::MAX, the subnormal range and zero: stored as std rounds it.
