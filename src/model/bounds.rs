@@ -165,13 +165,26 @@ impl Affine {
 
     /// The largest factor by which the map stretches a length (its largest singular
     /// value), from the eigenvalues of LᵀL in closed form; never below the true value by
-    /// more than rounding.
+    /// more than rounding. L is divided by its largest entry first, so that LᵀL neither
+    /// overflows (entries beyond 1e154, from nested scales) nor underflows; ∞ when the
+    /// stretch itself is beyond f64, NaN for a non-finite map.
     pub fn max_stretch(&self) -> f64 {
-        let l = &self.linear;
+        if !self.is_finite() {
+            return f64::NAN;
+        }
+        let largest = self
+            .linear
+            .iter()
+            .flatten()
+            .fold(0.0f64, |m, v| m.max(v.abs()));
+        if largest == 0.0 {
+            return 0.0;
+        }
+        let l = self.linear.map(|row| row.map(|v| v / largest));
         let m: [[f64; 3]; 3] = std::array::from_fn(|r| {
             std::array::from_fn(|c| (0..3).map(|k| l[k][r] * l[k][c]).sum())
         });
-        largest_symmetric_eigenvalue(&m).max(0.0).sqrt()
+        largest * largest_symmetric_eigenvalue(&m).max(0.0).sqrt()
     }
 }
 
@@ -269,15 +282,18 @@ pub fn local_transform(doc: &Document, node: NodeId) -> Option<Affine> {
             _ => default,
         }
     };
+    // A non-finite axis would make `Affine::rotate` the identity (it has no direction):
+    // NaN instead, so that the transform is unknown like any other with a non-finite value.
     let rotation = |field: &str| -> Affine {
         match doc
             .value_of(node, field)
             .as_deref()
             .and_then(Value::as_floats)
         {
-            Some(v) if v.len() >= 4 => {
+            Some(v) if v.len() >= 4 && v[..4].iter().all(|c| c.is_finite()) => {
                 Affine::rotate([v[0], v[1], v[2]].map(f64::from), f64::from(v[3]))
             }
+            Some(v) if v.len() >= 4 => Affine::scale([f64::NAN; 3]),
             _ => Affine::IDENTITY,
         }
     };

@@ -294,17 +294,64 @@ fn int32(text: &[u8], integer_syntax: bool) -> Result<i32, String> {
         let v = if negative { -magnitude } else { magnitude };
         return i32::try_from(v).or_else(|_| out_of_range());
     }
-    let v = parse_f64(text).unwrap_or(f64::NAN);
-    if v.fract() != 0.0 || !v.is_finite() {
-        Err(format!(
+    match whole_number(text) {
+        Some(v) => i32::try_from(v).or_else(|_| out_of_range()),
+        None => Err(format!(
             "whole numbers only, found {}",
             String::from_utf8_lossy(text)
-        ))
-    } else if v < i32::MIN as f64 || v > i32::MAX as f64 {
-        out_of_range()
-    } else {
-        Ok(v as i32)
+        )),
     }
+}
+
+/// The value of a JSON number's text when it is a whole number, saturated at ±i64::MAX;
+/// None when it has a non-zero fractional part. Decided on the decimal digits themselves:
+/// through f64, `1.00000000000000000001` and `1e-400` would round to whole numbers.
+fn whole_number(text: &[u8]) -> Option<i64> {
+    let (negative, rest) = match text.split_first() {
+        Some((b'-', rest)) => (true, rest),
+        _ => (false, text),
+    };
+    let (mantissa, exponent) = match rest.iter().position(|&b| b | 0x20 == b'e') {
+        Some(at) => (&rest[..at], &rest[at + 1..]),
+        None => (rest, &[][..]),
+    };
+    let (int, fraction) = match mantissa.iter().position(|&b| b == b'.') {
+        Some(at) => (&mantissa[..at], &mantissa[at + 1..]),
+        None => (mantissa, &[][..]),
+    };
+    let (exponent_negative, exponent) = match exponent.split_first() {
+        Some((b'-', rest)) => (true, rest),
+        Some((b'+', rest)) => (false, rest),
+        _ => (false, exponent),
+    };
+    // Saturated far beyond any digit count an input can hold.
+    let exponent = exponent.iter().fold(0i64, |e, &d| {
+        (e * 10 + i64::from(d.wrapping_sub(b'0'))).min(1 << 40)
+    });
+    // Digits before `point` (counted from the first digit) are the integer part.
+    let point = int.len() as i64
+        + if exponent_negative {
+            -exponent
+        } else {
+            exponent
+        };
+    let mut magnitude: i64 = 0;
+    let mut k: i64 = 0;
+    for &d in int.iter().chain(fraction) {
+        let d = i64::from(d.wrapping_sub(b'0'));
+        if k < point {
+            magnitude = magnitude.saturating_mul(10).saturating_add(d);
+        } else if d != 0 {
+            return None;
+        }
+        k += 1;
+    }
+    // The zeros the exponent adds after the last digit (a few suffice to saturate).
+    while k < point && magnitude != 0 && magnitude != i64::MAX {
+        magnitude = magnitude.saturating_mul(10);
+        k += 1;
+    }
+    Some(if negative { -magnitude } else { magnitude })
 }
 
 fn float32(text: &[u8], _: bool) -> Result<f32, String> {
@@ -463,21 +510,19 @@ fn image_int(
     }
     let text = tree.raw(e);
     let v = if item.flags & NOT_INTEGER == 0 {
-        text.parse::<i64>().ok()
+        // Saturated like `whole_number`: too long is out of range, not malformed.
+        Some(text.parse::<i64>().unwrap_or(if text.starts_with('-') {
+            i64::MIN
+        } else {
+            i64::MAX
+        }))
     } else {
-        parse_f64(text.as_bytes())
-            .filter(|v| v.fract() == 0.0 && v.abs() < 1e18)
-            .map(|v| v as i64)
+        whole_number(text.as_bytes())
     };
     let Some(v) = v else {
-        if item.flags & NOT_INTEGER != 0
-            && parse_f64(text.as_bytes()).is_some_and(|v| v.fract() != 0.0)
-        {
-            return Err(error(format!(
-                "{ty} takes whole numbers, found {text} as a {what}"
-            )));
-        }
-        return Err(error(format!("{text} is out of range for an {ty} {what}")));
+        return Err(error(format!(
+            "{ty} takes whole numbers, found {text} as a {what}"
+        )));
     };
     let (min, max) = if header {
         (i32::MIN as i64, i32::MAX as i64)
@@ -564,6 +609,43 @@ mod tests {
         assert!(err("1e300", FieldType::SFInt32)
             .message
             .contains("out of range"));
+        assert!(err("1e400", FieldType::SFInt32)
+            .message
+            .contains("out of range"));
+        // Whole or not is decided on the digits, not on the nearest f64.
+        for text in ["1.00000000000000000001", "2147483647.0000000001", "1e-400"] {
+            let e = err(text, FieldType::SFInt32);
+            assert!(
+                e.message.contains("whole numbers only"),
+                "{text}: {}",
+                e.message
+            );
+        }
+        assert_eq!(
+            conv("21474836470e-1", FieldType::SFInt32),
+            Ok(Value::Int32s(vec![i32::MAX]))
+        );
+        assert_eq!(
+            conv("-0.21474836480000e10", FieldType::SFInt32),
+            Ok(Value::Int32s(vec![i32::MIN]))
+        );
+    }
+
+    #[test]
+    fn whole_numbers_from_their_digits() {
+        let whole = |t: &str| whole_number(t.as_bytes());
+        assert_eq!(whole("0"), Some(0));
+        assert_eq!(whole("-0.0e5"), Some(0));
+        assert_eq!(whole("12.50e1"), Some(125));
+        assert_eq!(whole("12.51e1"), None);
+        assert_eq!(whole("1e18"), Some(1_000_000_000_000_000_000));
+        assert_eq!(whole("1e99999999999999999999"), Some(i64::MAX));
+        assert_eq!(whole("-1e99999999999999999999"), Some(-i64::MAX));
+        assert_eq!(whole("0e99999999999999999999"), Some(0));
+        assert_eq!(whole("1e-99999999999999999999"), None);
+        assert_eq!(whole("0.000e-99999999999999999999"), Some(0));
+        assert_eq!(whole("100e-2"), Some(1));
+        assert_eq!(whole("101e-2"), None);
     }
 
     #[test]

@@ -5,6 +5,7 @@
 pub mod document;
 pub mod events;
 pub mod lighting;
+pub mod numbers;
 mod registry;
 pub mod rendering;
 mod rule;

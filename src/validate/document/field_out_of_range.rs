@@ -17,8 +17,12 @@ crate::declare_rule! {
     /// Values are compared at the field's precision: SFFloat-based values as the f32 the
     /// text rounds to, against the bound rounded to f32 (so `1.570796327` passes a
     /// (0,π/2] bound and `1.571` does not); SFDouble and SFTime values in f64; integers
-    /// exactly. NaN is never in range; -0 equals 0. Geometry index fields (`coordIndex`,
-    /// `index`, …) are INDEX_NEGATIVE's: it knows the -1 separator.
+    /// exactly. NaN is never in range; -0 equals 0. Text beyond the precision's largest
+    /// finite value rounds to an infinity: FIELD_VALUE_NONFINITE, and outside the range
+    /// too when the range has a finite bound on that side (`1e39` is outside [0,1], not
+    /// outside [0,∞)). Text below half the smallest subnormal rounds to a zero (`1e-46`
+    /// is outside (0,∞) in an SFFloat, inside it in an SFDouble). Geometry index fields
+    /// (`coordIndex`, `index`, …) are INDEX_NEGATIVE's: it knows the -1 separator.
     ///
     /// ## Why it matters
     /// Browsers clamp, wrap or reject out-of-range values, each differently, so the scene

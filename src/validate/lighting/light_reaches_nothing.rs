@@ -6,6 +6,7 @@ use super::is_positional_light;
 use crate::model::bounds::{self, Affine, Bounds};
 use crate::model::NodeId;
 use crate::report::Diagnostic;
+use crate::validate::numbers::readable;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -101,7 +102,7 @@ fn check(ctx: &mut Ctx) {
     for (id, short) in found {
         let node = doc.node(id);
         let span = node.entry("radius").map_or(node.name_span, |e| e.span);
-        let message = if short.is_infinite() {
+        let message = if shapes.is_empty() {
             format!(
                 "{}: the scene has no shape for it to light",
                 node.type_name()
@@ -110,7 +111,7 @@ fn check(ctx: &mut Ctx) {
             format!(
                 "{} reaches no shape: its radius falls {} short of the nearest shape's bounds",
                 node.type_name(),
-                short_number(short)
+                readable(short)
             )
         };
         ctx.report(Diagnostic::new(&LIGHT_REACHES_NOTHING, span, message).node(id));
@@ -133,16 +134,6 @@ fn reach(doc: &crate::model::Document, light: NodeId, to_world: &Affine) -> Opti
 fn distance_to_box(p: [f64; 3], b: &Bounds) -> f64 {
     let d: [f64; 3] = std::array::from_fn(|i| (b.min[i] - p[i]).max(p[i] - b.max[i]).max(0.0));
     d[0].hypot(d[1]).hypot(d[2])
-}
-
-/// A distance for a message: a few significant digits.
-fn short_number(value: f64) -> String {
-    if !(1e-3..1e6).contains(&value.abs()) && value != 0.0 {
-        return format!("{value:.3e}");
-    }
-    let text = format!("{value:.4}");
-    let text = text.trim_end_matches('0').trim_end_matches('.');
-    text.to_string()
 }
 
 #[cfg(test)]

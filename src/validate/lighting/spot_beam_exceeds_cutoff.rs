@@ -1,13 +1,15 @@
 //! SPOT_BEAM_EXCEEDS_CUTOFF: a SpotLight whose beamWidth is wider than its cutOffAngle.
 
 use crate::report::Diagnostic;
+use crate::validate::numbers::readable;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
     /// ## What it does
     /// Reports a SpotLight whose effective `beamWidth` is greater than its effective
     /// `cutOffAngle` (defaults π/4 and π/2), compared as the f32 values the fields hold.
-    /// Only SpotLights that set at least one of the two fields are checked.
+    /// Only SpotLights that set at least one of the two fields are checked; NaN and
+    /// infinities are left to FIELD_VALUE_NONFINITE.
     ///
     /// ## Why it matters
     /// 17.4.4: "If the beamWidth is greater than the cutOffAngle, beamWidth is defined to be
@@ -50,7 +52,8 @@ fn check(ctx: &mut Ctx) {
         else {
             continue;
         };
-        if beam > cutoff {
+        // A non-finite value is FIELD_VALUE_NONFINITE's: it has no order to judge.
+        if beam > cutoff && beam.is_finite() && cutoff.is_finite() {
             let span = beam_entry
                 .or(cutoff_entry)
                 .map_or(node.name_span, |e| e.span);
@@ -58,7 +61,9 @@ fn check(ctx: &mut Ctx) {
                 &SPOT_BEAM_EXCEEDS_CUTOFF,
                 span,
                 format!(
-                    "SpotLight.beamWidth {beam} is greater than cutOffAngle {cutoff}: it is treated as equal, so the light has no soft edge"
+                    "SpotLight.beamWidth {} is greater than cutOffAngle {}: it is treated as equal, so the light has no soft edge",
+                    readable(beam.into()),
+                    readable(cutoff.into())
                 ),
             )
             .node(id);

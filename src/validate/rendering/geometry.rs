@@ -381,8 +381,9 @@ pub fn counted(doc: &Document) -> impl Iterator<Item = (NodeId, Counted<'_>)> {
 }
 
 /// Reports every Normal vector that `judge` (given its f64 length) finds fault with, as
-/// "Normal.vector[k] = x y z <what judge says>", folded per Normal node. Non-finite
-/// vectors are skipped: FIELD_VALUE_NONFINITE reports them.
+/// "Normal.vector[k] = x y z <what judge says>" with the vector as the document writes it,
+/// folded per Normal node. Non-finite vectors are skipped: FIELD_VALUE_NONFINITE reports
+/// them.
 pub fn each_normal(ctx: &mut Ctx, rule: &'static Rule, judge: impl Fn(f64) -> Option<String>) {
     let doc = ctx.doc;
     for id in doc.nodes_of_type("Normal") {
@@ -396,7 +397,8 @@ pub fn each_normal(ctx: &mut Ctx, rule: &'static Rule, judge: impl Fn(f64) -> Op
         let Some(values) = entry.value.as_floats() else {
             continue;
         };
-        let mut spans = ScalarSpans::new(ctx.source, entry);
+        let source = ctx.source;
+        let mut spans = ScalarSpans::new(source, entry);
         for (k, v) in values.chunks_exact(3).enumerate() {
             if !v.iter().all(|c| c.is_finite()) {
                 continue;
@@ -405,14 +407,12 @@ pub fn each_normal(ctx: &mut Ctx, rule: &'static Rule, judge: impl Fn(f64) -> Op
                 continue;
             };
             ctx.report_repeated(rule, id, "vector", k, || {
-                let text = format!("{} {} {}", v[0], v[1], v[2]);
-                Diagnostic::new(
-                    rule,
-                    spans.span_of(3 * k, 3 * k + 2),
-                    format!("Normal.vector[{k}] = {text} {what}"),
-                )
-                .node(id)
-                .value(text)
+                let span = spans.span_of(3 * k, 3 * k + 2);
+                let text = String::from_utf8_lossy(source.get(span.range()).unwrap_or_default())
+                    .into_owned();
+                Diagnostic::new(rule, span, format!("Normal.vector[{k}] = {text} {what}"))
+                    .node(id)
+                    .value(text)
             });
         }
     }

@@ -1,6 +1,7 @@
 //! NORMAL_NOT_UNIT: a normal vector whose length is not 1 (deep level).
 
 use super::geometry::each_normal;
+use crate::validate::numbers::readable;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -39,18 +40,8 @@ fn check(ctx: &mut Ctx) {
         (length > 0.0 && (length - 1.0).abs() > tolerance).then(|| {
             format!(
                 "has length {}, not 1 (tolerance {tolerance})",
-                shortest(length)
+                readable(length)
             )
         })
     });
-}
-
-/// The length as f32 prints it (shortest round trip) where that is finite.
-fn shortest(length: f64) -> String {
-    let single = length as f32;
-    if single.is_finite() {
-        single.to_string()
-    } else {
-        format!("{length:e}")
-    }
 }

@@ -2,6 +2,7 @@
 
 use crate::model::bounds::{self, Affine, Bounds};
 use crate::report::Diagnostic;
+use crate::validate::numbers::readable;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -85,6 +86,19 @@ fn check(ctx: &mut Ctx) {
     }
     for (id, span, actual, axis) in found {
         let node = doc.node(id);
+        let (center, size) = (actual.center(), actual.size());
+        // A box beyond the f32 range could not be written in the SFVec3f fields.
+        let help = center
+            .iter()
+            .chain(&size)
+            .all(|v| (*v as f32).is_finite())
+            .then(|| {
+                format!(
+                    "a box that fits: bboxCenter='{}' bboxSize='{}'",
+                    triple(center),
+                    triple(size)
+                )
+            });
         ctx.report(
             Diagnostic::new(
                 &BBOX_TOO_SMALL,
@@ -103,11 +117,7 @@ fn check(ctx: &mut Ctx) {
                 ),
             )
             .node(id)
-            .help(format!(
-                "a box that fits: bboxCenter='{}' bboxSize='{}'",
-                triple(actual.center()),
-                triple(actual.size())
-            )),
+            .help_opt(help),
         );
     }
 }
@@ -131,8 +141,13 @@ fn outside_axis(actual: &Bounds, center: [f64; 3], size: [f64; 3]) -> Option<usi
     })
 }
 
+/// A coordinate rounded to 6 decimals, which hides the noise of rotations (6e-17 for
+/// cos π/2); from 1e7 on, where f32 has no decimals left, as `readable` gives it.
 fn short(value: f64) -> String {
-    let text = format!("{:.6}", value as f32);
+    if value.abs() >= 1e7 {
+        return readable(value);
+    }
+    let text = format!("{value:.6}");
     let text = text.trim_end_matches('0').trim_end_matches('.');
     if text == "-0" {
         "0".into()

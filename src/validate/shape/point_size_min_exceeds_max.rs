@@ -1,13 +1,15 @@
 //! POINT_SIZE_MIN_EXCEEDS_MAX: PointProperties.pointSizeMinValue above pointSizeMaxValue.
 
 use crate::report::Diagnostic;
+use crate::validate::numbers::readable;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
     /// ## What it does
     /// Reports a PointProperties whose effective `pointSizeMinValue` (default 1) is greater
     /// than its effective `pointSizeMaxValue` (default 1), compared as the f32 values the
-    /// fields hold. NaN is left to FIELD_VALUE_NONFINITE.
+    /// fields hold. NaN and infinities (`1e39` overflows an SFFloat) are left to
+    /// FIELD_VALUE_NONFINITE.
     ///
     /// ## Why it matters
     /// 12.4.7: "The provided value for pointSizeMinValue must be less than or equal to value
@@ -47,7 +49,8 @@ fn check(ctx: &mut Ctx) {
         ) else {
             continue;
         };
-        if min > max {
+        // A non-finite value is FIELD_VALUE_NONFINITE's: it has no order to judge.
+        if min > max && min.is_finite() && max.is_finite() {
             let (min_entry, max_entry) = (
                 node.entry("pointSizeMinValue"),
                 node.entry("pointSizeMaxValue"),
@@ -62,7 +65,9 @@ fn check(ctx: &mut Ctx) {
             &POINT_SIZE_MIN_EXCEEDS_MAX,
             span,
             format!(
-                "PointProperties.pointSizeMinValue {min} is greater than pointSizeMaxValue {max}"
+                "PointProperties.pointSizeMinValue {} is greater than pointSizeMaxValue {}",
+                readable(min.into()),
+                readable(max.into())
             ),
         )
         .node(id);
