@@ -90,7 +90,7 @@ pub enum LightKind {
 pub struct Light {
     pub kind: LightKind,
     pub color: [f32; 3],
-    /// Non-negative and finite.
+    /// In [0, 1e15] (flatten::lights::MAX_INTENSITY): beyond, every lit pixel saturates.
     pub intensity: f32,
     pub ambient_intensity: f32,
     /// Relative to the eye (point and spot lights).

@@ -2,9 +2,10 @@
 // part of the shader that property tests run on extreme inputs (tests/lighting.rs).
 // Positions are relative to the eye, in world orientation: V = normalize(-p).
 //
-// Every result is finite for inputs within the draw list's guarantees: a light's
-// contribution is capped at MAX_RADIANCE (far beyond white), so that a sum of lights or a
-// product with a zero occlusion never meets an infinity.
+// Every result is finite for inputs within the draw list's guarantees (intensity at most
+// 1e15, colours in [0, 1], finite positions): a light's contribution is capped at
+// MAX_RADIANCE (far beyond white), so that a sum of lights or a product with a zero
+// occlusion never meets an infinity.
 
 struct Light {
     color_intensity: vec4<f32>,    // rgb colour, intensity
@@ -28,6 +29,7 @@ struct Surface {
 
 const PI: f32 = 3.14159265358979;
 const MAX_RADIANCE: f32 = 1e30;
+const MAX_SPECULAR: f32 = 1e12;
 
 // x · y of 17.2.2.3: never negative.
 fn pdot(x: vec3<f32>, y: vec3<f32>) -> f32 {
@@ -127,7 +129,8 @@ fn light_physical(light: Light, s: Surface, p: vec3<f32>, n: vec3<f32>, v: vec3<
     let d_denominator = n_dot_h * n_dot_h * (alpha2 - 1.0) + 1.0;
     let distribution = min(alpha2 / max(PI * d_denominator * d_denominator, 1e-30), MAX_RADIANCE);
     let f_diffuse = (vec3<f32>(1.0) - fresnel) * c_diff / PI;
-    let f_specular = min(fresnel * visibility * distribution, vec3<f32>(MAX_RADIANCE));
+    // A mirror's peak, capped where any light already saturates (intensity ≤ 1e15).
+    let f_specular = min(fresnel * visibility * distribution, vec3<f32>(MAX_SPECULAR));
     let radiance = light.color_intensity.rgb * light.color_intensity.w * inc.factor * n_dot_l;
     return min(radiance * (f_diffuse + f_specular), vec3<f32>(MAX_RADIANCE));
 }

@@ -40,7 +40,7 @@ pub const LIGHTING_WGSL: &str = include_str!("lighting.wgsl");
 #[cfg(feature = "render")]
 const SHADER_WGSL: &str = concat!(include_str!("lighting.wgsl"), include_str!("shader.wgsl"));
 #[cfg(feature = "render")]
-pub use gpu::{GpuError, Settings, Shading};
+pub use gpu::{open_device, GpuError, Settings, Shading};
 
 use crate::model::Document;
 use crate::report::FileReport;
@@ -67,6 +67,11 @@ pub enum Preview {}
 
 #[cfg(feature = "render")]
 impl Preview {
+    /// What will be drawn.
+    pub fn list(&self) -> &draw_list::DrawList {
+        &self.list
+    }
+
     /// Draws the image.
     pub fn draw(self) -> Result<image::RgbaImage, String> {
         gpu::render(self.list, self.width, self.height, self.settings).map_err(|e| e.to_string())

@@ -29,7 +29,7 @@ pub fn find_viewpoint(
 ) -> Result<Option<ViewpointFound>, String> {
     let wanted = |id: NodeId| {
         let node = doc.node(id);
-        node.is_a("X3DViewpointNode")
+        is_viewpoint(node)
             && name.is_none_or(|n| node.def_name.as_ref().is_some_and(|d| d.text == n))
     };
     let mut stack: Vec<(NodeId, DMat4)> = doc
@@ -75,6 +75,13 @@ pub fn find_viewpoint(
             .ok_or_else(|| format!("--camera {n}: the scene has no Viewpoint DEF'd `{n}`")),
         None => Ok(None),
     }
+}
+
+/// A Viewpoint, OrthoViewpoint or GeoViewpoint (X3D 3.0 and 3.1 have no
+/// X3DViewpointNode type above Viewpoint).
+pub fn is_viewpoint(node: &crate::model::Node) -> bool {
+    node.is_a("X3DViewpointNode")
+        || matches!(node.type_name(), "Viewpoint" | "OrthoViewpoint" | "GeoViewpoint")
 }
 
 fn viewpoint(doc: &Document, id: NodeId, world: DMat4) -> ViewpointFound {
@@ -271,6 +278,15 @@ mod tests {
         let b = find_viewpoint(&d, Some("B")).unwrap().unwrap();
         assert_eq!(b.eye, DVec3::new(1.0, 2.0, 3.0));
         assert!(find_viewpoint(&d, Some("C")).is_err());
+    }
+
+    #[test]
+    fn x3d_3_0_viewpoints_are_found() {
+        let source = "<X3D version='3.0' profile='Immersive'><Scene>\
+                      <Viewpoint position='1 2 3'/></Scene></X3D>";
+        let d = crate::parse::read(source.as_bytes()).document.unwrap();
+        let v = find_viewpoint(&d, None).unwrap().unwrap();
+        assert_eq!(v.eye, DVec3::new(1.0, 2.0, 3.0));
     }
 
     #[test]

@@ -8,6 +8,9 @@ use crate::model::NodeId;
 use crate::render::draw_list::{Light, LightKind, MAX_LIGHTS};
 use crate::render::fields::{boolean, color, float, unit, vec3};
 
+/// The largest intensity drawn (4.x allows [0, ∞)).
+pub const MAX_INTENSITY: f32 = 1e15;
+
 pub struct PendingLight {
     pub light: Light,
     /// World location (point and spot lights), made relative to the eye at the end.
@@ -60,15 +63,18 @@ impl Walker<'_> {
         let light = Light {
             kind,
             color: color(doc, id, "color", [1.0; 3]),
-            intensity: float(doc, id, "intensity", 1.0).max(0.0),
+            // Any intensity beyond MAX_INTENSITY already saturates every lit pixel; the cap
+            // keeps the shader's sums finite.
+            intensity: float(doc, id, "intensity", 1.0).clamp(0.0, MAX_INTENSITY),
             ambient_intensity: unit(float(doc, id, "ambientIntensity", 0.0)),
             location: [0.0; 3],
             direction: place::unit_vector(direction),
             attenuation,
-            radius: if radius.is_finite() {
-                radius as f32
+            // NaN (an infinite scale times 0) reaches nothing; beyond f32, f32::MAX.
+            radius: if radius.is_nan() {
+                0.0
             } else {
-                f32::MAX
+                radius.min(f64::from(f32::MAX)) as f32
             },
             beam_width,
             cut_off_angle,

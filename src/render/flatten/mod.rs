@@ -312,7 +312,7 @@ impl Walker<'_> {
                 self.environment_node(context, id, world)
             }
             _ if def.is_a("X3DLightNode")
-                || def.is_a("X3DViewpointNode")
+                || camera::is_viewpoint(node)
                 || def.name == "ClipPlane" => {}
             _ if def.is_a("X3DGroupingNode") => {
                 // Group, StaticGroup, Collision (not its proxy), Anchor, CAD groups
@@ -406,7 +406,14 @@ impl Walker<'_> {
             .lights
             .iter()
             .map(|l| Light {
-                location: place::to_f32(l.location - view.eye),
+                // Beyond f32's range a light is out of any reach it can have in f32.
+                location: place::to_f32(l.location - view.eye).map(|c| {
+                    if c.is_nan() {
+                        f32::MAX
+                    } else {
+                        c.clamp(-f32::MAX, f32::MAX)
+                    }
+                }),
                 ..l.light
             })
             .collect();

@@ -107,7 +107,8 @@ async fn render_async(
     })
 }
 
-async fn open_device() -> Result<(wgpu::Device, wgpu::Queue), GpuError> {
+/// A device on any adapter (see [`find_adapter`]); public for tests that run the WGSL.
+pub async fn open_device() -> Result<(wgpu::Device, wgpu::Queue), GpuError> {
     let adapter = find_adapter().await.ok_or(GpuError::NoAdapter)?;
     adapter
         .request_device(&wgpu::DeviceDescriptor {
