@@ -16,7 +16,7 @@
 //! - "The entire spine is collinear": every SCP is the rotation taking +Y to the first
 //!   segment's direction; for a spine along −Y (no unique rotation) a half turn about X.
 //! - A Z axis taken from a neighbour is made perpendicular to this point's Y axis (the
-//!   flip test of rule g uses the Z axes as the clause computes them). X = Y × Z.
+//!   test against flipping uses the Z axes as the clause computes them). X = Y × Z.
 //! - Closed spine (first point = last): both ends have the first point's SCP, as the
 //!   clause says, even after Z flips along the way.
 //! - scale and orientation: one value applies to every spine point; a list shorter than
@@ -33,10 +33,15 @@
 //!   the spine, each by accumulated length (by point number when the length is zero);
 //!   caps: the crossSection's bounding box, its larger side from 0 to 1, s along X and t
 //!   along Z.
-//! - Non-finite spine, crossSection or scale values: not drawn, with the reason.
+//! - Non-finite spine, crossSection or scale values, or more than [`MAX_TRIANGLES`]
+//!   triangles: not drawn, with the reason.
+//!
+//! The clause is not among the project's spec extracts; its rules were read from the
+//! public text (the same, for these rules, as VRML97's Extrusion).
 
 use glam::{DMat3, DQuat, DVec3};
 
+use super::geometry2d::bounding_rectangle;
 use super::{crease_generation, LocalMesh, Needs, TexCoordSource};
 use crate::model::faces::Attribute as Kind;
 use crate::model::{Document, NodeId};
@@ -132,7 +137,7 @@ pub fn build(doc: &Document, geometry: NodeId, needs: &Needs) -> Result<LocalMes
     let mut faces = Faces::with_capacity(quads + 2, quads * 4 + 2 * cap_corners);
     for i in 0..n - 1 {
         for j in 0..width - 1 {
-            // From the earlier cross-section to the later one (13.3.5.3).
+            // From the earlier cross-section to the later one, as 13.3.5 orders them.
             let corners = [(i, j), (i, j + 1), (i + 1, j + 1), (i + 1, j)];
             let mut coords = corners.map(|(i, j)| coord(i, j));
             let mut elements = corners.map(|(i, j)| (i * width + j) as u32);
@@ -144,7 +149,7 @@ pub fn build(doc: &Document, geometry: NodeId, needs: &Needs) -> Result<LocalMes
         }
     }
     // Caps: viewed from the SCP's +Y, a counterclockwise section faces −Y at the begin
-    // and +Y at the end (13.3.5.3).
+    // and +Y at the end (13.3.5).
     for (cap, ring_index, reversed) in [(0, 0, ccw), (1, n - 1, !ccw)] {
         if !caps[cap] || cap_corners == 0 {
             continue;
@@ -218,7 +223,7 @@ fn triangle_count(spine: usize, section: usize, cap_corners: usize, caps: [bool;
         .fold(sides, |sum, _| sum.saturating_add(per_cap))
 }
 
-/// The SCP of every spine point (13.3.5.2, special cases 13.3.5.4) as the matrix whose
+/// The SCP of every spine point (13.3.5, with its special cases) as the matrix whose
 /// columns are its X, Y and Z axes.
 fn spine_frames(spine: &[DVec3]) -> Vec<DMat3> {
     let mut distinct: Vec<DVec3> = Vec::with_capacity(spine.len());
@@ -241,7 +246,7 @@ fn distinct_frames(p: &[DVec3]) -> Vec<DMat3> {
     }
     let closed = p[0] == p[m - 1];
     // Neighbours: a closed spine's ends see spine[n−2] before and spine[1] after them
-    // (rules b and e); an open spine's ends lack one.
+    // (the clause's closed-spine rules); an open spine's ends lack one.
     let previous = |i: usize| match i {
         0 if closed => Some(p[m - 2]),
         0 => None,
@@ -252,7 +257,8 @@ fn distinct_frames(p: &[DVec3]) -> Vec<DMat3> {
         _ if closed => Some(p[1]),
         _ => None,
     };
-    // Rules d and e; None where the three points are collinear or at an open end.
+    // Z = (spine[i+1] − spine[i]) × (spine[i−1] − spine[i]); None where the three points
+    // are collinear or at an open end.
     let z_axes: Vec<Option<DVec3>> = (0..m)
         .map(|i| {
             let (a, b) = (next(i)? - p[i], previous(i)? - p[i]);
@@ -267,16 +273,17 @@ fn distinct_frames(p: &[DVec3]) -> Vec<DMat3> {
     let mut frames = Vec::with_capacity(m);
     let mut previous_z: Option<DVec3> = None;
     for i in 0..m {
-        // Rules a–c; a vanishing Y (the spine turning back) follows the next segment.
+        // Y = spine[i+1] − spine[i−1], or the end segment of an open spine; a vanishing Y
+        // (the spine turning back) follows the next segment.
         let y = match (previous(i), next(i)) {
             (Some(before), Some(after)) if after != before => after - before,
             (_, Some(after)) => after - p[i],
             (Some(before), None) => p[i] - before,
             (None, None) => DVec3::Y,
         };
-        // Collinear points take the previous Z; the first ones the first defined (13.3.5.4).
+        // Collinear points take the previous Z; the first ones the first defined.
         let mut z = z_axes[i].or(previous_z).unwrap_or(first_defined);
-        // Rule g: no half turns between neighbours.
+        // A Z axis against the previous one is flipped: no half turns between neighbours.
         if previous_z.is_some_and(|before| z.dot(before) < 0.0) {
             z = -z;
         }
@@ -309,7 +316,7 @@ fn rotation_from_y(to: DVec3) -> DQuat {
     }
 }
 
-/// The default texture coordinates (13.3.5.3), flat s, t: one per side grid point
+/// The default texture coordinates (13.3.5), flat s, t: one per side grid point
 /// (spine-major), then the begin cap's and the end cap's `cap_corners` points.
 fn default_tex_coords(spine: &[DVec3], section: &[[f64; 2]], cap_corners: usize) -> Vec<f32> {
     let s = accumulated(section.windows(2).map(|w| {
@@ -323,16 +330,10 @@ fn default_tex_coords(spine: &[DVec3], section: &[[f64; 2]], cap_corners: usize)
             out.extend_from_slice(&[s, t]);
         }
     }
-    let [mut lo, mut hi] = [[f64::INFINITY; 2], [f64::NEG_INFINITY; 2]];
-    for p in section {
-        for k in 0..2 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
-    let size = (hi[0] - lo[0]).max(hi[1] - lo[1]);
-    let scale = if size > 0.0 && size.is_finite() {
-        1.0 / size
+    let (lo, size) = bounding_rectangle(section).unwrap_or(([0.0; 2], [0.0; 2]));
+    let larger = size[0].max(size[1]);
+    let scale = if larger > 0.0 && larger.is_finite() {
+        1.0 / larger
     } else {
         0.0
     };

@@ -50,18 +50,9 @@ pub fn build(doc: &Document, geometry: NodeId, name: &str) -> Planar {
             Planar::Lines(curve(&circle_points(radius("radius"), start, sweep)))
         }
         "Circle2D" => Planar::Lines(curve(&circle_points(radius("radius"), 0.0, TAU))),
-        "Polyline2D" => {
-            let points: Vec<[f32; 3]> = floats(doc, geometry, "lineSegments")
-                .chunks_exact(2)
-                .map(|p| [p[0], p[1], 0.0])
-                .collect();
-            Planar::Lines(curve(&points))
-        }
+        "Polyline2D" => Planar::Lines(curve(&plane_points(doc, geometry, "lineSegments"))),
         "Polypoint2D" => {
-            let positions: Vec<[f32; 3]> = floats(doc, geometry, "point")
-                .chunks_exact(2)
-                .map(|p| [p[0], p[1], 0.0])
-                .collect();
+            let positions = plane_points(doc, geometry, "point");
             Planar::Lines(LocalMesh {
                 primitive: Primitive::Points,
                 indices: (0..positions.len() as u32).collect(),
@@ -97,6 +88,32 @@ pub fn build(doc: &Document, geometry: NodeId, name: &str) -> Planar {
         }
         _ => Planar::Surface(triangle_set(&floats(doc, geometry, "vertices"))),
     }
+}
+
+/// The points of an MFVec2f field in the Z=0 plane.
+fn plane_points(doc: &Document, geometry: NodeId, field: &str) -> Vec<[f32; 3]> {
+    floats(doc, geometry, field)
+        .chunks_exact(2)
+        .map(|p| [p[0], p[1], 0.0])
+        .collect()
+}
+
+/// The lower corner and the size of the rectangle around the finite `points`; None when
+/// there are none.
+pub(super) fn bounding_rectangle<'a>(
+    points: impl IntoIterator<Item = &'a [f64; 2]>,
+) -> Option<([f64; 2], [f64; 2])> {
+    let [mut lo, mut hi] = [[f64::INFINITY; 2], [f64::NEG_INFINITY; 2]];
+    for p in points
+        .into_iter()
+        .filter(|p| p.iter().all(|c| c.is_finite()))
+    {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    (lo[0] <= hi[0]).then(|| (lo, [hi[0] - lo[0], hi[1] - lo[1]]))
 }
 
 /// The start angle and counterclockwise sweep (in (0, 2π]) of an arc's fields.
@@ -255,18 +272,7 @@ fn triangle_set(vertices: &[f32]) -> LocalMesh {
         .chunks_exact(2)
         .map(|p| [p[0].into(), p[1].into()])
         .collect();
-    let [mut lo, mut hi] = [[f64::INFINITY; 2], [f64::NEG_INFINITY; 2]];
-    for p in points.iter().filter(|p| p.iter().all(|c| c.is_finite())) {
-        for k in 0..2 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
-    let texture = if lo[0] <= hi[0] {
-        (lo, [hi[0] - lo[0], hi[1] - lo[1]])
-    } else {
-        ([0.0; 2], [0.0; 2])
-    };
+    let texture = bounding_rectangle(&points).unwrap_or(([0.0; 2], [0.0; 2]));
     let mut surface = Surface::default();
     for triangle in points.chunks_exact(3) {
         let [a, b, c] = [triangle[0], triangle[1], triangle[2]];
