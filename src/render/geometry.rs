@@ -116,6 +116,21 @@ pub fn build(doc: &Document, geometry: NodeId, needs: &Needs) -> Built {
             None => Built::NotDrawn("ElevationGrid is not drawn".to_string()),
         },
         "LineSet" | "IndexedLineSet" | "PointSet" => lines_or_points(doc, geometry, name),
+        "Extrusion" => match extrusion::build(doc, geometry, needs) {
+            Ok(mesh) => surface(mesh),
+            Err(reason) => Built::NotDrawn(reason),
+        },
+        "Arc2D" | "ArcClose2D" | "Circle2D" | "Disk2D" | "Polyline2D" | "Polypoint2D"
+        | "Rectangle2D" | "TriangleSet2D" => match geometry2d::build(doc, geometry, name) {
+            geometry2d::Planar::Surface(mesh) => primitive(mesh),
+            geometry2d::Planar::Lines(mesh) => Built::Mesh(
+                mesh,
+                Shading {
+                    solid: false,
+                    unlit: true,
+                },
+            ),
+        },
         other => Built::NotDrawn(format!("{other} is not drawn")),
     }
 }
@@ -429,5 +444,9 @@ fn lines_or_points(doc: &Document, geometry: NodeId, name: &str) -> Built {
     )
 }
 
+#[path = "extrusion.rs"]
+mod extrusion;
+#[path = "geometry2d.rs"]
+mod geometry2d;
 #[path = "primitives.rs"]
 mod primitives;

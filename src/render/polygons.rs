@@ -99,6 +99,29 @@ impl Faces {
         faces
     }
 
+    /// No faces yet: geometry not read by model::faces (Extrusion) adds its own with
+    /// [`Faces::push`].
+    pub fn with_capacity(faces: usize, corners: usize) -> Faces {
+        let mut starts = Vec::with_capacity(faces + 1);
+        starts.push(0);
+        let mut elements: [Vec<u32>; 3] = Default::default();
+        elements[slot(Kind::TexCoord)].reserve(corners);
+        Faces {
+            corner_coords: Vec::with_capacity(corners),
+            elements,
+            starts,
+        }
+    }
+
+    /// Adds a face of at least three corners, wound counterclockwise: each corner's
+    /// coordinate index (below the point count) and texture coordinate element.
+    pub fn push(&mut self, coords: &[u32], tex_coord_elements: &[u32]) {
+        debug_assert!(coords.len() >= 3 && coords.len() == tex_coord_elements.len());
+        self.corner_coords.extend_from_slice(coords);
+        self.elements[slot(Kind::TexCoord)].extend_from_slice(tex_coord_elements);
+        self.starts.push(self.corner_coords.len());
+    }
+
     pub fn face_count(&self) -> usize {
         self.starts.len() - 1
     }

@@ -9,7 +9,7 @@ use super::LocalMesh;
 use crate::render::draw_list::Primitive;
 
 /// Segments around the axis of round primitives.
-const SEGMENTS: u32 = 48;
+pub(super) const SEGMENTS: u32 = 48;
 /// Rings from pole to pole of a sphere.
 const RINGS: u32 = 24;
 
