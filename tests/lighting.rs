@@ -347,7 +347,11 @@ fn aligned_case() -> impl Strategy<Value = Case> {
         c.normal = u;
         c.view = if grazing {
             // Perpendicular to u, nudged by 1e-7 towards it.
-            let p = if u[0].abs() < 0.9 { [1.0, 0.0, 0.0] } else { [0.0, 1.0, 0.0] };
+            let p = if u[0].abs() < 0.9 {
+                [1.0, 0.0, 0.0]
+            } else {
+                [0.0, 1.0, 0.0]
+            };
             let d: f32 = p.iter().zip(&u).map(|(a, b)| a * b).sum();
             let t = [0, 1, 2].map(|k| p[k] - d * u[k] + 1e-7 * u[k]);
             let l = t.iter().map(|x| x * x).sum::<f32>().sqrt();
@@ -548,4 +552,3 @@ proptest! {
         }
     }
 }
-

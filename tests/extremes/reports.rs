@@ -175,7 +175,7 @@ fn configs() -> [CheckConfig; 2] {
 fn outputs(report: &FileReport, source: &str) -> Vec<(&'static str, String)> {
     let reports = std::slice::from_ref(report);
     vec![
-        ("json", json::render(reports)),
+        ("json", json::render(reports, None)),
         ("sarif", sarif::render(reports)),
         ("human", human::render(report, source.as_bytes(), false)),
         ("concise", concise::render(report)),

@@ -81,7 +81,10 @@ pub fn find_viewpoint(
 /// X3DViewpointNode type above Viewpoint).
 pub fn is_viewpoint(node: &crate::model::Node) -> bool {
     node.is_a("X3DViewpointNode")
-        || matches!(node.type_name(), "Viewpoint" | "OrthoViewpoint" | "GeoViewpoint")
+        || matches!(
+            node.type_name(),
+            "Viewpoint" | "OrthoViewpoint" | "GeoViewpoint"
+        )
 }
 
 fn viewpoint(doc: &Document, id: NodeId, world: DMat4) -> ViewpointFound {
