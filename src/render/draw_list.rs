@@ -154,6 +154,32 @@ pub struct Mesh {
     pub blended: bool,
     /// Alpha below this is discarded (alphaMode MASK); 0 otherwise.
     pub alpha_cutoff: f32,
+    /// The width of lines, the size of points (LineProperties, PointProperties).
+    pub stroke: Stroke,
+}
+
+/// How wide lines and how large points are drawn, in image pixels (12.4.4, 12.4.7): the
+/// nominal size is one pixel.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct Stroke {
+    /// At least 1, finite.
+    pub size: f32,
+    /// Points: the size is divided by a + b·r + c·r² (r the distance from the viewer),
+    /// then clamped to [min, max]. (1, 0, 0) and [size, size] for lines.
+    pub attenuation: [f32; 3],
+    pub min: f32,
+    pub max: f32,
+}
+
+impl Default for Stroke {
+    fn default() -> Self {
+        Stroke {
+            size: 1.0,
+            attenuation: [1.0, 0.0, 0.0],
+            min: 1.0,
+            max: 1.0,
+        }
+    }
 }
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]

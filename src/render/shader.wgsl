@@ -10,6 +10,8 @@ struct Globals {
     view_projection: mat4x4<f32>,
     // Clip space to background directions (the Background's axes, eye at the origin).
     background_from_clip: mat4x4<f32>,
+    viewport: vec4<f32>,           // target width and height in pixels, supersampling scale
+    forward_near: vec4<f32>,       // unit view direction, near plane distance
     fog_color_range: vec4<f32>,    // rgb, visibilityRange
     counts: vec4<u32>,             // fog (0 none, 1 linear, 2 exponential), lights, sky, ground
     sky: array<vec4<f32>, 8>,      // rgb, angle from the zenith
@@ -34,6 +36,8 @@ struct Draw {
     sets_more: vec4<u32>,          // ... of shininess, ambient; clip plane count
     factor: vec4<f32>,             // MultiTexture colour and alpha
     cutoff: vec4<f32>,             // alpha cutoff
+    stroke: vec4<f32>,             // line width or point size (image pixels), min, max, points
+    stroke_attenuation: vec4<f32>, // points: size / (a + b·r + c·r²)
     stages: array<vec4<u32>, 4>,   // mode, alpha mode, source, function
     clip_planes: array<vec4<f32>, 4>,
 };
@@ -113,6 +117,68 @@ fn common_vertex(v: VertexIn) -> VertexOut {
 @vertex
 fn vs_main(v: VertexIn) -> VertexOut {
     return common_vertex(v);
+}
+
+// Lines and points as screen-aligned quads (WebGPU rasterizes lines and points one pixel
+// wide only): one instance per segment (a, b) or point (a = b), six corners each.
+struct StrokeIn {
+    @builtin(vertex_index) corner: u32,
+    @location(0) a: vec3<f32>,
+    @location(1) b: vec3<f32>,
+    @location(2) color_a: vec4<f32>,
+    @location(3) color_b: vec4<f32>,
+};
+
+@vertex
+fn vs_stroke(v: StrokeIn) -> VertexOut {
+    var out: VertexOut;
+    // Two triangles over (end, side): (0,-1) (1,-1) (1,1), (0,-1) (1,1) (0,1).
+    let ends = array<f32, 6>(0.0, 1.0, 1.0, 0.0, 1.0, 0.0);
+    let sides = array<f32, 6>(-1.0, -1.0, 1.0, -1.0, 1.0, 1.0);
+    let end = ends[v.corner % 6u];
+    let side = sides[v.corner % 6u];
+    // Cut the segment at the near plane, so that both ends project.
+    let near = globals.forward_near.w;
+    var pa = v.a;
+    var pb = v.b;
+    let da = dot(pa, globals.forward_near.xyz);
+    let db = dot(pb, globals.forward_near.xyz);
+    if da < near && db < near {
+        out.clip = vec4<f32>(2.0, 2.0, 2.0, 1.0);
+        return out;
+    }
+    if da < near {
+        pa = mix(pa, pb, (near - da) / (db - da));
+    } else if db < near {
+        pb = mix(pb, pa, (near - db) / (da - db));
+    }
+    let ca = globals.view_projection * vec4<f32>(pa, 1.0);
+    let cb = globals.view_projection * vec4<f32>(pb, 1.0);
+    let half_pixels = globals.viewport.xy * 0.5;
+    let sa = ca.xy / ca.w * half_pixels;
+    let sb = cb.xy / cb.w * half_pixels;
+    let points = draw.stroke.w != 0.0;
+    var size = draw.stroke.x;
+    let p = select(pa, pb, end > 0.5);
+    if points {
+        let r = length(p);
+        let att = draw.stroke_attenuation.xyz;
+        size = clamp(size / max(att.x + att.y * r + att.z * r * r, 1e-30), draw.stroke.y, draw.stroke.z);
+    }
+    let half_width = 0.5 * size * globals.viewport.z;
+    var along = sb - sa;
+    along = select(vec2<f32>(1.0, 0.0), normalize(along), dot(along, along) > 0.0);
+    let across = vec2<f32>(-along.y, along.x);
+    // Points are squares: they also reach half a size along.
+    let offset = across * side * half_width + along * select(0.0, (end * 2.0 - 1.0) * half_width, points);
+    var clip = select(ca, cb, end > 0.5);
+    clip = vec4<f32>(clip.xy + offset / half_pixels * clip.w, clip.zw);
+    out.clip = clip;
+    out.position = p;
+    out.color = select(v.color_a, v.color_b, end > 0.5);
+    out.lit_front = material_color(draw.front, out.color);
+    out.lit_back = out.lit_front;
+    return out;
 }
 
 fn phong(s: Surface, p: vec3<f32>, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {

@@ -8,7 +8,7 @@
 use super::{Context, Walker, MAX_TEXTURE_BYTES};
 use crate::model::NodeId;
 use crate::render::draw_list::{
-    LightingModel, Material, StageFunction, StageMode, StageSource, MAX_STAGES,
+    LightingModel, Material, StageFunction, StageMode, StageSource, Stroke, MAX_STAGES,
 };
 use crate::render::fields::{boolean, child, color, float, type_is, unit};
 use crate::render::textures;
@@ -65,6 +65,9 @@ pub struct Look {
     pub factor: [f32; 4],
     pub alpha_mode: String,
     pub alpha_cutoff: f32,
+    /// LineProperties (lines), PointProperties (points).
+    pub line: Stroke,
+    pub point: Stroke,
 }
 
 impl Look {
@@ -116,6 +119,8 @@ impl Walker<'_> {
             factor: [1.0; 4],
             alpha_mode: "AUTO".to_string(),
             alpha_cutoff: 0.5,
+            line: Stroke::default(),
+            point: Stroke::default(),
         };
         let Some(appearance) = appearance else {
             return look;
@@ -124,12 +129,7 @@ impl Walker<'_> {
             .string_of(appearance, "alphaMode")
             .unwrap_or_else(|| "AUTO".into());
         look.alpha_cutoff = unit(float(doc, appearance, "alphaCutoff", 0.5));
-        for field in [
-            "shaders",
-            "lineProperties",
-            "pointProperties",
-            "fillProperties",
-        ] {
+        for field in ["shaders", "fillProperties"] {
             if !doc.node(appearance).children(field).is_empty() {
                 self.note(
                     context,
@@ -137,6 +137,12 @@ impl Walker<'_> {
                     format!("Appearance.{field} is not applied"),
                 );
             }
+        }
+        if let Some(line) = child(doc, appearance, "lineProperties") {
+            look.line = self.line_properties(context, line);
+        }
+        if let Some(point) = child(doc, appearance, "pointProperties") {
+            look.point = point_properties(doc, point);
         }
         let material = child(doc, appearance, "material");
         if let Some(material) = material {
@@ -193,6 +199,31 @@ impl Walker<'_> {
             }
         }
         look
+    }
+
+    /// LineProperties (12.4.4): when applied, linewidthScaleFactor times the nominal
+    /// one-pixel width (at least the minimum, one pixel); patterns other than solid are
+    /// noted and drawn solid.
+    fn line_properties(&mut self, context: Context, id: NodeId) -> Stroke {
+        let doc = context.doc;
+        if !boolean(doc, id, "applied", true) {
+            return Stroke::default();
+        }
+        let linetype = doc.i32_of(id, "linetype").unwrap_or(1);
+        if linetype != 1 {
+            self.note(
+                context,
+                id,
+                format!("LineProperties linetype {linetype} is drawn solid"),
+            );
+        }
+        let size = float(doc, id, "linewidthScaleFactor", 0.0).clamp(1.0, MAX_STROKE);
+        Stroke {
+            size,
+            min: size,
+            max: size,
+            ..Stroke::default()
+        }
     }
 
     /// The texture nodes and mappings of a material's texture fields, to compare sides.
@@ -439,6 +470,28 @@ impl Walker<'_> {
                 (default_unlit(), None)
             }
         }
+    }
+}
+
+/// The widest line and largest point drawn, in pixels.
+const MAX_STROKE: f32 = 256.0;
+
+/// PointProperties (12.4.7): the nominal one-pixel size times pointSizeScaleFactor,
+/// attenuated with distance, clamped to [pointSizeMinValue, pointSizeMaxValue] × 1 pixel.
+fn point_properties(doc: &crate::model::Document, id: NodeId) -> Stroke {
+    let bound = |name: &str| float(doc, id, name, 1.0).clamp(0.0, MAX_STROKE);
+    let (min, max) = (bound("pointSizeMinValue"), bound("pointSizeMaxValue"));
+    let mut attenuation =
+        crate::render::fields::vec3(doc, id, "attenuation", [1.0, 0.0, 0.0]).map(|c| c.max(0.0));
+    if attenuation == [0.0; 3] {
+        attenuation = [1.0, 0.0, 0.0];
+    }
+    Stroke {
+        size: float(doc, id, "pointSizeScaleFactor", 1.0).clamp(1.0, MAX_STROKE),
+        attenuation,
+        // A minimum above the maximum (POINT_SIZE_MIN_EXCEEDS_MAX) gives way to it.
+        min: min.min(max),
+        max,
     }
 }
 

@@ -57,6 +57,11 @@ pub struct Options<'a> {
     pub primitive_budget: usize,
 }
 
+/// The material of a shape without an Appearance: unlit white (17.2.2.4).
+pub fn default_material() -> super::draw_list::Material {
+    appearance::default_unlit()
+}
+
 pub struct Flattened {
     pub list: DrawList,
     pub notes: Vec<Note>,

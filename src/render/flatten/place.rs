@@ -5,7 +5,7 @@
 use glam::{DMat3, DMat4, DQuat, DVec3, DVec4};
 
 use super::Scope;
-use crate::render::draw_list::{Material, Mesh, Primitive, Textures};
+use crate::render::draw_list::{Material, Mesh, Primitive, Stroke, Textures};
 use crate::render::geometry::LocalMesh;
 use crate::render::tangents::tangents;
 use crate::render::texgen::{Frame, Generator};
@@ -24,6 +24,7 @@ pub struct Pending {
     pub scope: Scope,
     pub blended: bool,
     pub alpha_cutoff: f32,
+    pub stroke: Stroke,
 }
 
 /// What turns a texture coordinate set into the one sampled.
@@ -177,6 +178,7 @@ impl Pending {
                 .collect(),
             blended: self.blended,
             alpha_cutoff: self.alpha_cutoff,
+            stroke: self.stroke,
         }
     }
 }

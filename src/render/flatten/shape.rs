@@ -10,7 +10,9 @@ use super::{Context, Scope, Walker};
 use crate::model::bounds::{geometry_bounds, Affine};
 use crate::model::texture_mapping::{texture_coordinates, texture_transforms, MappingList};
 use crate::model::NodeId;
-use crate::render::draw_list::{LightingModel, Stage, TextureRef, Textures, MAX_TEX_COORD_SETS};
+use crate::render::draw_list::{
+    LightingModel, Primitive, Stage, Stroke, TextureRef, Textures, MAX_TEX_COORD_SETS,
+};
 use crate::render::fields::{child, type_is};
 use crate::render::geometry::{self, Built, Needs, TexCoordSource};
 use crate::render::texgen::Generator;
@@ -161,6 +163,7 @@ impl Walker<'_> {
                     || translucent_colors
             }
         };
+        let mesh_primitive = mesh.primitive;
         let primitives = mesh.indices.len() / mesh.primitive.arity();
         if self.spent.primitives + primitives > self.options.primitive_budget {
             let budget = self.options.primitive_budget;
@@ -185,6 +188,11 @@ impl Walker<'_> {
                 look.alpha_cutoff
             } else {
                 0.0
+            },
+            stroke: match mesh_primitive {
+                Primitive::Lines => look.line,
+                Primitive::Points => look.point,
+                Primitive::Triangles => Stroke::default(),
             },
         });
     }

@@ -4,7 +4,7 @@
 use wgpu::util::DeviceExt;
 
 use super::pipelines::{PipelineKey, Pipelines, COLOR_FORMAT, DEPTH_FORMAT, VERTEX_SLOTS};
-use super::resources::{upload_mesh, TextureBindings};
+use super::resources::{upload_mesh, MeshBuffers, TextureBindings};
 use super::uniforms::{draw_uniform, globals, GpuDraw};
 use super::{GpuError, Shading};
 use crate::render::draw_list::{DrawList, Mesh};
@@ -13,6 +13,8 @@ use crate::render::draw_list::{DrawList, Mesh};
 pub struct Target {
     pub width: u32,
     pub height: u32,
+    /// How many times larger than the image the target is (supersampling).
+    pub scale: u32,
     pub samples: u32,
     pub shading: Shading,
 }
@@ -65,7 +67,7 @@ pub async fn draw(
     let depth_view = depth.create_view(&Default::default());
 
     let mut pipelines = Pipelines::new(device, target.samples, target.shading);
-    let globals = globals(&list, target.width as f32 / target.height as f32);
+    let globals = globals(&list, target.width, target.height, target.scale);
     let globals_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
         label: Some("globals"),
         contents: bytemuck::bytes_of(&globals),
@@ -171,11 +173,31 @@ pub async fn draw(
             pass.set_pipeline(pipelines.get(*key));
             pass.set_bind_group(1, &draw_group, &[(slot * stride) as u32]);
             pass.set_bind_group(2, bindings.group(textures), &[]);
-            for (i, buffer) in buffers.vertices.iter().enumerate().take(VERTEX_SLOTS) {
-                pass.set_vertex_buffer(i as u32, buffer.as_ref().unwrap_or(&zeros).slice(..));
+            match buffers {
+                MeshBuffers::Surface {
+                    vertices,
+                    indices,
+                    index_count,
+                } => {
+                    for (i, buffer) in vertices.iter().enumerate().take(VERTEX_SLOTS) {
+                        pass.set_vertex_buffer(
+                            i as u32,
+                            buffer.as_ref().unwrap_or(&zeros).slice(..),
+                        );
+                    }
+                    pass.set_index_buffer(indices.slice(..), wgpu::IndexFormat::Uint32);
+                    pass.draw_indexed(0..*index_count, 0, 0..1);
+                }
+                MeshBuffers::Stroke {
+                    ends,
+                    colors,
+                    instances,
+                } => {
+                    pass.set_vertex_buffer(0, ends.slice(..));
+                    pass.set_vertex_buffer(1, colors.slice(..));
+                    pass.draw(0..6, 0..*instances);
+                }
             }
-            pass.set_index_buffer(buffers.indices.slice(..), wgpu::IndexFormat::Uint32);
-            pass.draw_indexed(0..buffers.index_count, 0, 0..1);
         }
     }
     read_back(

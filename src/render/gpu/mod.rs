@@ -87,6 +87,7 @@ async fn render_async(
         frame::Target {
             width: target_width,
             height: target_height,
+            scale,
             samples: settings.msaa_samples,
             shading: settings.shading,
         },

@@ -30,6 +30,11 @@ const FORMATS: [wgpu::VertexFormat; VERTEX_SLOTS] = [
     wgpu::VertexFormat::Float32x2,
 ];
 
+/// Lines and points are drawn as instanced quads: per instance the two ends (a point's
+/// twice), then their two colours.
+pub const STROKE_ENDS_STRIDE: u64 = 24;
+pub const STROKE_COLORS_STRIDE: u64 = 32;
+
 /// Which pipeline a mesh needs.
 #[derive(Copy, Clone, PartialEq, Eq, Hash)]
 pub struct PipelineKey {
@@ -175,7 +180,7 @@ impl<'d> Pipelines<'d> {
                 }]
             })
             .collect();
-        let buffers: Vec<Option<wgpu::VertexBufferLayout>> = attributes
+        let surface_buffers: Vec<Option<wgpu::VertexBufferLayout>> = attributes
             .iter()
             .enumerate()
             .map(|(slot, attribute)| {
@@ -190,19 +195,28 @@ impl<'d> Pipelines<'d> {
                 })
             })
             .collect();
-        let topology = match key.primitive {
-            0 => wgpu::PrimitiveTopology::TriangleList,
-            1 => wgpu::PrimitiveTopology::LineList,
-            _ => wgpu::PrimitiveTopology::PointList,
-        };
+        let stroke_buffers = [
+            Some(wgpu::VertexBufferLayout {
+                array_stride: STROKE_ENDS_STRIDE,
+                step_mode: wgpu::VertexStepMode::Instance,
+                attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
+            }),
+            Some(wgpu::VertexBufferLayout {
+                array_stride: STROKE_COLORS_STRIDE,
+                step_mode: wgpu::VertexStepMode::Instance,
+                attributes: &wgpu::vertex_attr_array![2 => Float32x4, 3 => Float32x4],
+            }),
+        ];
+        let stroke = key.primitive != 0;
         let blend = if key.blended {
             wgpu::BlendState::ALPHA_BLENDING
         } else {
             wgpu::BlendState::REPLACE
         };
-        let (vertex, fragment) = match self.shading {
-            Shading::Gouraud => ("vs_gouraud", "fs_gouraud"),
-            Shading::Phong => ("vs_main", "fs_phong"),
+        let (vertex, fragment) = match (stroke, self.shading) {
+            (true, _) => ("vs_stroke", "fs_phong"),
+            (false, Shading::Gouraud) => ("vs_gouraud", "fs_gouraud"),
+            (false, Shading::Phong) => ("vs_main", "fs_phong"),
         };
         self.device
             .create_render_pipeline(&wgpu::RenderPipelineDescriptor {
@@ -212,10 +226,14 @@ impl<'d> Pipelines<'d> {
                     module: &self.shader,
                     entry_point: Some(vertex),
                     compilation_options: Default::default(),
-                    buffers: &buffers,
+                    buffers: if stroke {
+                        &stroke_buffers
+                    } else {
+                        &surface_buffers
+                    },
                 },
                 primitive: wgpu::PrimitiveState {
-                    topology,
+                    topology: wgpu::PrimitiveTopology::TriangleList,
                     front_face: wgpu::FrontFace::Ccw,
                     cull_mode: key.cull_back.then_some(wgpu::Face::Back),
                     ..Default::default()

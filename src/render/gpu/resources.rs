@@ -7,7 +7,7 @@ use std::collections::HashMap;
 use wgpu::util::DeviceExt;
 
 use super::pipelines::{TEXTURE_SLOTS, VERTEX_SLOTS};
-use crate::render::draw_list::{Mesh, Texture, Textures, Wrap, MAX_STAGES};
+use crate::render::draw_list::{Mesh, Primitive, Texture, Textures, Wrap, MAX_STAGES};
 
 /// The textures of a draw list on the GPU, and the bind groups made from them.
 pub struct TextureBindings<'d> {
@@ -167,11 +167,20 @@ fn upload(
     (gpu_texture.create_view(&Default::default()), sampler)
 }
 
-/// A mesh's buffers: one per vertex slot (None: the constant zero buffer) and indices.
-pub struct MeshBuffers {
-    pub vertices: [Option<wgpu::Buffer>; VERTEX_SLOTS],
-    pub indices: wgpu::Buffer,
-    pub index_count: u32,
+/// A mesh's buffers on the GPU.
+pub enum MeshBuffers {
+    /// Triangles: one buffer per vertex slot (None: the constant zero buffer), indices.
+    Surface {
+        vertices: Box<[Option<wgpu::Buffer>; VERTEX_SLOTS]>,
+        indices: wgpu::Buffer,
+        index_count: u32,
+    },
+    /// Lines and points: per instance its two ends and their colours.
+    Stroke {
+        ends: wgpu::Buffer,
+        colors: wgpu::Buffer,
+        instances: u32,
+    },
 }
 
 /// Uploads a mesh's arrays and frees them: on a software driver the GPU copy lives in
@@ -184,6 +193,9 @@ pub fn upload_mesh(device: &wgpu::Device, mesh: &mut Mesh) -> MeshBuffers {
             usage,
         })
     };
+    if mesh.primitive != Primitive::Triangles {
+        return upload_stroke(mesh, |bytes| buffer(bytes, wgpu::BufferUsages::VERTEX));
+    }
     let vertex = |bytes: &[u8]| Some(buffer(bytes, wgpu::BufferUsages::VERTEX));
     let mut vertices: [Option<wgpu::Buffer>; VERTEX_SLOTS] = Default::default();
     vertices[0] = vertex(bytemuck::cast_slice(&std::mem::take(&mut mesh.positions)));
@@ -206,17 +218,94 @@ pub fn upload_mesh(device: &wgpu::Device, mesh: &mut Mesh) -> MeshBuffers {
         *slot = vertex(bytemuck::cast_slice(&set));
     }
     let indices = std::mem::take(&mut mesh.indices);
-    MeshBuffers {
-        vertices,
+    MeshBuffers::Surface {
+        vertices: Box::new(vertices),
         index_count: indices.len() as u32,
         indices: buffer(bytemuck::cast_slice(&indices), wgpu::BufferUsages::INDEX),
     }
+}
+
+/// Lines and points as instances: a segment's two ends (a point twice), in index order.
+fn upload_stroke(mesh: &mut Mesh, buffer: impl Fn(&[u8]) -> wgpu::Buffer) -> MeshBuffers {
+    let per = mesh.primitive.arity();
+    let (ends, colors) = stroke_instances(mesh);
+    drop(std::mem::take(&mut mesh.positions));
+    mesh.colors = None;
+    let instances = (std::mem::take(&mut mesh.indices).len() / per) as u32;
+    MeshBuffers::Stroke {
+        ends: buffer(bytemuck::cast_slice(&ends)),
+        colors: buffer(bytemuck::cast_slice(&colors)),
+        instances,
+    }
+}
+
+/// A line's or point's two ends, and their colours.
+type Ends = [[f32; 3]; 2];
+type EndColors = [[f32; 4]; 2];
+
+/// The instance arrays of a line or point mesh: ends [a, b] and colours [a, b] (white
+/// without per-vertex colours: the shader then uses the material's).
+fn stroke_instances(mesh: &Mesh) -> (Vec<Ends>, Vec<EndColors>) {
+    let per = mesh.primitive.arity();
+    let color = |i: u32| {
+        mesh.colors
+            .as_ref()
+            .and_then(|c| c.get(i as usize).copied())
+            .unwrap_or([1.0; 4])
+    };
+    mesh.indices
+        .chunks_exact(per)
+        .map(|ends| {
+            let (a, b) = (ends[0], ends[per - 1]);
+            (
+                [mesh.positions[a as usize], mesh.positions[b as usize]],
+                [color(a), color(b)],
+            )
+        })
+        .unzip()
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::render::draw_list::{Stage, TextureRef};
+
+    #[test]
+    fn lines_and_points_become_instances_of_their_two_ends() {
+        let mut mesh = Mesh {
+            primitive: Primitive::Lines,
+            positions: vec![[0.0; 3], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0]],
+            normals: None,
+            tangents: None,
+            colors: Some(vec![[1.0, 0.0, 0.0, 1.0], [0.0, 1.0, 0.0, 1.0], [0.0; 4]]),
+            colors_have_alpha: false,
+            tex_coords: Vec::new(),
+            indices: vec![0, 1, 1, 2],
+            front: crate::render::flatten::default_material(),
+            back: None,
+            textures: Textures::default(),
+            light_mask: 0,
+            clip_planes: Vec::new(),
+            blended: false,
+            alpha_cutoff: 0.0,
+            stroke: Default::default(),
+        };
+        let (ends, colors) = stroke_instances(&mesh);
+        assert_eq!(
+            ends,
+            vec![
+                [[0.0; 3], [1.0, 0.0, 0.0]],
+                [[1.0, 0.0, 0.0], [1.0, 1.0, 0.0]]
+            ]
+        );
+        assert_eq!(colors[1], [[0.0, 1.0, 0.0, 1.0], [0.0; 4]]);
+        mesh.primitive = Primitive::Points;
+        mesh.colors = None;
+        mesh.indices = vec![2];
+        let (ends, colors) = stroke_instances(&mesh);
+        assert_eq!(ends, vec![[[1.0, 1.0, 0.0]; 2]]);
+        assert_eq!(colors, vec![[[1.0; 4]; 2]]);
+    }
 
     #[test]
     fn texture_slots_follow_the_shader_bindings() {

@@ -4,7 +4,7 @@
 use bytemuck::{Pod, Zeroable};
 
 use crate::render::draw_list::{
-    Camera, DrawList, LightKind, LightingModel, Material, Mesh, Projection, TextureRef,
+    Camera, DrawList, LightKind, LightingModel, Material, Mesh, Primitive, Projection, TextureRef,
     MAX_CLIP_PLANES, MAX_GRADIENT, MAX_LIGHTS, MAX_STAGES,
 };
 
@@ -23,6 +23,8 @@ pub struct GpuLight {
 pub struct Globals {
     view_projection: [[f32; 4]; 4],
     background_from_clip: [[f32; 4]; 4],
+    viewport: [f32; 4],
+    forward_near: [f32; 4],
     fog_color_range: [f32; 4],
     counts: [u32; 4],
     sky: [[f32; 4]; MAX_GRADIENT],
@@ -51,6 +53,8 @@ pub struct GpuDraw {
     sets_more: [u32; 4],
     factor: [f32; 4],
     cutoff: [f32; 4],
+    stroke: [f32; 4],
+    stroke_attenuation: [f32; 4],
     stages: [[u32; 4]; MAX_STAGES],
     clip_planes: [[f32; 4]; MAX_CLIP_PLANES],
 }
@@ -151,14 +155,26 @@ pub fn draw_uniform(mesh: &Mesh) -> GpuDraw {
         ],
         factor: textures.factor,
         cutoff: [mesh.alpha_cutoff, 0.0, 0.0, 0.0],
+        stroke: [
+            mesh.stroke.size,
+            mesh.stroke.min,
+            mesh.stroke.max,
+            f32::from(u8::from(mesh.primitive == Primitive::Points)),
+        ],
+        stroke_attenuation: {
+            let [a, b, c] = mesh.stroke.attenuation;
+            [a, b, c, 0.0]
+        },
         stages,
         clip_planes,
     }
 }
 
-pub fn globals(list: &DrawList, aspect: f32) -> Globals {
+/// The frame's uniforms for a `width` × `height` target drawn `scale` times larger than
+/// the image (supersampling): stroke sizes are in image pixels.
+pub fn globals(list: &DrawList, width: u32, height: u32, scale: u32) -> Globals {
     let camera = &list.camera;
-    let projection = projection(camera, aspect);
+    let projection = projection(camera, width as f32 / height as f32);
     let view = glam::Mat4::from_quat(camera.orientation.inverse());
     let view_projection = projection * view;
     let to_background = glam::Mat4::from_quat(list.background.orientation.inverse());
@@ -201,6 +217,11 @@ pub fn globals(list: &DrawList, aspect: f32) -> Globals {
     Globals {
         view_projection: view_projection.to_cols_array_2d(),
         background_from_clip: (to_background * view_projection.inverse()).to_cols_array_2d(),
+        viewport: [width as f32, height as f32, scale as f32, 0.0],
+        forward_near: {
+            let forward = camera.orientation * glam::Vec3::NEG_Z;
+            [forward.x, forward.y, forward.z, camera.near]
+        },
         fog_color_range,
         counts: [
             fog_kind,
