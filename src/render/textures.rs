@@ -112,12 +112,13 @@ fn decode(path: &Path) -> Result<Pixels, String> {
             "{width}×{height} is larger than {MAX_TEXTURE_SIDE} pixels a side"
         ));
     }
-    let image = image::ImageReader::open(path)
+    let mut reader = image::ImageReader::open(path)
         .map_err(|e| e.to_string())?
         .with_guessed_format()
-        .map_err(|e| e.to_string())?
-        .decode()
         .map_err(|e| e.to_string())?;
+    // The header's size was checked above; these also bound what decoding may allocate.
+    reader.limits(crate::validate::texturing::files::image_limits());
+    let image = reader.decode().map_err(|e| e.to_string())?;
     let channels = image.color().channel_count();
     let rgba = image.to_rgba8();
     Ok((rgba.into_raw(), width, height, channels))
