@@ -54,7 +54,10 @@ fn codes(report: &FileReport) -> Vec<&'static str> {
 
 /// The LIMIT_EXCEEDED messages, each with its line.
 fn limits_of(report: &FileReport) -> Vec<(usize, String)> {
-    let limits = report.diagnostics.iter().filter(|d| d.code == "LIMIT_EXCEEDED");
+    let limits = report
+        .diagnostics
+        .iter()
+        .filter(|d| d.code == "LIMIT_EXCEEDED");
     limits.map(|d| (d.line, d.message.clone())).collect()
 }
 
@@ -103,13 +106,26 @@ fn internal_entities_expand_and_external_ones_are_never_read() {
     // `&amp;#48;` is the text `&#48;`: a syntax error in an MFVec3f, found at its place.
     let parsed = x3dcheck::parse::xml::read(source.as_bytes());
     let doc = parsed.document.expect("a document");
-    let coordinate = doc.iter().find(|(_, n)| n.type_name() == "Coordinate").unwrap();
+    let coordinate = doc
+        .iter()
+        .find(|(_, n)| n.type_name() == "Coordinate")
+        .unwrap();
     let point = &coordinate.1.fields[0].value;
-    assert!(matches!(point, x3dcheck::model::Value::Unparsed(text) if text == "0 1 0 0 1 0 &#48; 0 0"));
+    assert!(
+        matches!(point, x3dcheck::model::Value::Unparsed(text) if text == "0 1 0 0 1 0 &#48; 0 0")
+    );
     let fine = source.replace(" &amp;#48; 0 0", "");
-    let doc = x3dcheck::parse::xml::read(fine.as_bytes()).document.unwrap();
-    let coordinate = doc.iter().find(|(_, n)| n.type_name() == "Coordinate").unwrap();
-    assert_eq!(coordinate.1.fields[0].value.as_floats(), Some(&[0., 1., 0., 0., 1., 0.][..]));
+    let doc = x3dcheck::parse::xml::read(fine.as_bytes())
+        .document
+        .unwrap();
+    let coordinate = doc
+        .iter()
+        .find(|(_, n)| n.type_name() == "Coordinate")
+        .unwrap();
+    assert_eq!(
+        coordinate.1.fields[0].value.as_floats(),
+        Some(&[0., 1., 0., 0., 1., 0.][..])
+    );
 
     let external = format!(
         "<!DOCTYPE X3D [<!ENTITY secret SYSTEM 'file:///etc/passwd'>]>\n{}",
@@ -117,8 +133,13 @@ fn internal_entities_expand_and_external_ones_are_never_read() {
     );
     let report = check(external);
     assert_eq!(codes(&report), ["XML_MALFORMED"]);
-    assert!(report.diagnostics[0].message.contains("unknown entity `&secret;`"));
-    assert_eq!((report.diagnostics[0].line, report.diagnostics[0].column), (3, 19));
+    assert!(report.diagnostics[0]
+        .message
+        .contains("unknown entity `&secret;`"));
+    assert_eq!(
+        (report.diagnostics[0].line, report.diagnostics[0].column),
+        (3, 19)
+    );
 }
 
 #[test]
@@ -137,7 +158,11 @@ fn billion_laughs_through_def_and_use_is_checked_quickly() {
 #[test]
 fn nesting_a_hundred_thousand_levels_deep_does_not_overflow_the_stack() {
     let levels = 100_000;
-    let xml = scene(&format!("{}{}", "<Group>".repeat(levels), "</Group>".repeat(levels)));
+    let xml = scene(&format!(
+        "{}{}",
+        "<Group>".repeat(levels),
+        "</Group>".repeat(levels)
+    ));
     let report = check(xml);
     let limits = limits_of(&report);
     assert_eq!(limits.len(), 1);
@@ -160,28 +185,40 @@ fn more_nodes_than_the_limit_are_not_read() {
     assert_eq!(report.stats.nodes, MAX_NODES);
     let limits = limits_of(&report);
     assert_eq!(limits.len(), 1);
-    assert!(limits[0].1.contains(&format!("more than {MAX_NODES} nodes")));
+    assert!(limits[0]
+        .1
+        .contains(&format!("more than {MAX_NODES} nodes")));
 }
 
 #[test]
 fn more_fields_than_the_limit_are_not_read() {
-    let attributes: String = (0..MAX_FIELDS_PER_NODE + 10).map(|i| format!(" a{i}=''")).collect();
+    let attributes: String = (0..MAX_FIELDS_PER_NODE + 10)
+        .map(|i| format!(" a{i}=''"))
+        .collect();
     let report = check(scene(&format!("<Group{attributes}/>")));
     let limits = limits_of(&report);
     assert_eq!(limits.len(), 1, "{limits:?}");
-    assert!(limits[0].1.contains(&format!("more than {MAX_FIELDS_PER_NODE} attributes")));
-    let unknown = codes(&report).iter().filter(|c| **c == "FIELD_UNKNOWN").count();
+    assert!(limits[0]
+        .1
+        .contains(&format!("more than {MAX_FIELDS_PER_NODE} attributes")));
+    let unknown = codes(&report)
+        .iter()
+        .filter(|c| **c == "FIELD_UNKNOWN")
+        .count();
     assert_eq!(unknown, MAX_FIELDS_PER_NODE);
 
-    let members: Vec<String> =
-        (0..MAX_FIELDS_PER_NODE + 10).map(|i| format!(r#""@a{i}":"""#)).collect();
+    let members: Vec<String> = (0..MAX_FIELDS_PER_NODE + 10)
+        .map(|i| format!(r#""@a{i}":"""#))
+        .collect();
     let json = format!(
         r#"{{"X3D":{{"@version":"4.0","Scene":{{"-children":[{{"Group":{{{}}}}}]}}}}}}"#,
         members.join(",")
     );
     let limits = limits_of(&check(json));
     assert_eq!(limits.len(), 1, "{limits:?}");
-    assert!(limits[0].1.contains(&format!("more than {MAX_FIELDS_PER_NODE} fields")));
+    assert!(limits[0]
+        .1
+        .contains(&format!("more than {MAX_FIELDS_PER_NODE} fields")));
 }
 
 #[test]
@@ -193,7 +230,9 @@ fn a_field_of_more_values_than_the_limit_is_not_read() {
     let limits = limits_of(&report);
     assert_eq!(limits.len(), 1, "{limits:?}");
     assert_eq!(limits[0].0, 2);
-    assert!(limits[0].1.contains(&format!("more than {MAX_FIELD_VALUES}")));
+    assert!(limits[0]
+        .1
+        .contains(&format!("more than {MAX_FIELD_VALUES}")));
 }
 
 #[test]
@@ -202,7 +241,9 @@ fn findings_stop_at_the_limit() {
     assert!(report.diagnostics.len() <= MAX_DIAGNOSTICS + 2);
     let limits = limits_of(&report);
     assert_eq!(limits.len(), 1, "{limits:?}");
-    assert!(limits[0].1.contains(&format!("more than {MAX_DIAGNOSTICS} findings")));
+    assert!(limits[0]
+        .1
+        .contains(&format!("more than {MAX_DIAGNOSTICS} findings")));
 }
 
 #[test]
@@ -246,7 +287,11 @@ fn crc32(bytes: &[u8]) -> u32 {
     for &byte in bytes {
         crc ^= byte as u32;
         for _ in 0..8 {
-            crc = if crc & 1 == 1 { (crc >> 1) ^ 0xEDB8_8320 } else { crc >> 1 };
+            crc = if crc & 1 == 1 {
+                (crc >> 1) ^ 0xEDB8_8320
+            } else {
+                crc >> 1
+            };
         }
     }
     !crc
@@ -296,14 +341,24 @@ fn urls_leaving_the_tree_are_not_read() {
     ));
     let report = check_at(tree.join("scene.x3d").to_str().unwrap(), source);
     assert!(limits_of(&report).is_empty(), "{report:?}");
-    let messages: Vec<&str> = report.diagnostics.iter().map(|d| d.message.as_str()).collect();
+    let messages: Vec<&str> = report
+        .diagnostics
+        .iter()
+        .map(|d| d.message.as_str())
+        .collect();
     let outside = |field: &str| {
         messages
             .iter()
             .any(|m| m.starts_with(field) && m.contains("outside the directory tree"))
     };
-    assert!(outside("ImageTexture.url") && outside("Inline.url"), "{messages:#?}");
-    assert!(!codes(&report).contains(&"IMAGE_UNREADABLE"), "{messages:#?}");
+    assert!(
+        outside("ImageTexture.url") && outside("Inline.url"),
+        "{messages:#?}"
+    );
+    assert!(
+        !codes(&report).contains(&"IMAGE_UNREADABLE"),
+        "{messages:#?}"
+    );
 }
 
 #[test]
@@ -326,7 +381,10 @@ fn network_urls_get_no_connection() {
     let path = dir.join("scene.x3d");
     fs::write(&path, &source).unwrap();
     let report = check_at(path.to_str().unwrap(), source);
-    let not_fetched = report.diagnostics.iter().filter(|d| d.message.contains("is not fetched"));
+    let not_fetched = report
+        .diagnostics
+        .iter()
+        .filter(|d| d.message.contains("is not fetched"));
     assert_eq!(not_fetched.count(), 4, "{report:?}");
     let mut args = vec!["--level", "deep", "scene.x3d"];
     if cfg!(feature = "render") {
@@ -376,11 +434,17 @@ fn input_files_are_never_written() {
     let before = snapshot(&inputs);
     std::thread::sleep(Duration::from_millis(20));
     for format in ["json", "sarif", "junit", "human"] {
-        let output = x3dcheck(&dir, &["--level", "deep", "--format", format, "-o", "report", "in"]);
+        let output = x3dcheck(
+            &dir,
+            &["--level", "deep", "--format", format, "-o", "report", "in"],
+        );
         assert_eq!(output.status.code(), Some(1), "{output:?}");
     }
     if cfg!(feature = "render") {
-        let output = x3dcheck(&dir, &["--render", "out.png", "--size", "32x24", "in/scene.x3d"]);
+        let output = x3dcheck(
+            &dir,
+            &["--render", "out.png", "--size", "32x24", "in/scene.x3d"],
+        );
         assert!(output.status.code().is_some_and(|c| c < 2), "{output:?}");
     }
     assert_eq!(snapshot(&inputs), before);

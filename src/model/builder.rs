@@ -239,9 +239,8 @@ impl Builder {
         if self.doc.nodes[node.index()].fields.len() < MAX_FIELDS_PER_NODE {
             return true;
         }
-        let message = format!(
-            "a node with more than {MAX_FIELDS_PER_NODE} fields; the rest are not read"
-        );
+        let message =
+            format!("a node with more than {MAX_FIELDS_PER_NODE} fields; the rest are not read");
         self.exceeded(Limit::FieldsPerNode, span, message);
         false
     }

@@ -196,7 +196,14 @@ mod tests {
 
     #[test]
     fn truncated_declarations_end_the_scan() {
-        for subset in ["<!ENTITY", "<!ENTITY a", "<!ENTITY a \"open", "<!--", "<?", "<!A '"] {
+        for subset in [
+            "<!ENTITY",
+            "<!ENTITY a",
+            "<!ENTITY a \"open",
+            "<!--",
+            "<?",
+            "<!A '",
+        ] {
             let _ = declarations(subset);
         }
     }
