@@ -323,6 +323,41 @@ fn image_bombs_are_refused_before_decoding() {
     assert!(!codes(&report).contains(&"IMAGE_UNREADABLE"));
 }
 
+#[cfg(feature = "render")]
+#[test]
+fn image_bombs_are_not_drawn() {
+    if std::env::var_os("X3DCHECK_NO_GPU").is_some_and(|v| v == "1") {
+        eprintln!("render test SKIPPED: X3DCHECK_NO_GPU=1");
+        return;
+    }
+    use x3dcheck::render::{render_image, ImageSize, Quality, RenderArgs};
+    let dir = scratch("render-bomb", &[]);
+    fs::write(dir.join("bomb.png"), png_claiming(100_000, 100_000)).unwrap();
+    let path = dir.join("scene.x3d");
+    let source =
+        scene("<Shape><Appearance><ImageTexture url='\"bomb.png\"'/></Appearance><Box/></Shape>");
+    let (mut report, doc) = x3dcheck::check::check_document(
+        path.to_str().unwrap(),
+        source.as_bytes(),
+        &CheckConfig::default(),
+    );
+    let args = RenderArgs {
+        render: None,
+        size: ImageSize {
+            width: 32,
+            height: 24,
+        },
+        quality: Quality::Fast,
+        camera: "auto".to_string(),
+    };
+    let started = Instant::now();
+    render_image(&args, &path, source.as_bytes(), doc.as_ref(), &mut report).unwrap();
+    assert!(started.elapsed() < QUICK);
+    let limits = limits_of(&report);
+    assert_eq!(limits.len(), 1, "{report:?}");
+    assert!(limits[0].1.contains("100000×100000"), "{limits:?}");
+}
+
 #[test]
 fn urls_leaving_the_tree_are_not_read() {
     let outer = scratch("outside", &[]);

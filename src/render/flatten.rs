@@ -42,6 +42,8 @@ pub struct Note {
     /// The node in the checked document (None inside an Inline file).
     pub node: Option<NodeId>,
     pub message: String,
+    /// Reported as LIMIT_EXCEEDED rather than VALIDATION_INCOMPLETE.
+    pub limit: bool,
 }
 
 pub struct Options<'a> {
@@ -173,6 +175,11 @@ pub fn flatten(doc: &Document, options: &Options) -> Result<Flattened, String> {
 
 impl Walker<'_> {
     fn note(&mut self, context: Context, node: NodeId, message: String) {
+        self.push_note(context, node, message, false);
+    }
+
+    /// A note; `limit` when a limit of [`crate::limits`] was reached.
+    fn push_note(&mut self, context: Context, node: NodeId, message: String, limit: bool) {
         let in_main = context.serial == 0;
         let message = if in_main {
             message
@@ -182,6 +189,7 @@ impl Walker<'_> {
         let note = Note {
             node: in_main.then_some(node),
             message: format!("renderer: {message}"),
+            limit,
         };
         if !self.notes.contains(&note) {
             self.notes.push(note);
@@ -221,6 +229,7 @@ impl Walker<'_> {
             message: format!(
                 "renderer: the scene expands to {expands} node instances; drawn up to {drawn}"
             ),
+            limit: false,
         });
     }
 
@@ -781,8 +790,8 @@ impl Walker<'_> {
                     self.textures.push(loaded.texture);
                     Some((self.textures.len() - 1, loaded.channels, loaded.translucent))
                 }
-                Err(reason) => {
-                    self.note(context, texture, reason);
+                Err(not_drawn) => {
+                    self.push_note(context, texture, not_drawn.message, not_drawn.limit);
                     None
                 }
             };
