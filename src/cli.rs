@@ -156,6 +156,9 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
         && io::stdout().is_terminal()
         && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty());
     let (inputs, mut failed) = find_inputs(&args.paths, args.shard);
+    for output in [&args.output, &args.render.render].into_iter().flatten() {
+        refuse_input_as_output(&inputs, output)?;
+    }
     // Configuration errors stop the run before anything is checked.
     let configs = inputs
         .iter()
@@ -495,6 +498,39 @@ fn check_input(
         Ok((report, text))
     })
     .map_err(|_| failure)?
+}
+
+/// Inputs are only read: an output file (`-o`, `--render`) that is one of them, by any
+/// name or link, is refused before anything is checked or written.
+fn refuse_input_as_output(inputs: &[Input], output: &Path) -> Result<(), String> {
+    let Ok(output_file) = file_id(output) else {
+        return Ok(()); // Does not exist yet, so it is no input.
+    };
+    for input in inputs {
+        if let Input::File { path, .. } = input {
+            if file_id(path).is_ok_and(|id| id == output_file) {
+                return Err(format!(
+                    "{} is an input file; it would be overwritten by the output",
+                    output.display()
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// What makes two paths one file: device and inode on Unix (symlinks, `..` and hard links
+/// all lead to one), the canonical path elsewhere.
+#[cfg(unix)]
+fn file_id(path: &Path) -> io::Result<(u64, u64)> {
+    use std::os::unix::fs::MetadataExt;
+    let meta = fs::metadata(path)?;
+    Ok((meta.dev(), meta.ino()))
+}
+
+#[cfg(not(unix))]
+fn file_id(path: &Path) -> io::Result<PathBuf> {
+    path.canonicalize()
 }
 
 fn write_output(output: Option<&Path>, text: &str) -> Result<(), String> {

@@ -16,6 +16,8 @@ const SAMPLE_EVERY: usize = 12;
 /// Files above this size are skipped: mutants of big files only repeat the small ones.
 const MAX_BYTES: usize = 256 * 1024;
 const MAX_TIME_PER_MUTANT: Duration = Duration::from_secs(5);
+/// How often the growth mutant repeats its span.
+const GROWTH: usize = 2000;
 
 /// SplitMix64: a fixed sequence, so a failure reproduces.
 struct Rng(u64);
@@ -73,6 +75,56 @@ fn mutants(bytes: &[u8], rng: &mut Rng) -> Vec<(String, Vec<u8>)> {
     let mut deleted = bytes[..start].to_vec();
     deleted.extend_from_slice(&bytes[end..]);
     out.push((format!("bytes {start}..{end} deleted"), deleted));
+    // A short span repeated in place: an opening tag or bracket nests, a node or value
+    // repeats thousands of times (what grows time or memory faster than the input).
+    let end = (start + 1 + rng.below(40)).min(len);
+    let mut grown = bytes[..start].to_vec();
+    for _ in 0..GROWTH {
+        grown.extend_from_slice(&bytes[start..end]);
+    }
+    grown.extend_from_slice(&bytes[start..]);
+    out.push((
+        format!("bytes {start}..{end} repeated {GROWTH} times"),
+        grown,
+    ));
+    if bytes.trim_ascii_start().starts_with(b"{") {
+        out.extend(json_mutants(bytes, rng));
+    }
+    out
+}
+
+/// JSON only: a number after a random place made huge, tiny or long, and a string's
+/// closing quote dropped.
+fn json_mutants(bytes: &[u8], rng: &mut Rng) -> Vec<(String, Vec<u8>)> {
+    let mut out = Vec::new();
+    let from = rng.below(bytes.len());
+    if let Some(at) = bytes[from..]
+        .iter()
+        .position(u8::is_ascii_digit)
+        .map(|i| from + i)
+    {
+        for number in [
+            "1e999999999",
+            "-1e-999999999",
+            &"9".repeat(5000),
+            "0x10",
+            "01",
+        ] {
+            let mut mutant = bytes[..at].to_vec();
+            mutant.extend_from_slice(number.as_bytes());
+            mutant.extend_from_slice(&bytes[at..]);
+            out.push((format!("{number:.12} inserted at {at}"), mutant));
+        }
+    }
+    if let Some(at) = bytes[from..]
+        .iter()
+        .position(|&b| b == b'"')
+        .map(|i| from + i)
+    {
+        let mut mutant = bytes.to_vec();
+        mutant.remove(at);
+        out.push((format!("quote at {at} removed"), mutant));
+    }
     out
 }
 

@@ -33,13 +33,25 @@ pub struct Builder {
     scopes: Vec<Scope>,
     /// Nodes whose element is still open, innermost last: a USE of one of them is a cycle.
     open: Vec<NodeId>,
-    depth_reported: bool,
+    /// The limits already reported: each is reported once per document.
+    reported: Vec<Limit>,
 }
 
-/// The deepest chain of nodes (through USE too) the model holds. Walkers may recurse over
-/// the scene graph: this bounds their stack, and real scenes stay far below it (HAnim
-/// skeletons, the deepest common case, nest about 60 levels).
-pub const MAX_DEPTH: usize = 1000;
+/// The deepest chain of nodes (through USE too) the model holds.
+pub use crate::limits::MAX_DEPTH;
+use crate::limits::{MAX_DIAGNOSTICS, MAX_FIELDS_PER_NODE, MAX_FIELD_VALUES, MAX_NODES};
+
+/// A limit of [`crate::limits`] the builder enforces.
+#[derive(Copy, Clone, PartialEq, Eq, Debug)]
+pub enum Limit {
+    Depth,
+    Nodes,
+    FieldsPerNode,
+    FieldValues,
+    Diagnostics,
+    /// Found by the XML reader: entities declared in the DOCTYPE expand too far.
+    EntityExpansion,
+}
 
 impl Builder {
     pub fn new(encoding: Encoding) -> Builder {
@@ -48,7 +60,7 @@ impl Builder {
             diagnostics: Vec::new(),
             scopes: vec![Scope::Scene],
             open: Vec::new(),
-            depth_reported: false,
+            reported: Vec::new(),
         }
     }
 
@@ -60,8 +72,25 @@ impl Builder {
         &mut self.doc
     }
 
+    /// Keeps a finding; past [`MAX_DIAGNOSTICS`] they are dropped (and that is reported).
     pub fn report(&mut self, diagnostic: Diagnostic) {
-        self.diagnostics.push(diagnostic);
+        if self.diagnostics.len() < MAX_DIAGNOSTICS {
+            self.diagnostics.push(diagnostic);
+        } else {
+            let message = format!(
+                "more than {MAX_DIAGNOSTICS} findings while reading this document; the rest are not reported"
+            );
+            self.exceeded(Limit::Diagnostics, diagnostic.span, message);
+        }
+    }
+
+    /// Reports a limit of [`crate::limits`] at `span`, once per document and kind.
+    pub fn exceeded(&mut self, limit: Limit, span: Span, message: String) {
+        if !self.reported.contains(&limit) {
+            self.reported.push(limit);
+            self.diagnostics
+                .push(Diagnostic::new(&LIMIT_EXCEEDED, span, message));
+        }
     }
 
     /// The version whose schema applies (set the document's version first).
@@ -149,8 +178,8 @@ impl Builder {
     }
 
     /// Adds a new node under `parent` and opens it; close it with [`Builder::end_node`].
-    /// None when the node would stand deeper than [`MAX_DEPTH`]: the reader then skips it
-    /// and everything inside it.
+    /// None when the node would stand deeper than [`MAX_DEPTH`] or be one more than
+    /// [`MAX_NODES`]: the reader then skips it and everything inside it.
     pub fn begin_node(
         &mut self,
         kind: NodeKind,
@@ -159,6 +188,12 @@ impl Builder {
     ) -> Option<NodeId> {
         if self.open.len() >= MAX_DEPTH {
             self.too_deep(name_span);
+            return None;
+        }
+        if self.doc.nodes.len() >= MAX_NODES {
+            let message =
+                format!("the document has more than {MAX_NODES} nodes; the rest are not read");
+            self.exceeded(Limit::Nodes, name_span, message);
             return None;
         }
         let id = NodeId(self.doc.nodes.len() as u32);
@@ -173,7 +208,7 @@ impl Builder {
                 span,
                 is_use: false,
             },
-        );
+        )?;
         self.doc.nodes.push(Node {
             kind,
             span,
@@ -192,16 +227,22 @@ impl Builder {
         Some(id)
     }
 
-    /// Reports the depth limit, once per document.
     fn too_deep(&mut self, span: Span) {
-        if !self.depth_reported {
-            self.depth_reported = true;
-            self.report(Diagnostic::new(
-                &LIMIT_EXCEEDED,
-                span,
-                format!("the scene graph is nested deeper than {MAX_DEPTH} nodes here; deeper nodes are not read"),
-            ));
+        let message = format!(
+            "the scene graph is nested deeper than {MAX_DEPTH} nodes here; deeper nodes are not read"
+        );
+        self.exceeded(Limit::Depth, span, message);
+    }
+
+    /// Whether `node` may get one more field; reports the limit when not.
+    fn has_room_for_field(&mut self, node: NodeId, span: Span) -> bool {
+        if self.doc.nodes[node.index()].fields.len() < MAX_FIELDS_PER_NODE {
+            return true;
         }
+        let message =
+            format!("a node with more than {MAX_FIELDS_PER_NODE} fields; the rest are not read");
+        self.exceeded(Limit::FieldsPerNode, span, message);
+        false
     }
 
     /// Closes the innermost open node; `span` is its whole element or object.
@@ -350,13 +391,14 @@ impl Builder {
                 span: site,
                 is_use: true,
             },
-        );
+        )?;
         Some(target)
     }
 
-    /// Puts a child reference into its parent and says where it went.
-    fn attach(&mut self, parent: Parent, child: ChildRef) -> Place {
-        match parent {
+    /// Puts a child reference into its parent and says where it went; None when the
+    /// parent has no room for another field.
+    fn attach(&mut self, parent: Parent, child: ChildRef) -> Option<Place> {
+        let place = match parent {
             Parent::TopLevel => match self.scope() {
                 Scope::Scene => {
                     self.doc.scene.push(child);
@@ -371,7 +413,7 @@ impl Builder {
                 let interface = &mut self.doc.protos[proto].interface;
                 let index = match interface.iter().rposition(|f| f.name.text == field) {
                     Some(index) => index,
-                    None => return Place::Scene,
+                    None => return Some(Place::Scene),
                 };
                 let (value, _) = interface[index]
                     .value
@@ -393,7 +435,7 @@ impl Builder {
                 field_span,
                 origin,
             } => {
-                let entry = self.node_field_entry(node, field, field_span, origin, child.span);
+                let entry = self.node_field_entry(node, field, field_span, origin, child.span)?;
                 if let Value::Nodes(children) =
                     &mut self.doc.nodes[node.index()].fields[entry].value
                 {
@@ -404,7 +446,8 @@ impl Builder {
                     entry: entry as u32,
                 }
             }
-        }
+        };
+        Some(place)
     }
 
     /// The entry of a node field that children accumulate in, made on first use.
@@ -415,13 +458,17 @@ impl Builder {
         field_span: Span,
         origin: Origin,
         first_child: Span,
-    ) -> usize {
+    ) -> Option<usize> {
         let fields = &self.doc.nodes[node.index()].fields;
         if let Some(i) = fields.iter().position(|e| {
             e.name() == field && matches!(e.value, Value::Nodes(_)) && e.origin == origin
         }) {
-            return i;
+            return Some(i);
         }
+        if !self.has_room_for_field(node, field_span) {
+            return None;
+        }
+        let fields = &self.doc.nodes[node.index()].fields;
         if let Some(first) = fields.iter().find(|e| e.name() == field) {
             let diagnostic = Diagnostic::new(
                 &FIELD_DUPLICATE,
@@ -441,12 +488,25 @@ impl Builder {
             origin,
             value: Value::Nodes(Vec::new()),
         });
-        fields.len() - 1
+        Some(fields.len() - 1)
     }
 
     /// Sets a field from a value the reader parsed. A field already set keeps its first
-    /// value and the repeat is reported.
-    pub fn add_field(&mut self, node: NodeId, entry: FieldEntry) {
+    /// value and the repeat is reported. A value of more than [`MAX_FIELD_VALUES`] values
+    /// is not kept (the field stays, unparsed, so that the rules skip it).
+    pub fn add_field(&mut self, node: NodeId, mut entry: FieldEntry) {
+        if entry.value.len() > MAX_FIELD_VALUES {
+            let message = format!(
+                "`{}` holds {} values, more than {MAX_FIELD_VALUES}; it is not read",
+                entry.name(),
+                entry.value.len()
+            );
+            self.exceeded(Limit::FieldValues, entry.span, message);
+            entry.value = Value::Unparsed(String::new());
+        }
+        if !self.has_room_for_field(node, entry.name_span) {
+            return;
+        }
         let fields = &self.doc.nodes[node.index()].fields;
         if let Some(first) = fields.iter().find(|f| f.name() == entry.name()) {
             let diagnostic = Diagnostic::new(

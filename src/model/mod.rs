@@ -38,7 +38,7 @@ impl Span {
 }
 
 /// Inputs are addressed with u32 offsets; larger files are refused with a diagnostic.
-pub const MAX_INPUT_BYTES: usize = u32::MAX as usize;
+pub use crate::limits::MAX_INPUT_BYTES;
 
 /// A node's place in the arena.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]

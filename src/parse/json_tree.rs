@@ -14,7 +14,7 @@
 use std::borrow::Cow;
 
 /// Nesting deeper than this (arrays and objects) is refused.
-pub const MAX_DEPTH: usize = 10_000;
+pub const MAX_DEPTH: usize = crate::limits::MAX_JSON_NESTING;
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub enum Kind {

@@ -5,6 +5,7 @@ mod detect;
 pub mod json;
 pub mod number;
 pub mod xml;
+mod xml_entities;
 pub mod xml_value;
 
 pub use crate::check::Parsed;

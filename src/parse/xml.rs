@@ -6,11 +6,13 @@ use std::borrow::Cow;
 
 use quick_xml::events::attributes::Attribute;
 use quick_xml::events::{BytesStart, Event};
-use quick_xml::{Reader, XmlVersion};
+use quick_xml::Reader;
 
+use super::xml_entities::{Entities, ExpandError};
 use super::xml_value;
 use crate::check::Parsed;
-use crate::model::builder::Parent;
+use crate::limits::{MAX_FIELDS_PER_NODE, MAX_INPUT_BYTES};
+use crate::model::builder::{Limit, Parent};
 use crate::model::*;
 use crate::report::Diagnostic;
 use crate::schema::{AccessType, FieldType, Scalar};
@@ -26,6 +28,7 @@ pub fn read(source: &[u8]) -> Parsed {
         builder: Builder::new(Encoding::Xml),
         stack: Vec::new(),
         root_closed: false,
+        entities: Entities::default(),
     };
     let result = reader.run();
     let (document, mut diagnostics) = reader.builder.finish();
@@ -96,6 +99,8 @@ struct XmlReader<'s> {
     builder: Builder,
     stack: Vec<Frame>,
     root_closed: bool,
+    /// Declared in the DOCTYPE's internal subset.
+    entities: Entities,
 }
 
 /// An attribute's name and value as text, with the value's place in the input.
@@ -111,6 +116,9 @@ struct Attr<'a> {
 
 impl<'s> XmlReader<'s> {
     fn run(&mut self) -> Result<(), Box<Diagnostic>> {
+        if self.source.len() > MAX_INPUT_BYTES {
+            return Err(self.malformed(0, "the input is larger than 4 GiB"));
+        }
         let mut reader = Reader::from_reader(self.source);
         reader.config_mut().check_end_names = true;
         loop {
@@ -133,7 +141,8 @@ impl<'s> XmlReader<'s> {
                 Event::CData(_) => self.text(start, end, true)?,
                 Event::Text(_) | Event::GeneralRef(_) => self.text(start, end, false)?,
                 Event::Eof => break,
-                Event::Comment(_) | Event::Decl(_) | Event::PI(_) | Event::DocType(_) => {}
+                Event::DocType(doctype) => self.entities.declare(&doctype),
+                Event::Comment(_) | Event::Decl(_) | Event::PI(_) => {}
             }
         }
         if !self.stack.is_empty() {
@@ -187,13 +196,26 @@ impl<'s> XmlReader<'s> {
         Ok(())
     }
 
+    /// The attributes of an element, at most [`MAX_FIELDS_PER_NODE`] of them (quick-xml's
+    /// duplicate check is linear per attribute). An attribute whose entity references go
+    /// past a limit is left out and the limit reported.
     fn attributes<'a>(
-        &self,
+        &mut self,
         element: &'a BytesStart<'a>,
         element_start: usize,
     ) -> Result<Vec<Attr<'a>>, Box<Diagnostic>> {
         let mut out = Vec::new();
-        for attribute in element.attributes().with_checks(true) {
+        let mut attributes = element.attributes();
+        attributes.with_checks(true);
+        for (count, attribute) in attributes.enumerate() {
+            if count == MAX_FIELDS_PER_NODE {
+                let at = Span::new(element_start + 1, element_start + 1);
+                let message = format!(
+                    "an element with more than {MAX_FIELDS_PER_NODE} attributes; the rest are not read"
+                );
+                self.builder.exceeded(Limit::FieldsPerNode, at, message);
+                break;
+            }
             let attribute: Attribute<'a> =
                 attribute.map_err(|e| self.malformed(element_start, &e.to_string()))?;
             let name: &'a str = attribute.key.0;
@@ -212,9 +234,17 @@ impl<'s> XmlReader<'s> {
             // get XML's whitespace normalization in `parse_attr_value`. This spares a copy
             // of every multi-line coordinate list.
             let (value, verbatim) = if raw.contains('&') {
-                let normalized = attribute
-                    .normalized_value(XmlVersion::Implicit1_0)
-                    .map_err(|e| self.malformed(value_span.start as usize, &e.to_string()))?;
+                let normalized = match self.entities.expand(&attribute) {
+                    Ok(normalized) => normalized,
+                    Err(ExpandError::Malformed { at, message }) => {
+                        return Err(self.malformed(value_span.start as usize + at, &message))
+                    }
+                    Err(ExpandError::Limit(message)) => {
+                        self.builder
+                            .exceeded(Limit::EntityExpansion, value_span, message);
+                        continue;
+                    }
+                };
                 let verbatim = normalized.len() == raw.len();
                 (normalized, verbatim)
             } else {

@@ -1,7 +1,8 @@
 //! Preview rendering (`--render OUT.png`): [`flatten`] turns the scene model into a
 //! [`draw_list::DrawList`] (its guarantees are written there), [`gpu`] draws it offscreen
 //! with wgpu, on any adapter including software ones (lavapipe, llvmpipe). What cannot be
-//! drawn is reported as VALIDATION_INCOMPLETE info diagnostics beginning "renderer:".
+//! drawn is reported as VALIDATION_INCOMPLETE info diagnostics beginning "renderer:" (an
+//! image past the size limit of [`crate::limits`] as LIMIT_EXCEEDED).
 
 //!
 //! The options ([`RenderArgs`]) always exist; the renderer itself is built with the
@@ -46,6 +47,8 @@ use crate::model::Document;
 use crate::report::FileReport;
 #[cfg(feature = "render")]
 use crate::report::{resolve, Diagnostic};
+#[cfg(feature = "render")]
+use crate::validate::document::limit_exceeded::LIMIT_EXCEEDED;
 #[cfg(feature = "render")]
 use crate::validate::document::validation_incomplete::VALIDATION_INCOMPLETE;
 
@@ -166,7 +169,12 @@ pub fn preview(
         .iter()
         .map(|note| {
             let span = note.node.map_or(doc.root_span, |n| doc.node(n).name_span);
-            let mut d = Diagnostic::new(&VALIDATION_INCOMPLETE, span, note.message.clone());
+            let rule = if note.limit {
+                &LIMIT_EXCEEDED
+            } else {
+                &VALIDATION_INCOMPLETE
+            };
+            let mut d = Diagnostic::new(rule, span, note.message.clone());
             d.node = note.node;
             d
         })

@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 
 use super::draw_list::{Texture, Wrap};
 use super::fields::{boolean, child, float};
+use crate::limits::MAX_IMAGE_SIDE;
 use crate::model::{Document, NodeId};
 
 /// The largest texture side loaded (larger images are reported, not drawn).
@@ -20,13 +21,35 @@ pub struct Loaded {
     pub translucent: bool,
 }
 
+/// Why a texture is not drawn.
+pub struct NotDrawn {
+    pub message: String,
+    /// Whether an image went past [`MAX_IMAGE_SIDE`] (reported as LIMIT_EXCEEDED).
+    pub limit: bool,
+}
+
+impl From<String> for NotDrawn {
+    fn from(message: String) -> NotDrawn {
+        NotDrawn {
+            message,
+            limit: false,
+        }
+    }
+}
+
+impl From<&str> for NotDrawn {
+    fn from(message: &str) -> NotDrawn {
+        NotDrawn::from(message.to_string())
+    }
+}
+
 /// Loads a single-image texture node, or says why it cannot be drawn.
-pub fn load(doc: &Document, node: NodeId, base: &Path, root: &Path) -> Result<Loaded, String> {
+pub fn load(doc: &Document, node: NodeId, base: &Path, root: &Path) -> Result<Loaded, NotDrawn> {
     let type_name = doc.node(node).type_name();
     let (rgba, width, height, channels) = match type_name {
         "ImageTexture" => image_texture(doc, node, base, root)?,
         "PixelTexture" => pixel_texture(doc, node)?,
-        other => return Err(format!("{other} is not drawn")),
+        other => return Err(format!("{other} is not drawn").into()),
     };
     let translucent = rgba.chunks_exact(4).any(|p| p[3] < 255);
     let sampling = Sampling::of(doc, node);
@@ -157,25 +180,37 @@ fn mipmaps(rgba: Vec<u8>, width: u32, height: u32) -> Vec<Vec<u8>> {
 
 type Pixels = (Vec<u8>, u32, u32, u8);
 
-fn image_texture(doc: &Document, node: NodeId, base: &Path, root: &Path) -> Result<Pixels, String> {
+fn image_texture(
+    doc: &Document,
+    node: NodeId,
+    base: &Path,
+    root: &Path,
+) -> Result<Pixels, NotDrawn> {
     let urls = doc
         .value_of(node, "url")
         .and_then(|v| v.as_strings().map(<[String]>::to_vec))
         .unwrap_or_default();
     let mut reasons = Vec::new();
+    let mut limit = false;
     for url in &urls {
         match local_file(url, base, root) {
             Ok(path) => match decode(&path) {
                 Ok(pixels) => return Ok(pixels),
-                Err(e) => reasons.push(format!("{url}: {e}")),
+                Err(e) => {
+                    limit |= e.limit;
+                    reasons.push(format!("{url}: {}", e.message));
+                }
             },
             Err(e) => reasons.push(format!("{url}: {e}")),
         }
     }
     if reasons.is_empty() {
-        return Err("ImageTexture has no url".to_string());
+        return Err("ImageTexture has no url".into());
     }
-    Err(format!("ImageTexture not drawn ({})", reasons.join("; ")))
+    Err(NotDrawn {
+        message: format!("ImageTexture not drawn ({})", reasons.join("; ")),
+        limit,
+    })
 }
 
 /// A url as a file under `root` (the directory tree of the named document), or why not.
@@ -201,23 +236,30 @@ pub fn local_file(url: &str, base: &Path, root: &Path) -> Result<PathBuf, String
     Ok(canonical)
 }
 
-fn decode(path: &Path) -> Result<Pixels, String> {
+fn decode(path: &Path) -> Result<Pixels, NotDrawn> {
     let reader = image::ImageReader::open(path)
         .map_err(|e| e.to_string())?
         .with_guessed_format()
         .map_err(|e| e.to_string())?;
     let (width, height) = reader.into_dimensions().map_err(|e| e.to_string())?;
-    if width > MAX_TEXTURE_SIDE || height > MAX_TEXTURE_SIDE {
-        return Err(format!(
-            "{width}×{height} is larger than {MAX_TEXTURE_SIDE} pixels a side"
-        ));
+    if width > MAX_IMAGE_SIDE || height > MAX_IMAGE_SIDE {
+        return Err(NotDrawn {
+            message: format!("{width}×{height} is larger than {MAX_IMAGE_SIDE} pixels a side"),
+            limit: true,
+        });
     }
-    let image = image::ImageReader::open(path)
+    if width > MAX_TEXTURE_SIDE || height > MAX_TEXTURE_SIDE {
+        return Err(
+            format!("{width}×{height} is larger than {MAX_TEXTURE_SIDE} pixels a side").into(),
+        );
+    }
+    let mut reader = image::ImageReader::open(path)
         .map_err(|e| e.to_string())?
         .with_guessed_format()
-        .map_err(|e| e.to_string())?
-        .decode()
         .map_err(|e| e.to_string())?;
+    // The header's size was checked above; these also bound what decoding may allocate.
+    reader.limits(crate::validate::texturing::files::image_limits());
+    let image = reader.decode().map_err(|e| e.to_string())?;
     let channels = image.color().channel_count();
     let rgba = image.to_rgba8();
     Ok((rgba.into_raw(), width, height, channels))

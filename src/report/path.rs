@@ -9,14 +9,73 @@
 //!
 //! Nodes in a ProtoBody start at `/X3D/Scene/ProtoDeclare[@name='P']/ProtoBody`; initial
 //! values of a ProtoInterface field at `…/ProtoInterface/field[@name='f']`. The walk follows
-//! `Node::place` upward: O(depth × siblings), done only for reported diagnostics.
+//! `Node::place` upward, done only for reported diagnostics. Positions among siblings are
+//! counted for the whole document in one pass, the first time one is needed, so that many
+//! diagnostics on the nodes of one long list cost O(nodes), not O(nodes × siblings).
 
-use crate::model::{ChildRef, Document, NodeId, Place, Value};
+use std::cell::OnceCell;
+use std::collections::HashMap;
+
+use crate::model::{Document, NodeId, Place, Value};
 
 /// The path of diagnostics that concern no node.
 pub const ROOT: &str = "/X3D";
 
-pub fn node_path(doc: &Document, id: NodeId) -> String {
+/// The paths of one document's nodes.
+pub struct NodePaths<'d> {
+    doc: &'d Document,
+    /// Per node: its 1-based position among the same-type references of its parent field.
+    positions: OnceCell<Vec<u32>>,
+}
+
+impl<'d> NodePaths<'d> {
+    pub fn new(doc: &'d Document) -> NodePaths<'d> {
+        NodePaths {
+            doc,
+            positions: OnceCell::new(),
+        }
+    }
+
+    pub fn path(&self, id: NodeId) -> String {
+        node_path(self.doc, id, |id| self.position(id))
+    }
+
+    fn position(&self, id: NodeId) -> u32 {
+        let positions = self.positions.get_or_init(|| positions(self.doc));
+        positions.get(id.index()).copied().unwrap_or(1).max(1)
+    }
+}
+
+/// Every node's position among the references of the same type in its sibling list.
+fn positions(doc: &Document) -> Vec<u32> {
+    let mut positions = vec![0u32; doc.nodes.len()];
+    let lists = doc
+        .nodes
+        .iter()
+        .flat_map(|n| n.fields.iter().filter_map(|f| f.value.as_nodes()))
+        .chain(doc.protos.iter().flat_map(|p| {
+            let interface = p.interface.iter();
+            let values = interface.filter_map(|f| f.value.as_ref().and_then(|(v, _)| v.as_nodes()));
+            values.chain(std::iter::once(&p.body[..]))
+        }))
+        .chain(std::iter::once(&doc.scene[..]));
+    for siblings in lists {
+        let mut seen: HashMap<&str, u32> = HashMap::new();
+        for sibling in siblings {
+            let Some(node) = doc.nodes.get(sibling.node.index()) else {
+                continue;
+            };
+            let count = seen.entry(node.type_name()).or_default();
+            *count += 1;
+            if !sibling.is_use {
+                positions[sibling.node.index()] = *count;
+            }
+        }
+    }
+    positions
+}
+
+fn node_path(doc: &Document, id: NodeId, position: impl Fn(NodeId) -> u32) -> String {
     let mut steps = Vec::new();
     let mut current = id;
     let root = loop {
@@ -29,12 +88,11 @@ pub fn node_path(doc: &Document, id: NodeId) -> String {
         }
         match node.place {
             Place::Scene => {
-                steps.push(step(doc, current, &doc.scene, true));
+                steps.push(step(doc, current, true, &position));
                 break "/X3D/Scene".to_string();
             }
             Place::ProtoBody { proto } => {
-                let body = doc.protos.get(proto).map_or(&[][..], |p| &p.body[..]);
-                steps.push(step(doc, current, body, true));
+                steps.push(step(doc, current, true, &position));
                 break format!("{}/ProtoBody", proto_declare(doc, proto));
             }
             Place::ProtoField { proto, field } => {
@@ -49,7 +107,7 @@ pub fn node_path(doc: &Document, id: NodeId) -> String {
                 let multiple = decl
                     .and_then(|f| f.ty)
                     .map_or(siblings.len() > 1, |t| t.is_mf());
-                steps.push(step(doc, current, siblings, multiple));
+                steps.push(step(doc, current, multiple, &position));
                 let name = decl.map_or("", |f| f.name.text.as_str());
                 break format!(
                     "{}/ProtoInterface/field[@name={}]",
@@ -71,7 +129,7 @@ pub fn node_path(doc: &Document, id: NodeId) -> String {
                 let multiple = entry
                     .and_then(|e| e.field_type())
                     .map_or(siblings.len() > 1, |t| t.is_mf());
-                steps.push(step(doc, current, siblings, multiple));
+                steps.push(step(doc, current, multiple, &position));
                 current = parent;
             }
         }
@@ -84,7 +142,7 @@ pub fn node_path(doc: &Document, id: NodeId) -> String {
     path
 }
 
-fn step(doc: &Document, id: NodeId, siblings: &[ChildRef], multiple: bool) -> String {
+fn step(doc: &Document, id: NodeId, multiple: bool, position: impl Fn(NodeId) -> u32) -> String {
     let node = doc.node(id);
     let ty = node.type_name();
     if let Some(def) = &node.def_name {
@@ -93,18 +151,7 @@ fn step(doc: &Document, id: NodeId, siblings: &[ChildRef], multiple: bool) -> St
     if !multiple {
         return ty.to_string();
     }
-    let mut position = 0;
-    for sibling in siblings {
-        let same_type = doc
-            .nodes
-            .get(sibling.node.index())
-            .is_some_and(|n| n.type_name() == ty);
-        position += usize::from(same_type);
-        if sibling.node == id && !sibling.is_use {
-            break;
-        }
-    }
-    format!("{ty}[{}]", position.max(1))
+    format!("{ty}[{}]", position(id))
 }
 
 fn proto_declare(doc: &Document, proto: usize) -> String {
@@ -159,7 +206,7 @@ mod tests {
         }
 
         fn path(&self, id: NodeId) -> String {
-            node_path(self.0.doc(), id)
+            NodePaths::new(self.0.doc()).path(id)
         }
     }
 

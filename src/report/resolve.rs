@@ -3,7 +3,7 @@
 //! its source is at hand, only for the diagnostics that are reported.
 
 use super::line_index::LineIndex;
-use super::path::{node_path, ROOT};
+use super::path::{NodePaths, ROOT};
 use super::Diagnostic;
 use crate::model::{Document, Span};
 use crate::validate::Severity;
@@ -58,13 +58,14 @@ pub fn resolve(diagnostics: &[Diagnostic], source: &[u8], doc: Option<&Document>
     offsets.dedup();
     let positions = LineIndex::new(source).line_cols(&offsets);
     let at = |offset: u32| positions[offsets.binary_search(&(offset as usize)).unwrap_or(0)];
+    let paths = doc.map(NodePaths::new);
     diagnostics
         .iter()
         .map(|d| {
             let start = at(d.span.start);
             let end = at(d.span.end.max(d.span.start));
-            let path = match (doc, d.node) {
-                (Some(doc), Some(node)) => node_path(doc, node),
+            let path = match (&paths, d.node) {
+                (Some(paths), Some(node)) => paths.path(node),
                 _ => ROOT.to_string(),
             };
             Resolved {

@@ -17,6 +17,8 @@ pub use registry::{find_rule, RULES};
 pub use rule::{Level, Rule, Severity};
 
 use crate::config::CheckConfig;
+use crate::limits::MAX_DIAGNOSTICS;
+use document::limit_exceeded::LIMIT_EXCEEDED;
 use std::collections::HashMap;
 
 use crate::model::{Document, FieldEntry, NodeId, Span};
@@ -36,6 +38,8 @@ pub struct Ctx<'a> {
     diagnostics: Vec<Diagnostic>,
     /// Folded findings: (code, node, field) → index in `diagnostics`.
     folded: HashMap<(&'static str, NodeId, String), usize>,
+    /// Whether [`MAX_DIAGNOSTICS`] was reached (and reported).
+    full: bool,
 }
 
 /// How many element indices a folded diagnostic lists.
@@ -43,7 +47,32 @@ pub const FOLDED_INDICES: usize = 10;
 
 impl Ctx<'_> {
     pub fn report(&mut self, diagnostic: Diagnostic) {
-        self.diagnostics.push(diagnostic);
+        if self.has_room() {
+            self.diagnostics.push(diagnostic);
+        }
+    }
+
+    /// Whether findings are no longer kept, so that a rule that may report one per node
+    /// can stop before it spends time on what would be dropped.
+    pub fn is_full(&mut self) -> bool {
+        !self.has_room()
+    }
+
+    /// Whether another finding may be kept: past [`MAX_DIAGNOSTICS`] they are dropped, and
+    /// that is reported once.
+    fn has_room(&mut self) -> bool {
+        if self.diagnostics.len() < MAX_DIAGNOSTICS {
+            return true;
+        }
+        if !self.full {
+            self.full = true;
+            self.diagnostics.push(Diagnostic::new(
+                &LIMIT_EXCEEDED,
+                self.doc.root_span,
+                format!("more than {MAX_DIAGNOSTICS} findings in this document; the rest are not reported"),
+            ));
+        }
+        false
     }
 
     /// Reports a finding that can repeat along one field (a bad index, a short polygon).
@@ -59,7 +88,9 @@ impl Ctx<'_> {
         make: impl FnOnce() -> Diagnostic,
     ) {
         if !self.config.fold {
-            self.diagnostics.push(make().index(index));
+            if self.has_room() {
+                self.diagnostics.push(make().index(index));
+            }
             return;
         }
         let key = (rule.code, node, field.to_string());
@@ -69,6 +100,9 @@ impl Ctx<'_> {
             if folded.indices.len() < FOLDED_INDICES {
                 folded.indices.push(index);
             }
+            return;
+        }
+        if !self.has_room() {
             return;
         }
         let mut diagnostic = make().index(index);
@@ -140,6 +174,7 @@ pub fn check(
         base,
         diagnostics: Vec::new(),
         folded: HashMap::new(),
+        full: false,
     };
     for rule in RULES.iter() {
         if let Some(check) = rule.check {

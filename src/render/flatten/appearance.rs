@@ -390,8 +390,8 @@ impl Walker<'_> {
                     })
                 }
             }
-            Err(reason) => {
-                self.note(context, texture, reason);
+            Err(not_drawn) => {
+                self.push_note(context, texture, not_drawn.message, not_drawn.limit);
                 None
             }
         };

@@ -45,6 +45,8 @@ pub struct Note {
     /// The node in the checked document (None inside an Inline file).
     pub node: Option<NodeId>,
     pub message: String,
+    /// Reported as LIMIT_EXCEEDED rather than VALIDATION_INCOMPLETE.
+    pub limit: bool,
 }
 
 pub struct Options<'a> {
@@ -141,6 +143,11 @@ pub fn flatten(doc: &Document, options: &Options) -> Result<Flattened, String> {
 
 impl Walker<'_> {
     fn note(&mut self, context: Context, node: NodeId, message: String) {
+        self.push_note(context, node, message, false);
+    }
+
+    /// A note; `limit` when a limit of [`crate::limits`] was reached.
+    fn push_note(&mut self, context: Context, node: NodeId, message: String, limit: bool) {
         let in_main = context.serial == 0;
         let message = if in_main {
             message
@@ -150,6 +157,7 @@ impl Walker<'_> {
         let note = Note {
             node: in_main.then_some(node),
             message: format!("renderer: {message}"),
+            limit,
         };
         if !self.notes.contains(&note) {
             self.notes.push(note);
@@ -189,6 +197,7 @@ impl Walker<'_> {
             message: format!(
                 "renderer: the scene expands to {expands} node instances; drawn up to {drawn}"
             ),
+            limit: false,
         });
     }
 

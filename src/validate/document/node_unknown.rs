@@ -33,6 +33,9 @@ fn check(ctx: &mut Ctx) {
     let names = schema::schema(Version::LATEST).nodes.iter().map(|n| n.name);
     for (id, node) in ctx.doc.iter() {
         if let NodeKind::Unknown { name } = &node.kind {
+            if ctx.is_full() {
+                return;
+            }
             ctx.report(
                 Diagnostic::new(
                     &NODE_UNKNOWN,

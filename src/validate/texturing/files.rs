@@ -16,11 +16,8 @@ use std::collections::HashMap;
 use std::ffi::OsString;
 use std::path::{Component, Path, PathBuf};
 
+use crate::limits::{MAX_IMAGE_BYTES, MAX_IMAGE_SIDE};
 use crate::model::{Document, FieldEntry, NodeId};
-
-/// Decoding stops with "too large" beyond these, so a decompression bomb costs nothing.
-const MAX_IMAGE_SIDE: u32 = 16_384;
-const MAX_IMAGE_BYTES: u64 = 1 << 30;
 
 /// What a url field's entries hold.
 #[derive(Copy, Clone, PartialEq, Eq)]
@@ -302,6 +299,9 @@ pub enum Probe {
     Decodes(image::ImageFormat),
     /// Does not decode, and why.
     Broken(String),
+    /// Larger than the limits of [`crate::limits`] (its header says so, or decoding would
+    /// allocate more): not decoded, and why.
+    TooLarge(String),
     /// A format x3dcheck does not decode, known by its extension (DDS, KTX, …).
     Undecoded(&'static str),
 }
@@ -374,19 +374,35 @@ fn decode(path: &Path) -> Probe {
         return Probe::Undecoded(format_name(format));
     }
     let mut reader = reader;
+    reader.limits(image_limits());
+    match reader.decode() {
+        Ok(_) => Probe::Decodes(format),
+        Err(image::ImageError::Limits(_)) => Probe::TooLarge(too_large(path)),
+        Err(e) => Probe::Broken(format!("does not decode as {}: {e}", format_name(format))),
+    }
+}
+
+/// The decoder's limits: the header's size is checked against them before any pixel is
+/// decoded, so a small file claiming 100000×100000 pixels costs nothing.
+pub fn image_limits() -> image::Limits {
     let mut limits = image::Limits::default();
     limits.max_image_width = Some(MAX_IMAGE_SIDE);
     limits.max_image_height = Some(MAX_IMAGE_SIDE);
     limits.max_alloc = Some(MAX_IMAGE_BYTES);
-    reader.limits(limits);
-    match reader.decode() {
-        Ok(_) => Probe::Decodes(format),
-        Err(image::ImageError::Limits(_)) => Probe::Broken(format!(
-            "is too large to decode (more than {MAX_IMAGE_SIDE} pixels on a side or {} GiB)",
-            MAX_IMAGE_BYTES >> 30
-        )),
-        Err(e) => Probe::Broken(format!("does not decode as {}: {e}", format_name(format))),
-    }
+    limits
+}
+
+/// Why an image went past [`image_limits`], with the size its header claims when known.
+pub fn too_large(path: &Path) -> String {
+    let claimed = image::ImageReader::open(path)
+        .and_then(|r| r.with_guessed_format())
+        .ok()
+        .and_then(|r| r.into_dimensions().ok());
+    let size = claimed.map_or(String::new(), |(w, h)| format!(" ({w}×{h})"));
+    format!(
+        "is too large to decode{size}: more than {MAX_IMAGE_SIDE} pixels on a side or {} GiB decoded",
+        MAX_IMAGE_BYTES >> 30
+    )
 }
 
 pub fn format_name(format: image::ImageFormat) -> &'static str {

@@ -61,7 +61,7 @@ fn check(ctx: &mut Ctx) {
             let what = match prober.decode(&path) {
                 Probe::Decodes(format) => format!("a {} image", format_name(format)),
                 Probe::Undecoded(name) => format!("a {name} image (not decoded by x3dcheck)"),
-                Probe::Broken(_) => continue,
+                Probe::Broken(_) | Probe::TooLarge(_) => continue,
             };
             let type_name = ctx.doc.node(field.node).type_name();
             found.push(

@@ -2,15 +2,17 @@
 
 use super::files::{url_fields, Content, Probe, Prober, Resolution, Resolver};
 use crate::report::Diagnostic;
+use crate::validate::document::limit_exceeded::LIMIT_EXCEEDED;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
     /// ## What it does
     /// Decodes every local image file that an ImageTexture or Background url resolves to
     /// (see URL_UNRESOLVED for how urls resolve and which files may be read) and reports
-    /// the ones that do not decode: truncated or corrupt data, a file that is no image at
-    /// all, or an image larger than 16384 pixels on a side or 1 GiB decoded (refused
-    /// before decoding, so a decompression bomb costs nothing). Each file is decoded once
+    /// the ones that do not decode: truncated or corrupt data or a file that is no image at
+    /// all. An image larger than 16384 pixels on a side or 1 GiB decoded is refused before
+    /// decoding (so a decompression bomb costs nothing) and reported as LIMIT_EXCEEDED.
+    /// Each file is decoded once
     /// per document, however many nodes use it. Formats x3dcheck does not decode (DDS,
     /// KTX, TGA, …) are IMAGE_FORMAT_UNSUPPORTED's.
     ///
@@ -47,18 +49,21 @@ fn check(ctx: &mut Ctx) {
             let Resolution::Local(path) = resolver.resolve(url) else {
                 continue;
             };
-            if let Probe::Broken(why) = prober.decode(&path) {
-                let type_name = ctx.doc.node(field.node).type_name();
-                found.push(
-                    Diagnostic::new(
-                        &IMAGE_UNREADABLE,
-                        field.entry.span,
-                        format!("{type_name}.{}: \"{url}\" {why}", field.entry.name()),
-                    )
-                    .node(field.node)
-                    .value(url.clone()),
-                );
-            }
+            let (rule, why) = match prober.decode(&path) {
+                Probe::Broken(why) => (&IMAGE_UNREADABLE, why),
+                Probe::TooLarge(why) => (&LIMIT_EXCEEDED, why),
+                Probe::Decodes(_) | Probe::Undecoded(_) => continue,
+            };
+            let type_name = ctx.doc.node(field.node).type_name();
+            found.push(
+                Diagnostic::new(
+                    rule,
+                    field.entry.span,
+                    format!("{type_name}.{}: \"{url}\" {why}", field.entry.name()),
+                )
+                .node(field.node)
+                .value(url.clone()),
+            );
         }
     }
     for diagnostic in found {

@@ -1,6 +1,6 @@
 //! Texturing component (clause 18), RULES.md §5.
 
-mod files;
+pub(crate) mod files;
 pub mod image_format_unsupported;
 pub mod image_unreadable;
 pub mod image_url_empty;

@@ -1,0 +1,59 @@
+//! Every limit x3dcheck keeps so that no input, however hostile, can crash it, hang it or
+//! exhaust its memory. Going past one is reported as `LIMIT_EXCEEDED` at the place where it
+//! happened, and the part beyond the limit is not read (the check of that file is then
+//! incomplete); nothing panics or allocates without bound.
+//!
+//! Each value stays far above what real scenes need: the largest of the 1,336 real scenes
+//! in the shared corpus has 2,516 nodes, 16 attributes on one element, 875 findings and no
+//! entity declaration; the benchmark's generated 85 MB scene (six IndexedTriangleSets of
+//! 160,000 vertices) has 955,206 values in its largest field. README ("Limits") and the
+//! LIMIT_EXCEEDED rule document list the same values: change them together.
+
+/// Bytes of one input. Positions are u32 byte offsets, so a larger file is refused whole
+/// (by the command line, and by the readers for callers of the library).
+pub const MAX_INPUT_BYTES: usize = u32::MAX as usize;
+
+/// Nodes in the deepest chain of the scene graph, through USE too. Walkers recurse over
+/// the graph: this bounds their stack. HAnim skeletons, the deepest common case, nest about
+/// 60 levels.
+pub const MAX_DEPTH: usize = 1000;
+
+/// Levels of JSON arrays and objects the scanner reads (three per level of nodes: object,
+/// `-children` array, node object). Deeper input is malformed JSON to x3dcheck.
+pub const MAX_JSON_NESTING: usize = 10_000;
+
+/// Nodes in one document (400 times the largest real scene): each costs a few hundred
+/// bytes of model, and rules walk them all.
+pub const MAX_NODES: usize = 1_000_000;
+
+/// Fields and attributes on one node or element (60 times the most a real scene sets).
+/// Field lookups and XML's duplicate-attribute check are linear per element, so this
+/// also bounds the time a single element can take.
+pub const MAX_FIELDS_PER_NODE: usize = 1000;
+
+/// Values (numbers, strings, nodes, images) in one field: 2^24, 17 times the benchmark's
+/// largest field; at most 128 MB for an MFDouble.
+pub const MAX_FIELD_VALUES: usize = 1 << 24;
+
+/// Findings kept for one document (11 times the most a real scene has). Each holds a
+/// message, a structural path and related places, so a file made of errors could otherwise
+/// cost a hundred times its size in memory.
+pub const MAX_DIAGNOSTICS: usize = 10_000;
+
+/// Bytes that references to entities declared in a DOCTYPE's internal subset may expand
+/// to in one document ("billion laughs": ten entities of ten references each stand for
+/// 10^10 bytes). No real scene declares an entity; X3D's own DOCTYPE names a DTD by its
+/// public id, which is never fetched.
+pub const MAX_ENTITY_EXPANSION: usize = 1 << 20;
+
+/// Entities nested in entities (`&a;` whose text holds `&b;` …); a recursive entity ends
+/// here too.
+pub const MAX_ENTITY_NESTING: usize = 16;
+
+/// Pixels on one side of an image the deep checks and the renderer decode. The size is
+/// read from the file's header before decoding, so a small file claiming 100000×100000
+/// (a decompression bomb) costs nothing.
+pub const MAX_IMAGE_SIDE: u32 = 16_384;
+
+/// Bytes one decoded image may take (the decoder's own allocation limit).
+pub const MAX_IMAGE_BYTES: u64 = 1 << 30;
