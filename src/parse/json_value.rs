@@ -10,9 +10,9 @@
 //! precision (an SFFloat `1e39` is +∞ for a rule to report, not an error here), into one
 //! vector per field.
 
-use super::tree::{Kind, Tree, NOT_INTEGER};
+use super::tree::{Kind, Tree, ValueRef, NOT_INTEGER};
 use crate::model::{Image, Value};
-use crate::parse::number::{parse_f32, parse_f64};
+use crate::parse::number::{parse_f32, parse_f64, scan_float, scan_i32};
 use crate::schema::{FieldType, Scalar};
 
 /// A value that does not fit its field's type. `span` is a byte range in the input: the
@@ -52,9 +52,9 @@ impl ValueError {
 pub fn convert(tree: &Tree, i: usize, ty: FieldType) -> Result<Value, ValueError> {
     match ty.scalar() {
         Scalar::Bool => bools(tree, i, ty).map(Value::Bools),
-        Scalar::Int32 => numbers(tree, i, ty, int32).map(Value::Int32s),
-        Scalar::Float => numbers(tree, i, ty, float32).map(Value::Floats),
-        Scalar::Double => numbers(tree, i, ty, float64).map(Value::Doubles),
+        Scalar::Int32 => numbers(tree, i, ty, &INT32).map(Value::Int32s),
+        Scalar::Float => numbers(tree, i, ty, &FLOAT32).map(Value::Floats),
+        Scalar::Double => numbers(tree, i, ty, &FLOAT64).map(Value::Doubles),
         Scalar::String => strings(tree, i, ty).map(Value::Strings),
         Scalar::Image => images(tree, i, ty).map(Value::Images),
         Scalar::Node => Err(ValueError::new(
@@ -65,7 +65,8 @@ pub fn convert(tree: &Tree, i: usize, ty: FieldType) -> Result<Value, ValueError
 }
 
 /// What a JSON value is, for messages: `a string ("1")`, `an array`, `null`.
-pub fn describe(tree: &Tree, i: usize) -> String {
+pub fn describe(tree: &Tree, v: impl Into<ValueRef>) -> String {
+    let i = v.into();
     match tree.kind(i) {
         Kind::Null => "null".to_string(),
         Kind::True => "`true`".to_string(),
@@ -173,7 +174,6 @@ fn looks_numeric(text: &str) -> bool {
 }
 
 /// The count check: exactly the arity for SF types, a multiple of it for MF types.
-/// `elements` are the array's element items.
 fn check_count(tree: &Tree, array: usize, ty: FieldType, count: usize) -> Result<(), ValueError> {
     let arity = ty.arity();
     let noun = element_noun(ty);
@@ -183,13 +183,8 @@ fn check_count(tree: &Tree, array: usize, ty: FieldType, count: usize) -> Result
         }
         // Point at the incomplete last element.
         let first = count - count % arity;
-        let elements: Vec<usize> = tree.elements(array).skip(first).collect();
-        let span = match (elements.first(), elements.last()) {
-            (Some(&a), Some(&b)) => (tree.full_span(a).0, tree.full_span(b).1),
-            _ => tree.full_span(array),
-        };
         return Err(ValueError::new(
-            span,
+            elements_span(tree, array, first),
             format!("{ty} takes a multiple of {arity} {}, found {count}", noun.1),
         )
         .index(first / arity));
@@ -204,11 +199,7 @@ fn check_count(tree: &Tree, array: usize, ty: FieldType, count: usize) -> Result
     };
     let span = if count > arity {
         // Point at the surplus.
-        let surplus: Vec<usize> = tree.elements(array).skip(arity).collect();
-        match (surplus.first(), surplus.last()) {
-            (Some(&a), Some(&b)) => (tree.full_span(a).0, tree.full_span(b).1),
-            _ => tree.full_span(array),
-        }
+        elements_span(tree, array, arity)
     } else {
         tree.full_span(array)
     };
@@ -218,14 +209,27 @@ fn check_count(tree: &Tree, array: usize, ty: FieldType, count: usize) -> Result
     ))
 }
 
+/// The span from element `first` of `array` to its last element (the whole array when
+/// there are none from there).
+fn elements_span(tree: &Tree, array: usize, first: usize) -> (usize, usize) {
+    let mut rest = tree.elements(array).skip(first);
+    match rest.next() {
+        Some(a) => {
+            let last = rest.last().unwrap_or(a);
+            (tree.full_span(a).0, tree.full_span(last).1)
+        }
+        None => tree.full_span(array),
+    }
+}
+
 fn bools(tree: &Tree, i: usize, ty: FieldType) -> Result<Vec<bool>, ValueError> {
-    let one = |e: usize| match tree.kind(e) {
+    let one = |e: ValueRef| match tree.kind(e) {
         Kind::True => Some(true),
         Kind::False => Some(false),
         _ => None,
     };
     if !ty.is_mf() {
-        return one(i)
+        return one(i.into())
             .map(|b| vec![b])
             .ok_or_else(|| wrong_kind(tree, i, ty));
     }
@@ -244,7 +248,7 @@ fn bools(tree: &Tree, i: usize, ty: FieldType) -> Result<Vec<bool>, ValueError> 
 
 /// An MF element (or a vector's component) of the wrong kind.
 #[cold]
-fn element_error(tree: &Tree, e: usize, ty: FieldType, index: usize) -> ValueError {
+fn element_error(tree: &Tree, e: ValueRef, ty: FieldType, index: usize) -> ValueError {
     let noun = element_noun(ty);
     let error = ValueError::new(
         tree.full_span(e),
@@ -269,8 +273,33 @@ fn element_error(tree: &Tree, e: usize, ty: FieldType, index: usize) -> ValueErr
     }
 }
 
-/// Reads the number item `e` as one scalar; `Err(message)` when it does not fit.
-type Scalarize<T> = fn(&[u8], bool) -> Result<T, String>;
+/// How the numbers of one scalar type are read.
+struct NumberType<T> {
+    /// In one pass over an array's text ([`Elements::next_number`]): nearly every number.
+    ///
+    /// [`Elements::next_number`]: super::tree::Elements::next_number
+    scan: fn(&[u8], usize) -> Option<(T, usize)>,
+    /// From one number's text and whether it is written as an integer, with the message
+    /// when it does not fit: single values, and what `scan` refuses.
+    read: fn(&[u8], bool) -> Result<T, String>,
+}
+
+/// `scan_i32` takes JSON integers (and refuses the rest, read by [`int32`]).
+const INT32: NumberType<i32> = NumberType {
+    scan: |text, at| scan_i32(text, at).ok(),
+    read: int32,
+};
+
+/// `scan_float` takes every JSON number, correctly rounded straight to the type (the scanner checked the JSON number syntax, which the float syntax accepts).
+const FLOAT32: NumberType<f32> = NumberType {
+    scan: |text, at| scan_float(text, at).ok(),
+    read: |text, _| Ok(parse_f32(text).unwrap_or(f32::NAN)),
+};
+
+const FLOAT64: NumberType<f64> = NumberType {
+    scan: |text, at| scan_float(text, at).ok(),
+    read: |text, _| Ok(parse_f64(text).unwrap_or(f64::NAN)),
+};
 
 fn int32(text: &[u8], integer_syntax: bool) -> Result<i32, String> {
     let out_of_range = || {
@@ -307,17 +336,13 @@ fn int32(text: &[u8], integer_syntax: bool) -> Result<i32, String> {
     }
 }
 
-fn float32(text: &[u8], _: bool) -> Result<f32, String> {
-    // The scanner checked the JSON number syntax, which the number parser accepts.
-    Ok(parse_f32(text).unwrap_or(f32::NAN))
-}
-
-fn float64(text: &[u8], _: bool) -> Result<f64, String> {
-    Ok(parse_f64(text).unwrap_or(f64::NAN))
-}
-
+/// A number element or value read by `read`; `None` when it is not a number.
 #[inline(always)]
-fn scalar<T>(tree: &Tree, e: usize, read: Scalarize<T>) -> Option<Result<T, String>> {
+fn scalar<T>(
+    tree: &Tree,
+    e: ValueRef,
+    read: fn(&[u8], bool) -> Result<T, String>,
+) -> Option<Result<T, String>> {
     let item = tree.item(e);
     (item.kind == Kind::Number).then(|| read(tree.raw_bytes(e), item.flags & NOT_INTEGER == 0))
 }
@@ -326,9 +351,9 @@ fn numbers<T>(
     tree: &Tree,
     i: usize,
     ty: FieldType,
-    read: Scalarize<T>,
+    number: &NumberType<T>,
 ) -> Result<Vec<T>, ValueError> {
-    let bad_number = |e: usize, message: String, index: Option<usize>| {
+    let bad_number = |e: ValueRef, message: String, index: Option<usize>| {
         let error = ValueError::new(
             tree.full_span(e),
             format!("{ty} takes {}: {message}", element_noun(ty).1),
@@ -339,9 +364,9 @@ fn numbers<T>(
         }
     };
     if !ty.is_mf() && ty.arity() == 1 {
-        return match scalar(tree, i, read) {
+        return match scalar(tree, i.into(), number.read) {
             Some(Ok(v)) => Ok(vec![v]),
-            Some(Err(message)) => Err(bad_number(i, message, None)),
+            Some(Err(message)) => Err(bad_number(i.into(), message, None)),
             None => Err(wrong_kind(tree, i, ty)),
         };
     }
@@ -349,9 +374,16 @@ fn numbers<T>(
         return Err(wrong_kind(tree, i, ty));
     }
     let mut values = Vec::with_capacity(tree.item(i).len as usize);
-    // Elements of a flat array of numbers are consecutive leaf items.
-    for (index, e) in tree.elements(i).enumerate() {
-        match scalar(tree, e, read) {
+    let mut elements = tree.elements(i);
+    loop {
+        if let Some(v) = elements.next_number(number.scan) {
+            values.push(v);
+            continue;
+        }
+        // Not a number, or one `scan` refuses: read it on its own, or report it.
+        let Some(e) = elements.next() else { break };
+        let index = values.len();
+        match scalar(tree, e, number.read) {
             Some(Ok(v)) => values.push(v),
             Some(Err(message)) => return Err(bad_number(e, message, Some(index))),
             None => return Err(element_error(tree, e, ty, index)),
@@ -383,27 +415,26 @@ fn images(tree: &Tree, i: usize, ty: FieldType) -> Result<Vec<Image>, ValueError
     if tree.kind(i) != Kind::Array {
         return Err(wrong_kind(tree, i, ty));
     }
-    let elements: Vec<usize> = tree.elements(i).collect();
+    let mut elements = tree.elements(i);
     let mut images = Vec::new();
-    let mut k = 0;
-    while k < elements.len() {
-        let header_start = k;
+    while elements.len() > 0 {
         let mut header = [0i32; 3];
+        // From the image's first element to the last one read.
+        let mut header_span = (0, 0);
         for (h, slot) in header.iter_mut().enumerate() {
-            let Some(&e) = elements.get(k) else {
+            let Some(e) = elements.next() else {
                 let what = ["width", "height", "components"][h];
-                let first = tree.full_span(elements[header_start]).0;
-                let last = tree.full_span(elements[elements.len() - 1]).1;
                 return Err(ValueError::new(
-                    (first, last),
+                    header_span,
                     format!("{ty} needs width, height and components before its pixels; {what} is missing"),
                 ));
             };
+            let (start, end) = tree.full_span(e);
+            header_span = (if h == 0 { start } else { header_span.0 }, end);
             *slot = image_int(tree, e, ty, true, images.len())? as i32;
-            k += 1;
         }
         let [width, height, components] = header;
-        let remaining = elements.len() - k;
+        let remaining = elements.len();
         let take = if ty.is_mf() {
             // The size says where the next image starts; take what is there if the data
             // ends first.
@@ -413,10 +444,9 @@ fn images(tree: &Tree, i: usize, ty: FieldType) -> Result<Vec<Image>, ValueError
             remaining
         };
         let mut pixels = Vec::with_capacity(take);
-        for &e in &elements[k..k + take] {
+        for e in elements.by_ref().take(take) {
             pixels.push(image_int(tree, e, ty, false, images.len())? as u32);
         }
-        k += take;
         images.push(Image {
             width,
             height,
@@ -440,7 +470,7 @@ fn images(tree: &Tree, i: usize, ty: FieldType) -> Result<Vec<Image>, ValueError
 /// −2^31 taken as their 32-bit pattern), as an `i64`.
 fn image_int(
     tree: &Tree,
-    e: usize,
+    e: ValueRef,
     ty: FieldType,
     header: bool,
     image: usize,
