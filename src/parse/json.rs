@@ -1545,6 +1545,76 @@ mod tests {
         assert_eq!(d.nodes[1].def_name.as_ref().unwrap().text, "G");
     }
 
+    /// Scalars in arrays have no items of their own: where nodes or objects belong, each
+    /// is still reported at its own text, in document order among the nodes around it.
+    #[test]
+    fn scalars_where_objects_belong_are_reported_at_their_place() {
+        let source = scene(
+            r##"{ "Box": {} }, 5, "x", { "Group": { "@DEF": "A", "@DEF": "B", "-children": [ null, { "Sphere": {} } ] } },
+               { "Script": { "field": [ 1, { "@name": "f", "@type": "MFVec3f", "@accessType": "initializeOnly", "@value": [0,0,0, 1,"0",0] } ],
+                             "IS": { "connect": [ false ] }, "#sourceCode": ["a", 2] } },
+               { "ProtoInstance": { "@name": "P", "fieldValue": [ "v" ] } },
+               { "Group": { "@USE": "A", "-children": [ 7 ] } },
+               { "Coordinate": { "@point": [0,0,0, [1,0,0]] } }"##,
+        );
+        let f = findings(&source);
+        assert_eq!(
+            f,
+            vec![
+                ("FIELD_VALUE_SYNTAX", "5".to_string()),
+                ("FIELD_VALUE_SYNTAX", "\"x\"".to_string()),
+                ("FIELD_DUPLICATE", "@DEF".to_string()),
+                ("FIELD_VALUE_SYNTAX", "null".to_string()),
+                ("FIELD_VALUE_SYNTAX", "1".to_string()),
+                ("FIELD_VALUE_SYNTAX", "\"0\"".to_string()),
+                ("FIELD_VALUE_SYNTAX", "false".to_string()),
+                ("FIELD_VALUE_SYNTAX", "[\"a\", 2]".to_string()),
+                ("FIELD_VALUE_SYNTAX", "\"v\"".to_string()),
+                ("USE_WITH_FIELDS", "7".to_string()),
+                ("FIELD_VALUE_SYNTAX", "[1,0,0]".to_string()),
+            ]
+        );
+        let parsed = read_str(&source);
+        let messages: Vec<&str> = parsed
+            .diagnostics
+            .iter()
+            .map(|d| d.message.as_str())
+            .collect();
+        assert_eq!(
+            messages[0],
+            "`-children` holds objects naming a node, like {\"Transform\": {…}}, found the number 5"
+        );
+        assert_eq!(
+            messages[4],
+            "a `field` declaration is an object, found the number 1"
+        );
+        assert_eq!(parsed.diagnostics[5].index, Some(1));
+        assert_eq!(messages[6], "a `connect` is an object, found `false`");
+        assert_eq!(
+            messages[8],
+            "a `fieldValue` is an object, found the string \"v\""
+        );
+        assert_eq!(
+            messages[9],
+            "USE `A` holds `the number 7`: a USE takes no children or fields"
+        );
+        assert_eq!(parsed.diagnostics[10].index, Some(1));
+        // The nodes around the scalars are read.
+        let d = parsed.document.unwrap();
+        let types: Vec<&str> = d.nodes.iter().map(|n| n.type_name()).collect();
+        assert_eq!(
+            types,
+            [
+                "Box",
+                "Group",
+                "Sphere",
+                "Script",
+                "ProtoInstance",
+                "Coordinate"
+            ]
+        );
+    }
+
     #[test]
     fn malformed_json_has_a_position_and_no_document() {
         let source = "{ \"X3D\": {\n  \"Scene\": { \"-children\": [ 1, ] }\n} }";

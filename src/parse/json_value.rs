@@ -772,4 +772,172 @@ mod tests {
     fn node_types_are_not_values() {
         assert!(err("[]", FieldType::MFNode).message.contains("take nodes"));
     }
+
+    /// The text at an error's span.
+    fn at<'a>(json: &'a str, e: &ValueError) -> &'a str {
+        &json[e.span.0..e.span.1]
+    }
+
+    #[test]
+    fn errors_inside_number_arrays_point_at_the_element() {
+        // Elements of arrays have no items of their own: the spans come from the text.
+        let cases: &[(&str, FieldType, &str, Option<usize>, &str)] = &[
+            (
+                "[0, 0, 0,\n 1, \"1\", 0]",
+                FieldType::MFVec3f,
+                "\"1\"",
+                Some(1),
+                "MFVec3f takes numbers, found the string \"1\"",
+            ),
+            (
+                "[0,0,0, [1,0,0]]",
+                FieldType::MFVec3f,
+                "[1,0,0]",
+                Some(1),
+                "MFVec3f takes numbers, found an array",
+            ),
+            (
+                "[0,0,0, 1,0,0, {\"x\": 1}]",
+                FieldType::MFVec3f,
+                "{\"x\": 1}",
+                Some(2),
+                "MFVec3f takes numbers, found an object",
+            ),
+            (
+                "[ 1 ,\t2 , null ]",
+                FieldType::SFVec3f,
+                "null",
+                None,
+                "SFVec3f takes numbers, found null",
+            ),
+            (
+                "[0, 1, 2, 3.5, 4]",
+                FieldType::MFInt32,
+                "3.5",
+                Some(3),
+                "MFInt32 takes whole numbers: whole numbers only, found 3.5",
+            ),
+            (
+                "[0, -1, -2147483649, 4]",
+                FieldType::MFInt32,
+                "-2147483649",
+                Some(2),
+                "MFInt32 takes whole numbers: -2147483649 is out of range (-2147483648 to 2147483647)",
+            ),
+            (
+                "[1, 0, false, 1]",
+                FieldType::SFRotation,
+                "false",
+                None,
+                "SFRotation takes numbers, found `false`",
+            ),
+            (
+                "[\"a\\\"b\", 1]",
+                FieldType::MFString,
+                "1",
+                Some(1),
+                "MFString takes strings, found the number 1",
+            ),
+            (
+                "[true,false , \"false\"]",
+                FieldType::MFBool,
+                "\"false\"",
+                Some(2),
+                "MFBool takes booleans, found the string \"false\"",
+            ),
+            (
+                "[1, 1, 3, 255, 2.5e0]",
+                FieldType::MFImage,
+                "2.5e0",
+                Some(1),
+                "MFImage takes whole numbers, found 2.5e0 as a size",
+            ),
+            (
+                "[0,0,0, 1,0,0, 1 ]",
+                FieldType::MFVec3f,
+                "1",
+                Some(2),
+                "MFVec3f takes a multiple of 3 numbers, found 7",
+            ),
+            (
+                "[1, 2, 3, 4,\n 5]",
+                FieldType::SFVec3f,
+                "4,\n 5",
+                None,
+                "SFVec3f takes 3 numbers, found 5",
+            ),
+        ];
+        for &(json, ty, text, index, message) in cases {
+            let e = err(json, ty);
+            assert_eq!(at(json, &e), text, "{json} as {ty}");
+            assert_eq!(e.index, index, "{json} as {ty}");
+            assert_eq!(e.message, message, "{json} as {ty}");
+        }
+        let e = err("[0, 0, 0, \"1 2\"]", FieldType::MFFloat);
+        assert_eq!(
+            e.help.as_deref(),
+            Some("JSON numbers are written without quotes")
+        );
+        let e = err("[0,0,0, [1,0,0]]", FieldType::MFVec3f);
+        assert!(e.help.unwrap().contains("flat array"));
+    }
+
+    #[test]
+    fn numbers_read_in_one_pass_equal_numbers_read_one_by_one() {
+        // Each token alone (as a single value, read by the per-token readers) and as every
+        // element of an array (read in one pass from the array's text) gives one value.
+        let floats = [
+            "0",
+            "-0",
+            "0.1",
+            "-1.5E-3",
+            "1e39",
+            "-1e400",
+            "1e-50",
+            "3.4028235e38",
+            "1.00000005960464477539062501",
+            "123456789012345678901234567890",
+            "0.000000000000000000000000000000000000000000001401298464324817",
+        ];
+        let array = format!("[{}]", floats.join(" ,\n\t"));
+        let Value::Floats(f32s) = conv(&array, FieldType::MFFloat).unwrap() else {
+            panic!("floats")
+        };
+        let Value::Doubles(f64s) = conv(&array, FieldType::MFDouble).unwrap() else {
+            panic!("doubles")
+        };
+        for (k, token) in floats.iter().enumerate() {
+            assert_eq!(
+                f32s[k].to_bits(),
+                conv(token, FieldType::SFFloat)
+                    .unwrap()
+                    .as_floats()
+                    .unwrap()[0]
+                    .to_bits(),
+                "{token}"
+            );
+            assert_eq!(
+                f64s[k].to_bits(),
+                conv(token, FieldType::SFDouble)
+                    .unwrap()
+                    .as_doubles()
+                    .unwrap()[0]
+                    .to_bits(),
+                "{token}"
+            );
+        }
+        // Integers the one-pass reader refuses (exponents, fractions of zero) are read one
+        // by one, in place.
+        assert_eq!(
+            conv(
+                "[0,-0, 7, 1e2, 2.0, -2147483648, 2147483647, -5]",
+                FieldType::MFInt32
+            ),
+            Ok(Value::Int32s(vec![0, 0, 7, 100, 2, i32::MIN, i32::MAX, -5]))
+        );
+        assert_eq!(
+            conv("[ ]", FieldType::MFInt32),
+            Ok(Value::Int32s(Vec::new()))
+        );
+    }
 }
