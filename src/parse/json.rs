@@ -1202,6 +1202,14 @@ mod tests {
             .collect()
     }
 
+    fn messages(parsed: &Parsed) -> Vec<&str> {
+        parsed
+            .diagnostics
+            .iter()
+            .map(|d| d.message.as_str())
+            .collect()
+    }
+
     fn scene(children: &str) -> String {
         format!(
             r##"{{ "X3D": {{ "@profile": "Immersive", "@version": "4.0", "head": {{}}, "Scene": {{ "-children": [ {children} ] }} }} }}"##
@@ -1389,11 +1397,7 @@ mod tests {
             ]
         );
         let parsed = read_str(&source);
-        let messages: Vec<&str> = parsed
-            .diagnostics
-            .iter()
-            .map(|d| d.message.as_str())
-            .collect();
+        let messages = messages(&parsed);
         assert_eq!(
             messages[0],
             "`@diffuseColor`: SFColor takes 3 numbers, found 2"
@@ -1575,11 +1579,7 @@ mod tests {
             ]
         );
         let parsed = read_str(&source);
-        let messages: Vec<&str> = parsed
-            .diagnostics
-            .iter()
-            .map(|d| d.message.as_str())
-            .collect();
+        let messages = messages(&parsed);
         assert_eq!(
             messages[0],
             "`-children` holds objects naming a node, like {\"Transform\": {…}}, found the number 5"

@@ -244,6 +244,11 @@ pub struct Elements<'t, 's> {
     left: u32,
 }
 
+/// A reader of one number in a larger text, as the `scan_*` functions of
+/// [`crate::parse::number`]: `scan(text, at)` gives the number starting at `at` and the
+/// offset where it ends, or `None` when it refuses the number.
+pub type ScanNumber<T> = fn(&[u8], usize) -> Option<(T, usize)>;
+
 impl<'s> Elements<'_, 's> {
     /// The offset in `text` of the next element, past whitespace and the comma before it.
     #[inline(always)]
@@ -256,13 +261,13 @@ impl<'s> Elements<'_, 's> {
     }
 
     /// Reads the next element in one pass over its text when it is a number that `scan`
-    /// accepts. `scan(text, at)` is one of the `scan_*` readers of
-    /// [`crate::parse::number`]: the number starts at `at` and ends at a separator (`,`,
-    /// whitespace) or at the end of `text`, the array's text between its brackets.
-    /// `None`, leaving the element for [`Iterator::next`], when it is not a number or
-    /// `scan` refuses it, or when there are no more elements.
+    /// accepts. `scan` is given the array's text between its brackets, where the number
+    /// ends at a separator (`,`, whitespace) or at the end, as the `scan_*` readers of
+    /// [`crate::parse::number`] expect. `None`, leaving the element for
+    /// [`Iterator::next`], when it is not a number or `scan` refuses it, or when there are
+    /// no more elements.
     #[inline(always)]
-    pub fn next_number<T>(&mut self, scan: fn(&[u8], usize) -> Option<(T, usize)>) -> Option<T> {
+    pub fn next_number<T>(&mut self, scan: ScanNumber<T>) -> Option<T> {
         if self.left == 0 {
             return None;
         }

@@ -10,7 +10,7 @@
 //! precision (an SFFloat `1e39` is +∞ for a rule to report, not an error here), into one
 //! vector per field.
 
-use super::tree::{Kind, Tree, ValueRef, NOT_INTEGER};
+use super::tree::{Kind, ScanNumber, Tree, ValueRef, NOT_INTEGER};
 use crate::model::{Image, Value};
 use crate::parse::number::{parse_f32, parse_f64, scan_float, scan_i32};
 use crate::schema::{FieldType, Scalar};
@@ -278,7 +278,7 @@ struct NumberType<T> {
     /// In one pass over an array's text ([`Elements::next_number`]): nearly every number.
     ///
     /// [`Elements::next_number`]: super::tree::Elements::next_number
-    scan: fn(&[u8], usize) -> Option<(T, usize)>,
+    scan: ScanNumber<T>,
     /// From one number's text and whether it is written as an integer, with the message
     /// when it does not fit: single values, and what `scan` refuses.
     read: fn(&[u8], bool) -> Result<T, String>,
