@@ -1,9 +1,10 @@
 //! The JSON encoding (ISO/IEC 19776-5) read into the same scene model as the XML reader.
 //!
 //! The input is scanned once by [`tree`] into a flat tree with the span of every key and
-//! value, then walked with an explicit stack (no recursion: nesting is bounded only by the
-//! scanner's depth cap) while driving the [`Builder`] exactly as the XML reader does, so
-//! that both encodings of one scene give equal documents.
+//! value (the scalars inside arrays, nearly all of a large scene, are read back from the
+//! text rather than kept), then walked with an explicit stack (no recursion: nesting is
+//! bounded only by the scanner's depth cap) while driving the [`Builder`] exactly as the
+//! XML reader does, so that both encodings of one scene give equal documents.
 //!
 //! The shapes read (as the Web3D X3dToJson stylesheet writes them):
 //! - `{ "X3D": { "@version", "@profile", "head": { "component": […], "meta": […],
