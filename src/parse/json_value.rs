@@ -273,33 +273,9 @@ fn element_error(tree: &Tree, e: ValueRef, ty: FieldType, index: usize) -> Value
     }
 }
 
-/// How the numbers of one scalar type are read.
-struct NumberType<T> {
-    /// In one pass over an array's text ([`Elements::next_number`]): nearly every number.
-    ///
-    /// [`Elements::next_number`]: super::tree::Elements::next_number
-    scan: ScanNumber<T>,
-    /// From one number's text and whether it is written as an integer, with the message
-    /// when it does not fit: single values, and what `scan` refuses.
-    read: fn(&[u8], bool) -> Result<T, String>,
-}
-
-/// `scan_i32` takes JSON integers (and refuses the rest, read by [`int32`]).
-const INT32: NumberType<i32> = NumberType {
-    scan: |text, at| scan_i32(text, at).ok(),
-    read: int32,
-};
-
-/// `scan_float` takes every JSON number, correctly rounded straight to the type (the scanner checked the JSON number syntax, which the float syntax accepts).
-const FLOAT32: NumberType<f32> = NumberType {
-    scan: |text, at| scan_float(text, at).ok(),
-    read: |text, _| Ok(parse_f32(text).unwrap_or(f32::NAN)),
-};
-
-const FLOAT64: NumberType<f64> = NumberType {
-    scan: |text, at| scan_float(text, at).ok(),
-    read: |text, _| Ok(parse_f64(text).unwrap_or(f64::NAN)),
-};
+/// Reads one number from its text and whether it is written as an integer;
+/// `Err(message)` when it does not fit.
+type Scalarize<T> = fn(&[u8], bool) -> Result<T, String>;
 
 fn int32(text: &[u8], integer_syntax: bool) -> Result<i32, String> {
     let out_of_range = || {
@@ -336,13 +312,45 @@ fn int32(text: &[u8], integer_syntax: bool) -> Result<i32, String> {
     }
 }
 
+fn float32(text: &[u8], _: bool) -> Result<f32, String> {
+    // The scanner checked the JSON number syntax, which the number parser accepts.
+    Ok(parse_f32(text).unwrap_or(f32::NAN))
+}
+
+fn float64(text: &[u8], _: bool) -> Result<f64, String> {
+    Ok(parse_f64(text).unwrap_or(f64::NAN))
+}
+
+/// How the numbers of one scalar type are read.
+struct NumberType<T> {
+    /// In one pass over an array's text ([`Elements::next_number`]): nearly every number.
+    ///
+    /// [`Elements::next_number`]: super::tree::Elements::next_number
+    scan: ScanNumber<T>,
+    /// Single values, and what `scan` refuses.
+    read: Scalarize<T>,
+}
+
+/// `scan_i32` takes JSON integers, and refuses the rest for [`int32`].
+const INT32: NumberType<i32> = NumberType {
+    scan: |text, at| scan_i32(text, at).ok(),
+    read: int32,
+};
+
+/// `scan_float` takes every JSON number, correctly rounded straight to the type.
+const FLOAT32: NumberType<f32> = NumberType {
+    scan: |text, at| scan_float(text, at).ok(),
+    read: float32,
+};
+
+const FLOAT64: NumberType<f64> = NumberType {
+    scan: |text, at| scan_float(text, at).ok(),
+    read: float64,
+};
+
 /// A number element or value read by `read`; `None` when it is not a number.
 #[inline(always)]
-fn scalar<T>(
-    tree: &Tree,
-    e: ValueRef,
-    read: fn(&[u8], bool) -> Result<T, String>,
-) -> Option<Result<T, String>> {
+fn scalar<T>(tree: &Tree, e: ValueRef, read: Scalarize<T>) -> Option<Result<T, String>> {
     let item = tree.item(e);
     (item.kind == Kind::Number).then(|| read(tree.raw_bytes(e), item.flags & NOT_INTEGER == 0))
 }
