@@ -1,9 +1,10 @@
 //! The JSON encoding (ISO/IEC 19776-5) read into the same scene model as the XML reader.
 //!
 //! The input is scanned once by [`tree`] into a flat tree with the span of every key and
-//! value, then walked with an explicit stack (no recursion: nesting is bounded only by the
-//! scanner's depth cap) while driving the [`Builder`] exactly as the XML reader does, so
-//! that both encodings of one scene give equal documents.
+//! value (the scalars inside arrays, nearly all of a large scene, are read back from the
+//! text rather than kept), then walked with an explicit stack (no recursion: nesting is
+//! bounded only by the scanner's depth cap) while driving the [`Builder`] exactly as the
+//! XML reader does, so that both encodings of one scene give equal documents.
 //!
 //! The shapes read (as the Web3D X3dToJson stylesheet writes them):
 //! - `{ "X3D": { "@version", "@profile", "head": { "component": […], "meta": […],
@@ -34,7 +35,7 @@ pub mod value;
 
 use std::borrow::Cow;
 
-use tree::{Kind, Tree};
+use tree::{Elements, Kind, Members, Tree, ValueRef};
 
 use crate::check::Parsed;
 use crate::model::builder::Parent;
@@ -208,11 +209,9 @@ enum DeclOwner {
     Proto(usize),
 }
 
-/// What the items under a frame's cursor are and what to do with them.
+/// What the members of an object on the walk's stack are and what to do with them.
 #[derive(Clone)]
-enum Task<'s> {
-    /// Elements of an array of statement objects (`-children`, `-name`, …).
-    List(Ctx<'s>),
+enum ObjectTask<'s> {
     /// Members of one statement object: nodes, ROUTE, protos, comments.
     Statements(Ctx<'s>),
     /// A node object's members other than its fields (`-name`, `field`, `IS`, …); the
@@ -224,23 +223,29 @@ enum Task<'s> {
     ProtoInterface { proto: usize },
     /// Members of a ProtoBody; its scope is closed when they are done.
     ProtoBody,
+}
+
+/// What the elements of an array on the walk's stack are and what to do with them.
+#[derive(Clone)]
+enum ArrayTask<'s> {
+    /// Elements of an array of statement objects (`-children`, `-name`, …).
+    List(Ctx<'s>),
     /// Elements of a `field` array.
     Decls(DeclOwner),
     /// Elements of a `fieldValue` array.
     FieldValues(NodeId),
 }
 
-struct Frame<'s> {
-    task: Task<'s>,
-    /// The next item: an element (arrays) or a key (objects).
-    cursor: usize,
-    end: usize,
+/// An object or array of the walk, with the members or elements still to read.
+enum Frame<'t, 's> {
+    Object(ObjectTask<'s>, Members<'t, 's>),
+    Array(ArrayTask<'s>, Elements<'t, 's>),
 }
 
 struct JsonReader<'t, 's> {
     t: &'t Tree<'s>,
     builder: Builder,
-    stack: Vec<Frame<'s>>,
+    stack: Vec<Frame<'t, 's>>,
 }
 
 /// Node object members that are not node fields: read by the reader itself, so their
@@ -285,12 +290,12 @@ impl<'t, 's> JsonReader<'t, 's> {
         }
     }
 
-    fn push(&mut self, task: Task<'s>, container: usize) {
-        self.stack.push(Frame {
-            task,
-            cursor: container + 1,
-            end: self.t.next(container),
-        });
+    fn push_object(&mut self, task: ObjectTask<'s>, object: usize) {
+        self.stack.push(Frame::Object(task, self.t.members(object)));
+    }
+
+    fn push_array(&mut self, task: ArrayTask<'s>, array: usize) {
+        self.stack.push(Frame::Array(task, self.t.elements(array)));
     }
 
     /// Pushes the nodes of a node-valued member: one node object, or an array of them.
@@ -298,9 +303,9 @@ impl<'t, 's> JsonReader<'t, 's> {
         match self.t.kind(value) {
             Kind::Object => {
                 self.duplicate_keys(value, |_| true);
-                self.push(Task::Statements(ctx), value);
+                self.push_object(ObjectTask::Statements(ctx), value);
             }
-            Kind::Array => self.push(Task::List(ctx), value),
+            Kind::Array => self.push_array(ArrayTask::List(ctx), value),
             _ => {
                 let found = value::describe(self.t, value);
                 self.syntax(
@@ -464,10 +469,7 @@ impl<'t, 's> JsonReader<'t, 's> {
         self.duplicate_keys(head, |_| true);
         for (key, value) in t.members(head) {
             let objects: Vec<usize> = match t.kind(value) {
-                Kind::Array => t
-                    .elements(value)
-                    .filter(|&e| t.kind(e) == Kind::Object)
-                    .collect(),
+                Kind::Array => t.elements(value).filter_map(|e| t.object(e)).collect(),
                 Kind::Object => vec![value],
                 _ => Vec::new(),
             };
@@ -514,48 +516,70 @@ impl<'t, 's> JsonReader<'t, 's> {
 
     fn run(&mut self) {
         while let Some(frame) = self.stack.last_mut() {
-            if frame.cursor >= frame.end {
-                let frame = self.stack.pop().expect("a frame is on the stack");
-                self.finish(frame.task);
-                continue;
-            }
-            let at = frame.cursor;
-            frame.cursor = self.t.next(at);
-            let task = frame.task.clone();
-            match task {
-                Task::List(ctx) => self.list_element(ctx, at),
-                Task::Statements(ctx) => self.statement(&ctx, at, at + 1),
-                Task::Node { id, .. } => self.node_member(id, at, at + 1),
-                Task::Proto { proto, external } => self.proto_member(proto, external, at, at + 1),
-                Task::ProtoInterface { proto } => {
-                    if self.t.key_is(at, "field") {
-                        self.push_decls(DeclOwner::Proto(proto), at, at + 1);
+            match frame {
+                Frame::Object(task, members) => match members.next() {
+                    Some((key, value)) => {
+                        let task = task.clone();
+                        self.member(task, key, value);
                     }
-                }
-                Task::ProtoBody => {
-                    if self.t.key_is(at, "-children") {
-                        self.push_nodes(Ctx::TopLevel, at + 1, "`-children`");
+                    None => {
+                        if let Some(Frame::Object(task, _)) = self.stack.pop() {
+                            self.finish(task);
+                        }
                     }
-                }
-                Task::Decls(owner) => self.field_decl(owner, at),
-                Task::FieldValues(node) => self.field_value(node, at),
+                },
+                Frame::Array(task, elements) => match elements.next() {
+                    Some(element) => {
+                        let task = task.clone();
+                        self.element(task, element);
+                    }
+                    None => {
+                        self.stack.pop();
+                    }
+                },
             }
         }
     }
 
-    fn finish(&mut self, task: Task) {
+    fn member(&mut self, task: ObjectTask<'s>, key: usize, value: usize) {
         match task {
-            Task::Node { id, span } => self.builder.end_node(id, span),
-            Task::ProtoBody => self.builder.end_proto_body(),
+            ObjectTask::Statements(ctx) => self.statement(&ctx, key, value),
+            ObjectTask::Node { id, .. } => self.node_member(id, key, value),
+            ObjectTask::Proto { proto, external } => self.proto_member(proto, external, key, value),
+            ObjectTask::ProtoInterface { proto } => {
+                if self.t.key_is(key, "field") {
+                    self.push_decls(DeclOwner::Proto(proto), key, value);
+                }
+            }
+            ObjectTask::ProtoBody => {
+                if self.t.key_is(key, "-children") {
+                    self.push_nodes(Ctx::TopLevel, value, "`-children`");
+                }
+            }
+        }
+    }
+
+    fn element(&mut self, task: ArrayTask<'s>, element: ValueRef) {
+        match task {
+            ArrayTask::List(ctx) => self.list_element(ctx, element),
+            ArrayTask::Decls(owner) => self.field_decl(owner, element),
+            ArrayTask::FieldValues(node) => self.field_value(node, element),
+        }
+    }
+
+    fn finish(&mut self, task: ObjectTask) {
+        match task {
+            ObjectTask::Node { id, span } => self.builder.end_node(id, span),
+            ObjectTask::ProtoBody => self.builder.end_proto_body(),
             _ => {}
         }
     }
 
     /// An element of a node array: an object holding one node (or statement, or comment).
-    fn list_element(&mut self, ctx: Ctx<'s>, element: usize) {
-        if self.t.kind(element) == Kind::Object {
-            self.duplicate_keys(element, |_| true);
-            self.push(Task::Statements(ctx), element);
+    fn list_element(&mut self, ctx: Ctx<'s>, element: ValueRef) {
+        if let Some(object) = self.t.object(element) {
+            self.duplicate_keys(object, |_| true);
+            self.push_object(ObjectTask::Statements(ctx), object);
         } else {
             let found = value::describe(self.t, element);
             let place = ctx.describe();
@@ -651,7 +675,7 @@ impl<'t, 's> JsonReader<'t, 's> {
             body: Vec::new(),
             url,
         });
-        self.push(Task::Proto { proto, external }, value);
+        self.push_object(ObjectTask::Proto { proto, external }, value);
     }
 
     fn proto_member(&mut self, proto: usize, external: bool, key: usize, value: usize) {
@@ -660,12 +684,12 @@ impl<'t, 's> JsonReader<'t, 's> {
         match (name.as_ref(), external) {
             ("ProtoInterface", false) if t.kind(value) == Kind::Object => {
                 self.duplicate_keys(value, |_| true);
-                self.push(Task::ProtoInterface { proto }, value);
+                self.push_object(ObjectTask::ProtoInterface { proto }, value);
             }
             ("ProtoBody", false) if t.kind(value) == Kind::Object => {
                 self.duplicate_keys(value, |_| true);
                 self.builder.begin_proto_body(proto);
-                self.push(Task::ProtoBody, value);
+                self.push_object(ObjectTask::ProtoBody, value);
             }
             ("field", true) => self.push_decls(DeclOwner::Proto(proto), key, value),
             _ => {}
@@ -674,7 +698,7 @@ impl<'t, 's> JsonReader<'t, 's> {
 
     fn push_decls(&mut self, owner: DeclOwner, key: usize, value: usize) {
         match self.t.kind(value) {
-            Kind::Array => self.push(Task::Decls(owner), value),
+            Kind::Array => self.push_array(ArrayTask::Decls(owner), value),
             _ => {
                 let found = value::describe(self.t, value);
                 let name = self.t.str(key);
@@ -751,14 +775,13 @@ impl<'t, 's> JsonReader<'t, 's> {
                 _ => {}
             }
         }
-        self.stack.push(Frame {
-            task: Task::Node {
+        self.push_object(
+            ObjectTask::Node {
                 id,
                 span: node_span,
             },
-            cursor: value + 1,
-            end: t.next(value),
-        });
+            value,
+        );
     }
 
     /// Reports what a USE node object holds besides `@USE`, as the XML reader does: its
@@ -776,18 +799,18 @@ impl<'t, 's> JsonReader<'t, 's> {
         let mut fields: Vec<(Cow<'s, str>, Span)> = Vec::new();
         let mut children: Vec<(Cow<'s, str>, Span)> = Vec::new();
         let nodes_of = |value: usize, out: &mut Vec<(Cow<'s, str>, Span)>| {
-            let wrappers: Vec<usize> = match t.kind(value) {
+            let wrappers: Vec<ValueRef> = match t.kind(value) {
                 Kind::Array => t.elements(value).collect(),
-                _ => vec![value],
+                _ => vec![value.into()],
             };
             for wrapper in wrappers {
-                if t.kind(wrapper) != Kind::Object {
+                let Some(wrapper) = t.object(wrapper) else {
                     out.push((
                         Cow::Owned(value::describe(t, wrapper)),
                         span(t.full_span(wrapper)),
                     ));
                     continue;
-                }
+                };
                 for (k, _) in t.members(wrapper) {
                     let name = t.str(k);
                     if !name.starts_with('#') {
@@ -864,7 +887,7 @@ impl<'t, 's> JsonReader<'t, 's> {
             }
             "field" => self.push_decls(DeclOwner::Node(id), key, value),
             "fieldValue" => match t.kind(value) {
-                Kind::Array => self.push(Task::FieldValues(id), value),
+                Kind::Array => self.push_array(ArrayTask::FieldValues(id), value),
                 _ => {
                     let found = value::describe(t, value);
                     self.syntax(
@@ -967,16 +990,16 @@ impl<'t, 's> JsonReader<'t, 's> {
     }
 
     /// A `field` declaration (ProtoInterface, ExternProtoDeclare, Script, shaders).
-    fn field_decl(&mut self, owner: DeclOwner, object: usize) {
+    fn field_decl(&mut self, owner: DeclOwner, element: ValueRef) {
         let t = self.t;
-        if t.kind(object) != Kind::Object {
-            let found = value::describe(t, object);
+        let Some(object) = t.object(element) else {
+            let found = value::describe(t, element);
             self.syntax(
-                t.full_span(object),
+                t.full_span(element),
                 format!("a `field` declaration is an object, found {found}"),
             );
             return;
-        }
+        };
         self.duplicate_keys(object, |_| true);
         let decl_span = span(t.full_span(object));
         let name = self.named(object, "@name").unwrap_or(Named {
@@ -1040,16 +1063,16 @@ impl<'t, 's> JsonReader<'t, 's> {
     }
 
     /// A ProtoInstance's `fieldValue`: typed by the ProtoDeclare when it is known.
-    fn field_value(&mut self, node: NodeId, object: usize) {
+    fn field_value(&mut self, node: NodeId, element: ValueRef) {
         let t = self.t;
-        if t.kind(object) != Kind::Object {
-            let found = value::describe(t, object);
+        let Some(object) = t.object(element) else {
+            let found = value::describe(t, element);
             self.syntax(
-                t.full_span(object),
+                t.full_span(element),
                 format!("a `fieldValue` is an object, found {found}"),
             );
             return;
-        }
+        };
         self.duplicate_keys(object, |_| true);
         let Some(name) = self.named(object, "@name") else {
             return;
@@ -1106,9 +1129,9 @@ impl<'t, 's> JsonReader<'t, 's> {
             if !t.key_is(key, "connect") {
                 continue;
             }
-            let connects: Vec<usize> = match t.kind(value) {
+            let connects: Vec<ValueRef> = match t.kind(value) {
                 Kind::Array => t.elements(value).collect(),
-                Kind::Object => vec![value],
+                Kind::Object => vec![value.into()],
                 _ => {
                     let found = value::describe(t, value);
                     self.syntax(
@@ -1120,14 +1143,14 @@ impl<'t, 's> JsonReader<'t, 's> {
             };
             for connect in connects {
                 let connect_span = span(t.full_span(connect));
-                if t.kind(connect) != Kind::Object {
+                let Some(connect) = t.object(connect) else {
                     let found = value::describe(t, connect);
                     self.syntax(
                         t.full_span(connect),
                         format!("a `connect` is an object, found {found}"),
                     );
                     continue;
-                }
+                };
                 self.duplicate_keys(connect, |_| true);
                 let mut get = |name: &str| {
                     self.named(connect, name).unwrap_or(Named {
@@ -1177,6 +1200,14 @@ mod tests {
                         .to_string(),
                 )
             })
+            .collect()
+    }
+
+    fn messages(parsed: &Parsed) -> Vec<&str> {
+        parsed
+            .diagnostics
+            .iter()
+            .map(|d| d.message.as_str())
             .collect()
     }
 
@@ -1367,11 +1398,7 @@ mod tests {
             ]
         );
         let parsed = read_str(&source);
-        let messages: Vec<&str> = parsed
-            .diagnostics
-            .iter()
-            .map(|d| d.message.as_str())
-            .collect();
+        let messages = messages(&parsed);
         assert_eq!(
             messages[0],
             "`@diffuseColor`: SFColor takes 3 numbers, found 2"
@@ -1521,6 +1548,72 @@ mod tests {
         );
         assert_eq!(d.nodes[1].children("children").len(), 1);
         assert_eq!(d.nodes[1].def_name.as_ref().unwrap().text, "G");
+    }
+
+    /// Scalars in arrays have no items of their own: where nodes or objects belong, each
+    /// is still reported at its own text, in document order among the nodes around it.
+    #[test]
+    fn scalars_where_objects_belong_are_reported_at_their_place() {
+        let source = scene(
+            r##"{ "Box": {} }, 5, "x", { "Group": { "@DEF": "A", "@DEF": "B", "-children": [ null, { "Sphere": {} } ] } },
+               { "Script": { "field": [ 1, { "@name": "f", "@type": "MFVec3f", "@accessType": "initializeOnly", "@value": [0,0,0, 1,"0",0] } ],
+                             "IS": { "connect": [ false ] }, "#sourceCode": ["a", 2] } },
+               { "ProtoInstance": { "@name": "P", "fieldValue": [ "v" ] } },
+               { "Group": { "@USE": "A", "-children": [ 7 ] } },
+               { "Coordinate": { "@point": [0,0,0, [1,0,0]] } }"##,
+        );
+        let f = findings(&source);
+        assert_eq!(
+            f,
+            vec![
+                ("FIELD_VALUE_SYNTAX", "5".to_string()),
+                ("FIELD_VALUE_SYNTAX", "\"x\"".to_string()),
+                ("FIELD_DUPLICATE", "@DEF".to_string()),
+                ("FIELD_VALUE_SYNTAX", "null".to_string()),
+                ("FIELD_VALUE_SYNTAX", "1".to_string()),
+                ("FIELD_VALUE_SYNTAX", "\"0\"".to_string()),
+                ("FIELD_VALUE_SYNTAX", "false".to_string()),
+                ("FIELD_VALUE_SYNTAX", "[\"a\", 2]".to_string()),
+                ("FIELD_VALUE_SYNTAX", "\"v\"".to_string()),
+                ("USE_WITH_FIELDS", "7".to_string()),
+                ("FIELD_VALUE_SYNTAX", "[1,0,0]".to_string()),
+            ]
+        );
+        let parsed = read_str(&source);
+        let messages = messages(&parsed);
+        assert_eq!(
+            messages[0],
+            "`-children` holds objects naming a node, like {\"Transform\": {…}}, found the number 5"
+        );
+        assert_eq!(
+            messages[4],
+            "a `field` declaration is an object, found the number 1"
+        );
+        assert_eq!(parsed.diagnostics[5].index, Some(1));
+        assert_eq!(messages[6], "a `connect` is an object, found `false`");
+        assert_eq!(
+            messages[8],
+            "a `fieldValue` is an object, found the string \"v\""
+        );
+        assert_eq!(
+            messages[9],
+            "USE `A` holds `the number 7`: a USE takes no children or fields"
+        );
+        assert_eq!(parsed.diagnostics[10].index, Some(1));
+        // The nodes around the scalars are read.
+        let d = parsed.document.unwrap();
+        let types: Vec<&str> = d.nodes.iter().map(|n| n.type_name()).collect();
+        assert_eq!(
+            types,
+            [
+                "Box",
+                "Group",
+                "Sphere",
+                "Script",
+                "ProtoInstance",
+                "Coordinate"
+            ]
+        );
     }
 
     #[test]

@@ -3,10 +3,17 @@
 //! `serde_json::Value` forgets where things were; the checker must point at the key or
 //! value at fault. [`parse`] reads the text once, left to right, with an explicit stack
 //! (no recursion, so deep input cannot overflow the thread's stack; nesting deeper than
-//! [`MAX_DEPTH`] is an error) into a flat, pre-order [`Tree`] of [`Item`]s: every value
-//! and every object key with its byte span. Strings and numbers are not converted here:
-//! a string borrows the input unless it has escapes, and a number is read from its text
-//! by whoever knows its type (so an SFFloat is rounded once, straight to `f32`).
+//! [`MAX_DEPTH`] is an error) into a flat, pre-order [`Tree`] of [`Item`]s: every object,
+//! array, object key and member value with its byte span. Strings and numbers are not
+//! converted here: a string borrows the input unless it has escapes, and a number is read
+//! from its text by whoever knows its type (so an SFFloat is rounded once, straight to
+//! `f32`).
+//!
+//! Scalars (numbers, strings, literals) that are elements of an array get no item: they
+//! are nearly all of a large scene (every number of every coordinate and index array),
+//! and an item each would take several times the input's size. [`Tree::elements`] reads
+//! them back from the text, which the scanner has checked, with their exact spans; an
+//! array's containers are items as any other, in order among its scalars.
 //!
 //! Duplicate keys are not an error in the grammar: both members stay in the tree, in
 //! document order, for the reader to report.
@@ -36,21 +43,37 @@ pub const NOT_INTEGER: u8 = 2;
 
 /// One value or key. Strings and keys span their content without the quotes; numbers
 /// and literals their token; arrays and objects everything from the bracket to its mate.
-#[derive(Copy, Clone, Debug)]
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub struct Item {
     pub kind: Kind,
     pub flags: u8,
     pub start: u32,
     pub end: u32,
-    /// The index just past this item's subtree: its next sibling, for a value in an array
-    /// or an object member's key. For a key, the item after its value's subtree.
+    /// The index just past this item's subtree: its next sibling item, for a value in an
+    /// array or an object member's key. For a key, the item after its value's subtree.
+    /// 0 for a scalar read back from an array.
     pub next: u32,
-    /// Elements of an array, members of an object.
+    /// Elements of an array (scalars included), members of an object.
     pub len: u32,
 }
 
+/// A value of the document: an item of the tree (by index), or a scalar element of an
+/// array, which has no item of its own and is read back from the text as one.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum ValueRef {
+    Item(usize),
+    Scalar(Item),
+}
+
+impl From<usize> for ValueRef {
+    fn from(i: usize) -> ValueRef {
+        ValueRef::Item(i)
+    }
+}
+
 /// The scanned document: items in pre-order. An object is followed by, for each member,
-/// its key and then its value's subtree; an array by its elements' subtrees.
+/// its key and then its value's subtree; an array by the subtrees of its elements that
+/// are arrays or objects.
 pub struct Tree<'s> {
     pub src: &'s str,
     pub items: Vec<Item>,
@@ -66,12 +89,18 @@ pub struct Error {
 }
 
 impl<'s> Tree<'s> {
-    pub fn item(&self, i: usize) -> &Item {
-        &self.items[i]
+    /// The item of a value: its own, or the one read back for a scalar element.
+    #[inline]
+    pub fn item(&self, v: impl Into<ValueRef>) -> Item {
+        match v.into() {
+            ValueRef::Item(i) => self.items[i],
+            ValueRef::Scalar(item) => item,
+        }
     }
 
-    pub fn kind(&self, i: usize) -> Kind {
-        self.items[i].kind
+    #[inline]
+    pub fn kind(&self, v: impl Into<ValueRef>) -> Kind {
+        self.item(v).kind
     }
 
     /// The index past item `i`'s subtree.
@@ -79,51 +108,61 @@ impl<'s> Tree<'s> {
         self.items[i].next as usize
     }
 
-    /// The item's span: for strings and keys, the content without the quotes.
-    pub fn span(&self, i: usize) -> (usize, usize) {
-        let it = &self.items[i];
+    /// The value's span: for strings and keys, the content without the quotes.
+    #[inline]
+    pub fn span(&self, v: impl Into<ValueRef>) -> (usize, usize) {
+        let it = self.item(v);
         (it.start as usize, it.end as usize)
     }
 
-    /// The item's whole token: strings and keys with their quotes.
-    pub fn full_span(&self, i: usize) -> (usize, usize) {
-        let it = &self.items[i];
+    /// The value's whole token: strings and keys with their quotes.
+    pub fn full_span(&self, v: impl Into<ValueRef>) -> (usize, usize) {
+        let it = self.item(v);
         match it.kind {
             Kind::String | Kind::Key => (it.start as usize - 1, it.end as usize + 1),
             _ => (it.start as usize, it.end as usize),
         }
     }
 
-    /// The item's text as written (for strings and keys: between the quotes, escapes kept).
-    pub fn raw(&self, i: usize) -> &'s str {
-        let (s, e) = self.span(i);
+    /// The value's text as written (for strings and keys: between the quotes, escapes
+    /// kept).
+    pub fn raw(&self, v: impl Into<ValueRef>) -> &'s str {
+        let (s, e) = self.span(v);
         &self.src[s..e]
     }
 
     /// [`Tree::raw`] as bytes (no character-boundary checks: for numbers).
     #[inline]
-    pub fn raw_bytes(&self, i: usize) -> &'s [u8] {
-        let it = &self.items[i];
-        &self.src.as_bytes()[it.start as usize..it.end as usize]
+    pub fn raw_bytes(&self, v: impl Into<ValueRef>) -> &'s [u8] {
+        let (s, e) = self.span(v);
+        &self.src.as_bytes()[s..e]
     }
 
     /// The whole token's text as written, quotes included: the JSON text of the value.
-    pub fn raw_full(&self, i: usize) -> &'s str {
-        let (s, e) = self.full_span(i);
+    pub fn raw_full(&self, v: impl Into<ValueRef>) -> &'s str {
+        let (s, e) = self.full_span(v);
         &self.src[s..e]
     }
 
     /// A string's or key's text, unescaped. Borrowed when it has no escapes.
-    pub fn str(&self, i: usize) -> Cow<'s, str> {
-        let it = &self.items[i];
-        let raw = self.raw(i);
-        if it.flags & ESCAPED == 0 {
+    pub fn str(&self, v: impl Into<ValueRef>) -> Cow<'s, str> {
+        let v = v.into();
+        let raw = self.raw(v);
+        if self.item(v).flags & ESCAPED == 0 {
             Cow::Borrowed(raw)
         } else {
             // The scanner checked the escapes (surrogates paired), so this cannot fail;
             // keep the raw text if it ever did.
-            let quoted = self.raw_full(i);
+            let quoted = self.raw_full(v);
             Cow::Owned(serde_json::from_str::<String>(quoted).unwrap_or_else(|_| raw.to_string()))
+        }
+    }
+
+    /// The item index of `v` when it is an object.
+    pub fn object(&self, v: ValueRef) -> Option<usize> {
+        match v {
+            ValueRef::Item(i) if self.items[i].kind == Kind::Object => Some(i),
+            _ => None,
         }
     }
 
@@ -139,11 +178,16 @@ impl<'s> Tree<'s> {
 
     /// The elements of array `i`, in order.
     pub fn elements(&self, i: usize) -> Elements<'_, 's> {
-        debug_assert_eq!(self.items[i].kind, Kind::Array);
+        let array = &self.items[i];
+        debug_assert_eq!(array.kind, Kind::Array);
+        let base = array.start as usize + 1;
         Elements {
             tree: self,
-            cursor: i + 1,
-            end: self.next(i),
+            text: &self.src.as_bytes()[base..array.end as usize - 1],
+            base,
+            at: 0,
+            container: i + 1,
+            left: array.len,
         }
     }
 
@@ -183,24 +227,130 @@ impl Iterator for Members<'_, '_> {
     }
 }
 
+/// The elements of an array: its arrays and objects are the tree's items, its scalars are
+/// read back from the text. The scanner checked that text, so only the ends of tokens are
+/// looked for here.
 pub struct Elements<'t, 's> {
     tree: &'t Tree<'s>,
-    cursor: usize,
-    end: usize,
+    /// The array's text between its brackets.
+    text: &'s [u8],
+    /// The offset of `text` in the source.
+    base: usize,
+    /// Where in `text` to look for the next element: after the previous one.
+    at: usize,
+    /// The item of the next element that is an array or object.
+    container: usize,
+    /// Elements not read yet.
+    left: u32,
+}
+
+/// A reader of one number in a larger text, as the `scan_*` functions of
+/// [`crate::parse::number`]: `scan(text, at)` gives the number starting at `at` and the
+/// offset where it ends, or `None` when it refuses the number.
+pub type ScanNumber<T> = fn(&[u8], usize) -> Option<(T, usize)>;
+
+impl<'s> Elements<'_, 's> {
+    /// The offset in `text` of the next element, past whitespace and the comma before it.
+    #[inline(always)]
+    fn skip_separators(&self) -> usize {
+        let mut at = self.at;
+        while let Some(b' ' | b'\n' | b'\r' | b'\t' | b',') = self.text.get(at) {
+            at += 1;
+        }
+        at
+    }
+
+    /// Reads the next element in one pass over its text when it is a number that `scan`
+    /// accepts. `scan` is given the array's text between its brackets, where the number
+    /// ends at a separator (`,`, whitespace) or at the end, as the `scan_*` readers of
+    /// [`crate::parse::number`] expect. `None`, leaving the element for
+    /// [`Iterator::next`], when it is not a number or `scan` refuses it, or when there are
+    /// no more elements.
+    #[inline(always)]
+    pub fn next_number<T>(&mut self, scan: ScanNumber<T>) -> Option<T> {
+        if self.left == 0 {
+            return None;
+        }
+        let at = self.skip_separators();
+        if !matches!(self.text.get(at), Some(b'-' | b'0'..=b'9')) {
+            return None;
+        }
+        let (value, end) = scan(self.text, at)?;
+        self.at = end;
+        self.left -= 1;
+        Some(value)
+    }
 }
 
 impl Iterator for Elements<'_, '_> {
-    type Item = usize;
+    type Item = ValueRef;
 
-    fn next(&mut self) -> Option<usize> {
-        if self.cursor >= self.end {
+    fn next(&mut self) -> Option<ValueRef> {
+        if self.left == 0 {
             return None;
         }
-        let i = self.cursor;
-        self.cursor = self.tree.next(i);
-        Some(i)
+        self.left -= 1;
+        let s = self.text;
+        let at = self.skip_separators();
+        // The element's kind, flags and span in `text`, and where it ends there.
+        let (kind, flags, start, end, after) = match s[at] {
+            b'{' | b'[' => {
+                let i = self.container;
+                self.container = self.tree.next(i);
+                self.at = self.tree.items[i].end as usize - self.base;
+                return Some(ValueRef::Item(i));
+            }
+            b'"' => {
+                let mut i = at + 1;
+                let mut flags = 0;
+                loop {
+                    match s[i] {
+                        b'"' => break,
+                        b'\\' => {
+                            flags = ESCAPED;
+                            i += 2;
+                        }
+                        _ => i += 1,
+                    }
+                }
+                (Kind::String, flags, at + 1, i, i + 1)
+            }
+            b't' => (Kind::True, 0, at, at + 4, at + 4),
+            b'f' => (Kind::False, 0, at, at + 5, at + 5),
+            b'n' => (Kind::Null, 0, at, at + 4, at + 4),
+            _ => {
+                // After the first character, `.`, `e`, `E`, `+` and `-` only occur in
+                // numbers with a fraction or an exponent.
+                let mut i = at + 1;
+                let mut flags = 0;
+                while let Some(&b) = s.get(i) {
+                    match NUMBER_CLASS[b as usize] {
+                        DIGIT => {}
+                        DOT | EXP_SIGN => flags = NOT_INTEGER,
+                        _ => break,
+                    }
+                    i += 1;
+                }
+                (Kind::Number, flags, at, i, i)
+            }
+        };
+        self.at = after;
+        Some(ValueRef::Scalar(Item {
+            kind,
+            flags,
+            start: (self.base + start) as u32,
+            end: (self.base + end) as u32,
+            next: 0,
+            len: 0,
+        }))
+    }
+
+    fn size_hint(&self) -> (usize, Option<usize>) {
+        (self.left as usize, Some(self.left as usize))
     }
 }
+
+impl ExactSizeIterator for Elements<'_, '_> {}
 
 /// What the scanner expects next.
 #[derive(Copy, Clone, PartialEq, Eq)]
@@ -250,7 +400,10 @@ pub fn parse(src: &str) -> Result<Tree<'_>, Error> {
         s: src.as_bytes(),
         src,
         i: 0,
-        items: Vec::with_capacity(src.len() / 6 + 16),
+        // Grown as needed: how many items there are depends on how much of the text is
+        // array scalars (a few hundred items in the benchmark scene's 85 MB, one per 32
+        // bytes in the shared corpus's median file).
+        items: Vec::new(),
         stack: Vec::new(),
     };
     if scanner.s.starts_with(b"\xEF\xBB\xBF") {
@@ -282,7 +435,8 @@ impl<'s> Scanner<'s> {
                     let Some(&b) = self.s.get(self.i) else {
                         return Err(self.eof_error());
                     };
-                    self.count_in_parent(true);
+                    // A scalar element of an array gets no item (see the module doc).
+                    let keep = !self.count_in_parent(true);
                     state = match b {
                         b'{' => {
                             self.open(Kind::Object)?;
@@ -301,23 +455,24 @@ impl<'s> Scanner<'s> {
                             State::AfterValue
                         }
                         b'"' => {
-                            self.string(Kind::String)?;
+                            let (flags, start, end) = self.string()?;
+                            if keep {
+                                self.push(Kind::String, flags, start, end);
+                            }
                             State::AfterValue
                         }
                         b'-' | b'0'..=b'9' => {
-                            self.number()?;
+                            let (flags, start, end) = self.number()?;
+                            if keep {
+                                self.push(Kind::Number, flags, start, end);
+                            }
                             State::AfterValue
                         }
-                        b't' => {
-                            self.literal(b"true", Kind::True)?;
-                            State::AfterValue
-                        }
-                        b'f' => {
-                            self.literal(b"false", Kind::False)?;
-                            State::AfterValue
-                        }
-                        b'n' => {
-                            self.literal(b"null", Kind::Null)?;
+                        b't' | b'f' | b'n' => {
+                            let (kind, start, end) = self.literal()?;
+                            if keep {
+                                self.push(kind, 0, start, end);
+                            }
                             State::AfterValue
                         }
                         _ => return Err(self.unexpected_value()),
@@ -339,7 +494,16 @@ impl<'s> Scanner<'s> {
                         }
                         b'"' => {
                             self.count_in_parent(false);
-                            self.string(Kind::Key)?;
+                            let (flags, start, end) = self.string()?;
+                            // Its `next` is set once its value is complete.
+                            self.items.push(Item {
+                                kind: Kind::Key,
+                                flags,
+                                start: start as u32,
+                                end: end as u32,
+                                next: 0,
+                                len: 0,
+                            });
                             self.skip_ws();
                             match self.s.get(self.i) {
                                 Some(b':') => self.i += 1,
@@ -391,7 +555,7 @@ impl<'s> Scanner<'s> {
                                     ));
                                 }
                                 // The common case of big arrays: the next number, without
-                                // going round the state machine.
+                                // going round the state machine (and without an item).
                                 Some(b'-' | b'0'..=b'9') => {
                                     self.items[top as usize].len += 1;
                                     self.number()?;
@@ -450,14 +614,18 @@ impl<'s> Scanner<'s> {
 
     /// Counts one more element (`array`) or member (`!array`) in the innermost container
     /// when it is of that kind. A member is counted at its key, not again at its value.
+    /// Returns whether the innermost container is an array.
     #[inline(always)]
-    fn count_in_parent(&mut self, array: bool) {
-        if let Some(&top) = self.stack.last() {
-            let item = &mut self.items[top as usize];
-            if (item.kind == Kind::Array) == array {
-                item.len += 1;
-            }
+    fn count_in_parent(&mut self, array: bool) -> bool {
+        let Some(&top) = self.stack.last() else {
+            return false;
+        };
+        let item = &mut self.items[top as usize];
+        let in_array = item.kind == Kind::Array;
+        if in_array == array {
+            item.len += 1;
         }
+        in_array
     }
 
     fn push(&mut self, kind: Kind, flags: u8, start: usize, end: usize) {
@@ -518,8 +686,9 @@ impl<'s> Scanner<'s> {
         self.after_value_pushed(index as u32);
     }
 
-    /// A string or key starting at the `"` under the cursor.
-    fn string(&mut self, kind: Kind) -> Result<(), Error> {
+    /// A string or key starting at the `"` under the cursor: its flags and the span of its
+    /// content.
+    fn string(&mut self) -> Result<(u8, usize, usize), Error> {
         let open = self.i;
         let s = self.s;
         let mut i = open + 1;
@@ -564,20 +733,7 @@ impl<'s> Scanner<'s> {
             }
         }
         self.i = i + 1;
-        let index = self.items.len() as u32;
-        self.items.push(Item {
-            kind,
-            flags,
-            start: (open + 1) as u32,
-            end: i as u32,
-            // A key's `next` is set once its value is complete.
-            next: if kind == Kind::Key { 0 } else { index + 1 },
-            len: 0,
-        });
-        if kind != Kind::Key {
-            self.after_value_pushed(index);
-        }
-        Ok(())
+        Ok((flags, open + 1, i))
     }
 
     /// Checks the escape at the backslash `at`; returns the offset after it.
@@ -652,54 +808,37 @@ impl<'s> Scanner<'s> {
 
     /// A number starting at the cursor: `-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?`.
     ///
-    /// One pass over the token's characters (big arrays of numbers are most of a large
-    /// scene), then a cheap check of the common shape `-?digits(.digits)?`; anything else
-    /// goes through the full grammar.
-    fn number(&mut self) -> Result<(), Error> {
+    /// Big arrays of numbers are most of a large scene, so the common shape
+    /// `-?digits(.digits)?` is read here in one straight pass over its digits; anything
+    /// else (exponents, errors) goes through the full grammar. Returns the flags and the
+    /// span.
+    #[inline(always)]
+    fn number(&mut self) -> Result<(u8, usize, usize), Error> {
         let s = self.s;
-        let n = s.len();
         let start = self.i;
-        let mut i = start + 1;
-        let mut mask = 0u8;
-        let mut dots = 0usize;
-        let mut dot = 0usize;
-        while i < n {
-            let class = NUMBER_CLASS[s[i] as usize];
-            if class & (DIGIT | DOT) == 0 {
-                break;
-            }
-            mask |= class;
-            let is_dot = class == DOT;
-            dots += usize::from(is_dot);
-            dot = if is_dot { i } else { dot };
-            i += 1;
-        }
-        let end = i;
-        let glued = end < n && NUMBER_CLASS[s[end] as usize] & (EXP_SIGN | LETTER | DOT) != 0;
         let int_start = start + usize::from(s[start] == b'-');
-        let simple = !glued
-            && int_start < end
-            && s[int_start].is_ascii_digit()
-            && match dots {
-                0 => s[int_start] != b'0' || end - int_start == 1,
-                1 => {
-                    dot > int_start
-                        && dot + 1 < end
-                        && (s[int_start] != b'0' || dot - int_start == 1)
-                }
-                _ => false,
-            };
+        let int_end = digits_end(s, int_start);
+        let mut end = int_end;
+        let mut flags = 0;
+        if s.get(end) == Some(&b'.') {
+            end = digits_end(s, end + 1);
+            flags = NOT_INTEGER;
+        }
+        let simple = int_end > int_start
+            && (s[int_start] != b'0' || int_end - int_start == 1)
+            // A decimal point needs a digit after it.
+            && (flags == 0 || end > int_end + 1)
+            && s.get(end)
+                .is_none_or(|&b| NUMBER_CLASS[b as usize] & (EXP_SIGN | LETTER | DOT) == 0);
         if simple {
-            let flags = if mask & DOT != 0 { NOT_INTEGER } else { 0 };
             self.i = end;
-            self.push(Kind::Number, flags, start, end);
-            return Ok(());
+            return Ok((flags, start, end));
         }
         self.number_full()
     }
 
     /// [`Scanner::number`] for exponents and errors: the grammar step by step.
-    fn number_full(&mut self) -> Result<(), Error> {
+    fn number_full(&mut self) -> Result<(u8, usize, usize), Error> {
         let s = self.s;
         let start = self.i;
         let mut i = start;
@@ -759,8 +898,7 @@ impl<'s> Scanner<'s> {
             return Err(self.bad_number(start, "not a valid JSON number"));
         }
         self.i = i;
-        self.push(Kind::Number, flags, start, i);
-        Ok(())
+        Ok((flags, start, i))
     }
 
     #[cold]
@@ -779,16 +917,21 @@ impl<'s> Scanner<'s> {
         }
     }
 
-    fn literal(&mut self, word: &'static [u8], kind: Kind) -> Result<(), Error> {
+    /// `true`, `false` or `null` at the cursor: its kind and span.
+    fn literal(&mut self) -> Result<(Kind, usize, usize), Error> {
         let start = self.i;
+        let (word, kind): (&[u8], _) = match self.s[start] {
+            b't' => (b"true", Kind::True),
+            b'f' => (b"false", Kind::False),
+            _ => (b"null", Kind::Null),
+        };
         let end = start + word.len();
         let glued = self.s.get(end).is_some_and(u8::is_ascii_alphanumeric);
         if self.s.get(start..end) != Some(word) || glued {
             return Err(self.unexpected_value());
         }
         self.i = end;
-        self.push(kind, 0, start, end);
-        Ok(())
+        Ok((kind, start, end))
     }
 
     #[cold]
@@ -877,6 +1020,15 @@ impl<'s> Scanner<'s> {
     }
 }
 
+/// The end of the run of ASCII digits starting at `i`.
+#[inline(always)]
+fn digits_end(s: &[u8], mut i: usize) -> usize {
+    while s.get(i).is_some_and(u8::is_ascii_digit) {
+        i += 1;
+    }
+    i
+}
+
 /// 1-based line and column (in characters) of a byte offset, for messages.
 fn line_column(src: &str, at: usize) -> (usize, usize) {
     let before = &src.as_bytes()[..at.min(src.len())];
@@ -908,15 +1060,13 @@ mod tests {
     fn spans_of_keys_and_values() {
         let src = r#"{ "a": [1, -2.5e3, true], "b": {"c": null}, "s": "x\ny" }"#;
         let t = parse(src).unwrap();
+        // The array's scalars have no items.
         assert_eq!(
             kinds(&t),
             vec![
                 Kind::Object,
                 Kind::Key,
                 Kind::Array,
-                Kind::Number,
-                Kind::Number,
-                Kind::True,
                 Kind::Key,
                 Kind::Object,
                 Kind::Key,
@@ -934,30 +1084,137 @@ mod tests {
             .collect();
         assert_eq!(
             members,
-            vec![("a".into(), 2), ("b".into(), 7), ("s".into(), 11)]
+            vec![("a".into(), 2), ("b".into(), 4), ("s".into(), 8)]
         );
         assert_eq!(t.raw(1), "a");
         assert_eq!(&src[t.full_span(1).0..t.full_span(1).1], "\"a\"");
         assert_eq!(t.raw(2), "[1, -2.5e3, true]");
-        assert_eq!(t.raw(4), "-2.5e3");
-        assert_eq!(t.item(4).flags & NOT_INTEGER, NOT_INTEGER);
-        assert_eq!(t.item(3).flags & NOT_INTEGER, 0);
-        assert_eq!(t.elements(2).collect::<Vec<_>>(), vec![3, 4, 5]);
-        assert_eq!(t.raw(7), r#"{"c": null}"#);
-        assert_eq!(t.next(1), 6, "a key's next skips its value");
-        assert_eq!(t.next(7), 10);
-        assert_eq!(t.str(11), "x\ny");
+        let elements: Vec<ValueRef> = t.elements(2).collect();
+        let texts: Vec<(Kind, &str)> = elements.iter().map(|&e| (t.kind(e), t.raw(e))).collect();
+        assert_eq!(
+            texts,
+            [
+                (Kind::Number, "1"),
+                (Kind::Number, "-2.5e3"),
+                (Kind::True, "true")
+            ]
+        );
+        assert_eq!(t.full_span(elements[1]), (11, 17));
+        assert_eq!(t.item(elements[1]).flags & NOT_INTEGER, NOT_INTEGER);
+        assert_eq!(t.item(elements[0]).flags & NOT_INTEGER, 0);
+        assert_eq!(t.raw(4), r#"{"c": null}"#);
+        assert_eq!(t.next(1), 3, "a key's next skips its value");
+        assert_eq!(t.next(4), 7);
+        assert_eq!(t.str(8), "x\ny");
         assert!(matches!(t.str(1), Cow::Borrowed(_)));
+    }
+
+    #[test]
+    fn elements_mix_scalars_read_back_and_containers() {
+        let src = "[ 0 ,-1.5E+2,\t\"q\\\"\" , [7], {\"k\": [false, null]}, \"\", 12 ]";
+        let t = parse(src).unwrap();
+        assert_eq!(t.item(0).len, 7);
+        let elements: Vec<ValueRef> = t.elements(0).collect();
+        assert_eq!(t.elements(0).len(), 7);
+        let found: Vec<(Kind, &str)> = elements
+            .iter()
+            .map(|&e| (t.kind(e), &src[t.full_span(e).0..t.full_span(e).1]))
+            .collect();
+        assert_eq!(
+            found,
+            [
+                (Kind::Number, "0"),
+                (Kind::Number, "-1.5E+2"),
+                (Kind::String, "\"q\\\"\""),
+                (Kind::Array, "[7]"),
+                (Kind::Object, "{\"k\": [false, null]}"),
+                (Kind::String, "\"\""),
+                (Kind::Number, "12"),
+            ]
+        );
+        assert_eq!(t.str(elements[2]), "q\"");
+        assert_eq!(t.object(elements[4]), Some(2));
+        assert_eq!(t.object(elements[3]), None);
+        assert_eq!(t.object(elements[0]), None);
+        let ValueRef::Item(inner) = elements[3] else {
+            panic!("a nested array is an item")
+        };
+        assert_eq!(t.raw(t.elements(inner).next().unwrap()), "7");
+        let (_, k) = t.get(2, "k").unwrap();
+        let literals: Vec<Kind> = t.elements(k).map(|e| t.kind(e)).collect();
+        assert_eq!(literals, [Kind::False, Kind::Null]);
+        // Only the containers and the object's key are items.
+        assert_eq!(
+            kinds(&t),
+            [
+                Kind::Array,
+                Kind::Array,
+                Kind::Object,
+                Kind::Key,
+                Kind::Array
+            ]
+        );
+    }
+
+    /// Arrays of every kind of element with varied whitespace: each element read back
+    /// has the kind and span it was written with.
+    #[test]
+    fn elements_are_read_back_with_their_spans() {
+        let tokens: [(&str, Kind); 12] = [
+            ("0", Kind::Number),
+            ("-12.5e-3", Kind::Number),
+            ("3E+7", Kind::Number),
+            ("42", Kind::Number),
+            ("\"\"", Kind::String),
+            ("\"a\\\"],\\\\\"", Kind::String),
+            ("\"é\\u00e9\"", Kind::String),
+            ("true", Kind::True),
+            ("false", Kind::False),
+            ("null", Kind::Null),
+            ("[1, [\"]\"], {}]", Kind::Array),
+            ("{\"k\": [2, 3], \"s\": \"]\"}", Kind::Object),
+        ];
+        let spaces = ["", " ", "\n", "\t ", "\r\n  "];
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = |n: usize| {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state % n as u64) as usize
+        };
+        for _ in 0..300 {
+            let count = next(9);
+            let mut src = String::from("[");
+            let mut expected = Vec::new();
+            for k in 0..count {
+                if k > 0 {
+                    src.push_str(spaces[next(spaces.len())]);
+                    src.push(',');
+                }
+                src.push_str(spaces[next(spaces.len())]);
+                let (token, kind) = tokens[next(tokens.len())];
+                expected.push((kind, (src.len(), src.len() + token.len())));
+                src.push_str(token);
+            }
+            src.push_str(spaces[next(spaces.len())]);
+            src.push(']');
+            let t = parse(&src).unwrap();
+            let found: Vec<(Kind, (usize, usize))> =
+                t.elements(0).map(|e| (t.kind(e), t.full_span(e))).collect();
+            assert_eq!(found, expected, "{src}");
+            assert_eq!(t.item(0).len as usize, count);
+        }
     }
 
     #[test]
     fn escapes_are_unescaped() {
         let t = parse(r#"["a\"b\\c\/d\b\f\n\r\t", "\u00e9\ud83d\ude00", "plain é"]"#).unwrap();
-        assert_eq!(t.str(1), "a\"b\\c/d\u{8}\u{c}\n\r\t");
-        assert_eq!(t.str(2), "é😀");
-        assert_eq!(t.str(3), "plain é");
-        assert!(t.item(2).flags & ESCAPED != 0);
-        assert!(t.item(3).flags & ESCAPED == 0);
+        let e: Vec<ValueRef> = t.elements(0).collect();
+        assert_eq!(t.str(e[0]), "a\"b\\c/d\u{8}\u{c}\n\r\t");
+        assert_eq!(t.str(e[1]), "é😀");
+        assert_eq!(t.str(e[2]), "plain é");
+        assert!(t.item(e[1]).flags & ESCAPED != 0);
+        assert!(t.item(e[2]).flags & ESCAPED == 0);
     }
 
     #[test]
@@ -1031,6 +1288,27 @@ mod tests {
             ("[1, // c\n 2]", 4, "comments"),
             ("{,}", 1, "object key"),
             ("[,1]", 1, "before `,`"),
+            // Inside arrays of numbers, which keep no items: the same checks.
+            ("[1, 2, 3 4]", 9, "expected `,` or `]`"),
+            ("[1,, 2]", 3, "before `,`"),
+            ("[1, 2.]", 4, "decimal point"),
+            ("[1, 2, 03]", 7, "leading zeros"),
+            ("[0, -]", 4, "`-` must be followed"),
+            ("[0, 1e+]", 4, "exponent"),
+            ("[0, 1x]", 4, "not a valid JSON number"),
+            ("[1, 2}", 5, "does not close an array"),
+            ("[1, tru]", 4, "expected a value"),
+            ("[1, \"a]", 4, "unterminated string"),
+            ("[1, 2", 5, "ends inside an array"),
+            ("[1.2.3]", 1, "not a valid JSON number"),
+            ("[-01]", 1, "leading zeros"),
+            ("[1.e3]", 1, "decimal point"),
+            ("[--1]", 1, "`-` must be followed"),
+            ("[0x1F]", 1, "not a valid JSON number"),
+            ("[1.5f]", 1, "not a valid JSON number"),
+            ("[2.5E]", 1, "exponent"),
+            ("{\"a\": 0.}", 6, "decimal point"),
+            ("-", 0, "`-` must be followed"),
         ];
         for &(src, at, needle) in cases {
             let e = err(src);
@@ -1040,6 +1318,36 @@ mod tests {
                 "message for {src:?}: {:?}",
                 e.message
             );
+        }
+    }
+
+    #[test]
+    fn numbers_of_every_shape() {
+        for (number, integer) in [
+            ("0", true),
+            ("-0", true),
+            ("7", true),
+            ("-1234567890123", true),
+            ("0.5", false),
+            ("-0.25", false),
+            ("10.000", false),
+            ("1e3", false),
+            ("-1.25E-3", false),
+            ("0e+0", false),
+        ] {
+            for src in [number.to_string(), format!("{{\"a\": {number}}}")] {
+                let t = parse(&src).unwrap();
+                let value = if t.kind(0) == Kind::Object { 2 } else { 0 };
+                assert_eq!(t.kind(value), Kind::Number, "{src}");
+                assert_eq!(t.raw(value), number, "{src}");
+                assert_eq!(t.item(value).flags & NOT_INTEGER == 0, integer, "{src}");
+            }
+            let src = format!("[{number},{number} ]");
+            let t = parse(&src).unwrap();
+            for e in t.elements(0) {
+                assert_eq!(t.raw(e), number, "{src}");
+                assert_eq!(t.item(e).flags & NOT_INTEGER == 0, integer, "{src}");
+            }
         }
     }
 

@@ -10,9 +10,9 @@
 //! precision (an SFFloat `1e39` is +∞ for a rule to report, not an error here), into one
 //! vector per field.
 
-use super::tree::{Kind, Tree, NOT_INTEGER};
+use super::tree::{Kind, ScanNumber, Tree, ValueRef, NOT_INTEGER};
 use crate::model::{Image, Value};
-use crate::parse::number::{parse_f32, parse_f64};
+use crate::parse::number::{parse_f32, parse_f64, scan_float, scan_i32};
 use crate::schema::{FieldType, Scalar};
 
 /// A value that does not fit its field's type. `span` is a byte range in the input: the
@@ -52,9 +52,9 @@ impl ValueError {
 pub fn convert(tree: &Tree, i: usize, ty: FieldType) -> Result<Value, ValueError> {
     match ty.scalar() {
         Scalar::Bool => bools(tree, i, ty).map(Value::Bools),
-        Scalar::Int32 => numbers(tree, i, ty, int32).map(Value::Int32s),
-        Scalar::Float => numbers(tree, i, ty, float32).map(Value::Floats),
-        Scalar::Double => numbers(tree, i, ty, float64).map(Value::Doubles),
+        Scalar::Int32 => numbers(tree, i, ty, &INT32).map(Value::Int32s),
+        Scalar::Float => numbers(tree, i, ty, &FLOAT32).map(Value::Floats),
+        Scalar::Double => numbers(tree, i, ty, &FLOAT64).map(Value::Doubles),
         Scalar::String => strings(tree, i, ty).map(Value::Strings),
         Scalar::Image => images(tree, i, ty).map(Value::Images),
         Scalar::Node => Err(ValueError::new(
@@ -65,7 +65,8 @@ pub fn convert(tree: &Tree, i: usize, ty: FieldType) -> Result<Value, ValueError
 }
 
 /// What a JSON value is, for messages: `a string ("1")`, `an array`, `null`.
-pub fn describe(tree: &Tree, i: usize) -> String {
+pub fn describe(tree: &Tree, v: impl Into<ValueRef>) -> String {
+    let i = v.into();
     match tree.kind(i) {
         Kind::Null => "null".to_string(),
         Kind::True => "`true`".to_string(),
@@ -173,7 +174,6 @@ fn looks_numeric(text: &str) -> bool {
 }
 
 /// The count check: exactly the arity for SF types, a multiple of it for MF types.
-/// `elements` are the array's element items.
 fn check_count(tree: &Tree, array: usize, ty: FieldType, count: usize) -> Result<(), ValueError> {
     let arity = ty.arity();
     let noun = element_noun(ty);
@@ -183,13 +183,8 @@ fn check_count(tree: &Tree, array: usize, ty: FieldType, count: usize) -> Result
         }
         // Point at the incomplete last element.
         let first = count - count % arity;
-        let elements: Vec<usize> = tree.elements(array).skip(first).collect();
-        let span = match (elements.first(), elements.last()) {
-            (Some(&a), Some(&b)) => (tree.full_span(a).0, tree.full_span(b).1),
-            _ => tree.full_span(array),
-        };
         return Err(ValueError::new(
-            span,
+            elements_span(tree, array, first),
             format!("{ty} takes a multiple of {arity} {}, found {count}", noun.1),
         )
         .index(first / arity));
@@ -204,11 +199,7 @@ fn check_count(tree: &Tree, array: usize, ty: FieldType, count: usize) -> Result
     };
     let span = if count > arity {
         // Point at the surplus.
-        let surplus: Vec<usize> = tree.elements(array).skip(arity).collect();
-        match (surplus.first(), surplus.last()) {
-            (Some(&a), Some(&b)) => (tree.full_span(a).0, tree.full_span(b).1),
-            _ => tree.full_span(array),
-        }
+        elements_span(tree, array, arity)
     } else {
         tree.full_span(array)
     };
@@ -218,14 +209,27 @@ fn check_count(tree: &Tree, array: usize, ty: FieldType, count: usize) -> Result
     ))
 }
 
+/// The span from element `first` of `array` to its last element (the whole array when
+/// there are none from there).
+fn elements_span(tree: &Tree, array: usize, first: usize) -> (usize, usize) {
+    let mut rest = tree.elements(array).skip(first);
+    match rest.next() {
+        Some(a) => {
+            let last = rest.last().unwrap_or(a);
+            (tree.full_span(a).0, tree.full_span(last).1)
+        }
+        None => tree.full_span(array),
+    }
+}
+
 fn bools(tree: &Tree, i: usize, ty: FieldType) -> Result<Vec<bool>, ValueError> {
-    let one = |e: usize| match tree.kind(e) {
+    let one = |e: ValueRef| match tree.kind(e) {
         Kind::True => Some(true),
         Kind::False => Some(false),
         _ => None,
     };
     if !ty.is_mf() {
-        return one(i)
+        return one(i.into())
             .map(|b| vec![b])
             .ok_or_else(|| wrong_kind(tree, i, ty));
     }
@@ -244,7 +248,7 @@ fn bools(tree: &Tree, i: usize, ty: FieldType) -> Result<Vec<bool>, ValueError> 
 
 /// An MF element (or a vector's component) of the wrong kind.
 #[cold]
-fn element_error(tree: &Tree, e: usize, ty: FieldType, index: usize) -> ValueError {
+fn element_error(tree: &Tree, e: ValueRef, ty: FieldType, index: usize) -> ValueError {
     let noun = element_noun(ty);
     let error = ValueError::new(
         tree.full_span(e),
@@ -269,7 +273,8 @@ fn element_error(tree: &Tree, e: usize, ty: FieldType, index: usize) -> ValueErr
     }
 }
 
-/// Reads the number item `e` as one scalar; `Err(message)` when it does not fit.
+/// Reads one number from its text and whether it is written as an integer;
+/// `Err(message)` when it does not fit.
 type Scalarize<T> = fn(&[u8], bool) -> Result<T, String>;
 
 fn int32(text: &[u8], integer_syntax: bool) -> Result<i32, String> {
@@ -363,8 +368,36 @@ fn float64(text: &[u8], _: bool) -> Result<f64, String> {
     Ok(parse_f64(text).unwrap_or(f64::NAN))
 }
 
+/// How the numbers of one scalar type are read.
+struct NumberType<T> {
+    /// In one pass over an array's text ([`Elements::next_number`]): nearly every number.
+    ///
+    /// [`Elements::next_number`]: super::tree::Elements::next_number
+    scan: ScanNumber<T>,
+    /// Single values, and what `scan` refuses.
+    read: Scalarize<T>,
+}
+
+/// `scan_i32` takes JSON integers, and refuses the rest for [`int32`].
+const INT32: NumberType<i32> = NumberType {
+    scan: |text, at| scan_i32(text, at).ok(),
+    read: int32,
+};
+
+/// `scan_float` takes every JSON number, correctly rounded straight to the type.
+const FLOAT32: NumberType<f32> = NumberType {
+    scan: |text, at| scan_float(text, at).ok(),
+    read: float32,
+};
+
+const FLOAT64: NumberType<f64> = NumberType {
+    scan: |text, at| scan_float(text, at).ok(),
+    read: float64,
+};
+
+/// A number element or value read by `read`; `None` when it is not a number.
 #[inline(always)]
-fn scalar<T>(tree: &Tree, e: usize, read: Scalarize<T>) -> Option<Result<T, String>> {
+fn scalar<T>(tree: &Tree, e: ValueRef, read: Scalarize<T>) -> Option<Result<T, String>> {
     let item = tree.item(e);
     (item.kind == Kind::Number).then(|| read(tree.raw_bytes(e), item.flags & NOT_INTEGER == 0))
 }
@@ -373,9 +406,9 @@ fn numbers<T>(
     tree: &Tree,
     i: usize,
     ty: FieldType,
-    read: Scalarize<T>,
+    number: &NumberType<T>,
 ) -> Result<Vec<T>, ValueError> {
-    let bad_number = |e: usize, message: String, index: Option<usize>| {
+    let bad_number = |e: ValueRef, message: String, index: Option<usize>| {
         let error = ValueError::new(
             tree.full_span(e),
             format!("{ty} takes {}: {message}", element_noun(ty).1),
@@ -386,9 +419,9 @@ fn numbers<T>(
         }
     };
     if !ty.is_mf() && ty.arity() == 1 {
-        return match scalar(tree, i, read) {
+        return match scalar(tree, i.into(), number.read) {
             Some(Ok(v)) => Ok(vec![v]),
-            Some(Err(message)) => Err(bad_number(i, message, None)),
+            Some(Err(message)) => Err(bad_number(i.into(), message, None)),
             None => Err(wrong_kind(tree, i, ty)),
         };
     }
@@ -396,9 +429,16 @@ fn numbers<T>(
         return Err(wrong_kind(tree, i, ty));
     }
     let mut values = Vec::with_capacity(tree.item(i).len as usize);
-    // Elements of a flat array of numbers are consecutive leaf items.
-    for (index, e) in tree.elements(i).enumerate() {
-        match scalar(tree, e, read) {
+    let mut elements = tree.elements(i);
+    loop {
+        if let Some(v) = elements.next_number(number.scan) {
+            values.push(v);
+            continue;
+        }
+        // Not a number, or one `scan` refuses: read it on its own, or report it.
+        let Some(e) = elements.next() else { break };
+        let index = values.len();
+        match scalar(tree, e, number.read) {
             Some(Ok(v)) => values.push(v),
             Some(Err(message)) => return Err(bad_number(e, message, Some(index))),
             None => return Err(element_error(tree, e, ty, index)),
@@ -430,27 +470,26 @@ fn images(tree: &Tree, i: usize, ty: FieldType) -> Result<Vec<Image>, ValueError
     if tree.kind(i) != Kind::Array {
         return Err(wrong_kind(tree, i, ty));
     }
-    let elements: Vec<usize> = tree.elements(i).collect();
+    let mut elements = tree.elements(i);
     let mut images = Vec::new();
-    let mut k = 0;
-    while k < elements.len() {
-        let header_start = k;
+    while elements.len() > 0 {
         let mut header = [0i32; 3];
+        // From the image's first element to the last one read.
+        let mut header_span = (0, 0);
         for (h, slot) in header.iter_mut().enumerate() {
-            let Some(&e) = elements.get(k) else {
+            let Some(e) = elements.next() else {
                 let what = ["width", "height", "components"][h];
-                let first = tree.full_span(elements[header_start]).0;
-                let last = tree.full_span(elements[elements.len() - 1]).1;
                 return Err(ValueError::new(
-                    (first, last),
+                    header_span,
                     format!("{ty} needs width, height and components before its pixels; {what} is missing"),
                 ));
             };
+            let (start, end) = tree.full_span(e);
+            header_span = (if h == 0 { start } else { header_span.0 }, end);
             *slot = image_int(tree, e, ty, true, images.len())? as i32;
-            k += 1;
         }
         let [width, height, components] = header;
-        let remaining = elements.len() - k;
+        let remaining = elements.len();
         let take = if ty.is_mf() {
             // The size says where the next image starts; take what is there if the data
             // ends first.
@@ -460,10 +499,9 @@ fn images(tree: &Tree, i: usize, ty: FieldType) -> Result<Vec<Image>, ValueError
             remaining
         };
         let mut pixels = Vec::with_capacity(take);
-        for &e in &elements[k..k + take] {
+        for e in elements.by_ref().take(take) {
             pixels.push(image_int(tree, e, ty, false, images.len())? as u32);
         }
-        k += take;
         images.push(Image {
             width,
             height,
@@ -487,7 +525,7 @@ fn images(tree: &Tree, i: usize, ty: FieldType) -> Result<Vec<Image>, ValueError
 /// −2^31 taken as their 32-bit pattern), as an `i64`.
 fn image_int(
     tree: &Tree,
-    e: usize,
+    e: ValueRef,
     ty: FieldType,
     header: bool,
     image: usize,
@@ -823,5 +861,173 @@ mod tests {
     #[test]
     fn node_types_are_not_values() {
         assert!(err("[]", FieldType::MFNode).message.contains("take nodes"));
+    }
+
+    /// The text at an error's span.
+    fn at<'a>(json: &'a str, e: &ValueError) -> &'a str {
+        &json[e.span.0..e.span.1]
+    }
+
+    #[test]
+    fn errors_inside_number_arrays_point_at_the_element() {
+        // Elements of arrays have no items of their own: the spans come from the text.
+        let cases: &[(&str, FieldType, &str, Option<usize>, &str)] = &[
+            (
+                "[0, 0, 0,\n 1, \"1\", 0]",
+                FieldType::MFVec3f,
+                "\"1\"",
+                Some(1),
+                "MFVec3f takes numbers, found the string \"1\"",
+            ),
+            (
+                "[0,0,0, [1,0,0]]",
+                FieldType::MFVec3f,
+                "[1,0,0]",
+                Some(1),
+                "MFVec3f takes numbers, found an array",
+            ),
+            (
+                "[0,0,0, 1,0,0, {\"x\": 1}]",
+                FieldType::MFVec3f,
+                "{\"x\": 1}",
+                Some(2),
+                "MFVec3f takes numbers, found an object",
+            ),
+            (
+                "[ 1 ,\t2 , null ]",
+                FieldType::SFVec3f,
+                "null",
+                None,
+                "SFVec3f takes numbers, found null",
+            ),
+            (
+                "[0, 1, 2, 3.5, 4]",
+                FieldType::MFInt32,
+                "3.5",
+                Some(3),
+                "MFInt32 takes whole numbers: whole numbers only, found 3.5",
+            ),
+            (
+                "[0, -1, -2147483649, 4]",
+                FieldType::MFInt32,
+                "-2147483649",
+                Some(2),
+                "MFInt32 takes whole numbers: -2147483649 is out of range (-2147483648 to 2147483647)",
+            ),
+            (
+                "[1, 0, false, 1]",
+                FieldType::SFRotation,
+                "false",
+                None,
+                "SFRotation takes numbers, found `false`",
+            ),
+            (
+                "[\"a\\\"b\", 1]",
+                FieldType::MFString,
+                "1",
+                Some(1),
+                "MFString takes strings, found the number 1",
+            ),
+            (
+                "[true,false , \"false\"]",
+                FieldType::MFBool,
+                "\"false\"",
+                Some(2),
+                "MFBool takes booleans, found the string \"false\"",
+            ),
+            (
+                "[1, 1, 3, 255, 2.5e0]",
+                FieldType::MFImage,
+                "2.5e0",
+                Some(1),
+                "MFImage takes whole numbers, found 2.5e0 as a size",
+            ),
+            (
+                "[0,0,0, 1,0,0, 1 ]",
+                FieldType::MFVec3f,
+                "1",
+                Some(2),
+                "MFVec3f takes a multiple of 3 numbers, found 7",
+            ),
+            (
+                "[1, 2, 3, 4,\n 5]",
+                FieldType::SFVec3f,
+                "4,\n 5",
+                None,
+                "SFVec3f takes 3 numbers, found 5",
+            ),
+        ];
+        for &(json, ty, text, index, message) in cases {
+            let e = err(json, ty);
+            assert_eq!(at(json, &e), text, "{json} as {ty}");
+            assert_eq!(e.index, index, "{json} as {ty}");
+            assert_eq!(e.message, message, "{json} as {ty}");
+        }
+        let e = err("[0, 0, 0, \"1 2\"]", FieldType::MFFloat);
+        assert_eq!(
+            e.help.as_deref(),
+            Some("JSON numbers are written without quotes")
+        );
+        let e = err("[0,0,0, [1,0,0]]", FieldType::MFVec3f);
+        assert!(e.help.unwrap().contains("flat array"));
+    }
+
+    #[test]
+    fn numbers_read_in_one_pass_equal_numbers_read_one_by_one() {
+        // Each token alone (as a single value, read by the per-token readers) and as every
+        // element of an array (read in one pass from the array's text) gives one value.
+        let floats = [
+            "0",
+            "-0",
+            "0.1",
+            "-1.5E-3",
+            "1e39",
+            "-1e400",
+            "1e-50",
+            "3.4028235e38",
+            "1.00000005960464477539062501",
+            "123456789012345678901234567890",
+            "0.000000000000000000000000000000000000000000001401298464324817",
+        ];
+        let array = format!("[{}]", floats.join(" ,\n\t"));
+        let Value::Floats(f32s) = conv(&array, FieldType::MFFloat).unwrap() else {
+            panic!("floats")
+        };
+        let Value::Doubles(f64s) = conv(&array, FieldType::MFDouble).unwrap() else {
+            panic!("doubles")
+        };
+        for (k, token) in floats.iter().enumerate() {
+            assert_eq!(
+                f32s[k].to_bits(),
+                conv(token, FieldType::SFFloat)
+                    .unwrap()
+                    .as_floats()
+                    .unwrap()[0]
+                    .to_bits(),
+                "{token}"
+            );
+            assert_eq!(
+                f64s[k].to_bits(),
+                conv(token, FieldType::SFDouble)
+                    .unwrap()
+                    .as_doubles()
+                    .unwrap()[0]
+                    .to_bits(),
+                "{token}"
+            );
+        }
+        // Integers the one-pass reader refuses (exponents, fractions of zero) are read one
+        // by one, in place.
+        assert_eq!(
+            conv(
+                "[0,-0, 7, 1e2, 2.0, -2147483648, 2147483647, -5]",
+                FieldType::MFInt32
+            ),
+            Ok(Value::Int32s(vec![0, 0, 7, 100, 2, i32::MIN, i32::MAX, -5]))
+        );
+        assert_eq!(
+            conv("[ ]", FieldType::MFInt32),
+            Ok(Value::Int32s(Vec::new()))
+        );
     }
 }
