@@ -13,7 +13,7 @@
 use std::path::{Path, PathBuf};
 
 use x3dcheck::config::CheckConfig;
-use x3dcheck::render::{render_image, ImageSize, Quality, RenderArgs};
+use x3dcheck::render::{preview, render_image, Gpu, ImageSize, Quality, RenderArgs};
 
 const CHANNEL_TOLERANCE: u8 = 24;
 const PIXEL_BUDGET: f64 = 0.01;
@@ -268,4 +268,43 @@ fn coordinate_double_far_from_the_origin_keeps_its_precision() {
         compare(&far, &near, Path::new("target")).is_none(),
         "the far quad differs from the near one"
     );
+}
+
+#[test]
+fn one_open_device_draws_several_images_like_a_device_each() {
+    if std::env::var_os("X3DCHECK_NO_GPU").is_some_and(|v| v == "1") {
+        eprintln!("shared-device test SKIPPED: X3DCHECK_NO_GPU=1");
+        return;
+    }
+    // Two different cases in turn on one device: nothing of the first may leak into the
+    // second (pipelines, textures and targets are made per image).
+    let gpu = Gpu::open().expect("an adapter");
+    for name in ["material_textures", "phong_box_headlight"] {
+        let case = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("corpus/render")
+            .join(name);
+        let scene = case.join("scene.x3d");
+        let source = std::fs::read(&scene).unwrap();
+        let (mut report, doc) = x3dcheck::check::check_document(
+            &scene.display().to_string(),
+            &source,
+            &CheckConfig::default(),
+        );
+        let args = case_args(&case);
+        let own_device = render_image(&args, &scene, &source, doc.as_ref(), &mut report).unwrap();
+        let shared = preview(
+            &args,
+            args.quality.settings(),
+            &scene,
+            &source,
+            doc.as_ref(),
+            &mut report,
+        )
+        .and_then(|p| p.draw_on(&gpu))
+        .unwrap();
+        assert!(
+            own_device == shared,
+            "{name}: the shared device drew another image"
+        );
+    }
 }

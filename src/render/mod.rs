@@ -41,7 +41,7 @@ pub const LIGHTING_WGSL: &str = include_str!("lighting.wgsl");
 #[cfg(feature = "render")]
 const SHADER_WGSL: &str = concat!(include_str!("lighting.wgsl"), include_str!("shader.wgsl"));
 #[cfg(feature = "render")]
-pub use gpu::{open_device, GpuError, Settings, Shading};
+pub use gpu::{open_device, Gpu, GpuError, Settings, Shading};
 
 use crate::model::Document;
 use crate::report::FileReport;
@@ -78,6 +78,12 @@ impl Preview {
     /// Draws the image.
     pub fn draw(self) -> Result<image::RgbaImage, String> {
         gpu::render(self.list, self.width, self.height, self.settings).map_err(|e| e.to_string())
+    }
+
+    /// Draws the image on a device already open.
+    pub fn draw_on(self, gpu: &Gpu) -> Result<image::RgbaImage, String> {
+        gpu.render(self.list, self.width, self.height, self.settings)
+            .map_err(|e| e.to_string())
     }
 
     /// Draws the image into the `--render` file.

@@ -42,24 +42,58 @@ pub struct Settings {
     pub supersampling: u32,
 }
 
-/// Renders the draw list into a `width` × `height` RGBA image (rows from the top). The
-/// list is consumed: each mesh's arrays are freed once they are on the GPU.
+/// Renders the draw list into a `width` × `height` RGBA image (rows from the top) on a
+/// device opened for it. The list is consumed: each mesh's arrays are freed once they are
+/// on the GPU.
 pub fn render(
     list: DrawList,
     width: u32,
     height: u32,
     settings: Settings,
 ) -> Result<image::RgbaImage, GpuError> {
-    pollster::block_on(render_async(list, width, height, settings))
+    Gpu::open()?.render(list, width, height, settings)
 }
 
-async fn render_async(
+/// An open graphics device, for drawing several images without opening one each time.
+pub struct Gpu {
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+}
+
+impl Gpu {
+    /// Opens a device on any adapter (see [`find_adapter`]).
+    pub fn open() -> Result<Gpu, GpuError> {
+        let (device, queue) = pollster::block_on(open_device())?;
+        Ok(Gpu { device, queue })
+    }
+
+    /// Renders the draw list as [`render`] does.
+    pub fn render(
+        &self,
+        list: DrawList,
+        width: u32,
+        height: u32,
+        settings: Settings,
+    ) -> Result<image::RgbaImage, GpuError> {
+        pollster::block_on(render_on(
+            &self.device,
+            &self.queue,
+            list,
+            width,
+            height,
+            settings,
+        ))
+    }
+}
+
+async fn render_on(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
     list: DrawList,
     width: u32,
     height: u32,
     settings: Settings,
 ) -> Result<image::RgbaImage, GpuError> {
-    let (device, queue) = open_device().await?;
     let max_side = device.limits().max_texture_dimension_2d;
     if width > max_side || height > max_side {
         return Err(GpuError::Device(format!(
@@ -81,8 +115,8 @@ async fn render_async(
     ]
     .map(|filter| device.push_error_scope(filter));
     let drawn = frame::draw(
-        &device,
-        &queue,
+        device,
+        queue,
         list,
         frame::Target {
             width: target_width,
