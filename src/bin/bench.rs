@@ -15,6 +15,9 @@
 
 #[path = "bench/measure.rs"]
 mod measure;
+#[cfg(feature = "render")]
+#[path = "bench/render.rs"]
+mod render;
 #[path = "bench/scene.rs"]
 mod scene;
 
@@ -58,6 +61,12 @@ struct Args {
     /// Do not run `xmllint --schema` (about 10 s at full size)
     #[arg(long)]
     no_schema: bool,
+    /// Do not time `--render` nor measure the quality presets' accuracy
+    #[arg(long)]
+    no_render: bool,
+    /// Image size for rendering the generated scene
+    #[arg(long, value_name = "WxH", default_value = "800x600")]
+    render_size: x3dcheck::render::ImageSize,
     /// The x3dcheck binary to time [default: the one next to this program]
     #[arg(long, value_name = "PATH")]
     x3dcheck: Option<PathBuf>,
@@ -287,7 +296,54 @@ fn bench(args: &Args, runs: usize, dir: &Path, scratch: &Path) -> Result<(), Str
     table(&mut out, &rows, noout, runs, args.runs.unwrap_or(1), &timer);
     targets(&mut out, &rows, noout, schema_time);
     footnotes(&mut out, &rows, &notes, &timer);
+    if !args.no_render {
+        render_bench(&mut out, args, &timer, &x3dcheck, &scene.xml, runs, scratch)?;
+    }
     print!("{out}");
+    Ok(())
+}
+
+/// The render presets: their cost on the generated scene, beside view3dscene's, and their
+/// accuracy against a heavily supersampled reference.
+#[cfg(feature = "render")]
+fn render_bench(
+    out: &mut String,
+    args: &Args,
+    timer: &Timer,
+    x3dcheck: &Path,
+    scene: &Path,
+    runs: usize,
+    scratch: &Path,
+) -> Result<(), String> {
+    x3dcheck::render::prepare_environment();
+    let size = args.render_size;
+    render::speed(
+        out,
+        timer,
+        x3dcheck,
+        scene,
+        size,
+        runs,
+        !args.no_peers,
+        scratch,
+    )?;
+    render::accuracy(out, scene, size, runs)
+}
+
+#[cfg(not(feature = "render"))]
+fn render_bench(
+    out: &mut String,
+    _: &Args,
+    _: &Timer,
+    _: &Path,
+    _: &Path,
+    _: usize,
+    _: &Path,
+) -> Result<(), String> {
+    let _ = writeln!(
+        out,
+        "\nRendering: not measured (built without the `render` feature)"
+    );
     Ok(())
 }
 

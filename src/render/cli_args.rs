@@ -30,6 +30,14 @@ pub struct ImageSize {
 /// The largest side accepted: a preview, not a poster (and a bound on memory).
 pub const MAX_SIDE: u32 = 8192;
 
+impl std::str::FromStr for ImageSize {
+    type Err = String;
+
+    fn from_str(text: &str) -> Result<ImageSize, String> {
+        parse_size(text)
+    }
+}
+
 fn parse_size(text: &str) -> Result<ImageSize, String> {
     let (w, h) = text
         .split_once(['x', 'X'])
