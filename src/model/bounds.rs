@@ -581,10 +581,16 @@ impl<'a> Walker<'a> {
             let indices = doc.value_of(geometry, field)?;
             let indices = indices.as_int32s()?;
             self.spend(indices.len() as u64)?;
+            // Each point once, however many faces share it: the bounds are the same.
+            let mut used = vec![false; count];
+            for &i in indices {
+                if let Some(slot) = usize::try_from(i).ok().and_then(|i| used.get_mut(i)) {
+                    *slot = true;
+                }
+            }
             return Some(
-                indices
-                    .iter()
-                    .filter_map(|&i| usize::try_from(i).ok().filter(|&i| i < count))
+                (0..count)
+                    .filter(|&i| used[i])
                     .all(|i| hull.point_if_finite(points.get(i))),
             );
         }

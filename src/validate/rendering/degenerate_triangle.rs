@@ -3,7 +3,7 @@
 use std::ops::Range;
 
 use super::geometry::{
-    corner_point, face_is_degenerate, is_degenerate, polygonal, Checked, Points, ScalarSpans,
+    corner_point, face_is_degenerate, is_degenerate, judge_polygonal, Checked, Points, ScalarSpans,
 };
 use crate::model::faces::{counted_runs, runs, PolygonKind};
 use crate::model::{Span, Value};
@@ -72,39 +72,42 @@ impl Count {
 
 fn check(ctx: &mut Ctx) {
     let doc = ctx.doc;
-    for geometry in polygonal(doc) {
-        let Some(points) = Points::of(doc, &geometry) else {
-            continue;
-        };
-        let kind = geometry.faces.kind;
+    let judged = judge_polygonal(doc, |geometry| {
+        let points = Points::of(doc, geometry)?;
         let mut count = Count {
             first: None,
             degenerate: 0,
             total: 0,
         };
-        let (noun, count_runs) = match kind {
-            PolygonKind::IndexedTriangleStripSet | PolygonKind::TriangleStripSet => {
-                ("strips", true)
-            }
-            PolygonKind::IndexedTriangleFanSet | PolygonKind::TriangleFanSet => ("fans", true),
-            PolygonKind::IndexedFaceSet => ("faces", false),
-            PolygonKind::IndexedTriangleSet | PolygonKind::TriangleSet => ("triangles", false),
-            _ => ("quads", false),
-        };
-        if count_runs {
-            let fan = noun == "fans";
-            for (number, run) in strip_runs(&geometry).enumerate() {
-                if let Some(degenerate) = run_is_degenerate(&geometry, &points, run.clone(), fan) {
+        if counts_runs(geometry.faces.kind) {
+            let fan = matches!(
+                geometry.faces.kind,
+                PolygonKind::IndexedTriangleFanSet | PolygonKind::TriangleFanSet
+            );
+            for (number, run) in strip_runs(geometry).enumerate() {
+                if let Some(degenerate) = run_is_degenerate(geometry, &points, run.clone(), fan) {
                     count.add(number, run.start, degenerate);
                 }
             }
         } else {
             for face in geometry.faces.faces() {
-                if let Some(degenerate) = face_is_degenerate(&geometry, &points, &face) {
+                if let Some(degenerate) = face_is_degenerate(geometry, &points, &face) {
                     count.add(face.number, face.corner(0), degenerate);
                 }
             }
         }
+        Some(count)
+    });
+    for (geometry, count) in judged {
+        let kind = geometry.faces.kind;
+        let count_runs = counts_runs(kind);
+        let noun = match kind {
+            PolygonKind::IndexedTriangleStripSet | PolygonKind::TriangleStripSet => "strips",
+            PolygonKind::IndexedTriangleFanSet | PolygonKind::TriangleFanSet => "fans",
+            PolygonKind::IndexedFaceSet => "faces",
+            PolygonKind::IndexedTriangleSet | PolygonKind::TriangleSet => "triangles",
+            _ => "quads",
+        };
         let Some((number, position)) = count.first else {
             continue;
         };
@@ -135,6 +138,17 @@ fn check(ctx: &mut Ctx) {
         diagnostic.count = count.degenerate;
         ctx.report(diagnostic);
     }
+}
+
+/// Whether the geometry is judged per strip or fan rather than per face.
+fn counts_runs(kind: PolygonKind) -> bool {
+    matches!(
+        kind,
+        PolygonKind::IndexedTriangleStripSet
+            | PolygonKind::TriangleStripSet
+            | PolygonKind::IndexedTriangleFanSet
+            | PolygonKind::TriangleFanSet
+    )
 }
 
 /// The strips or fans of a strip or fan set, as stream positions.

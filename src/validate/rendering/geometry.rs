@@ -8,6 +8,8 @@
 //! (filled by a Script or ROUTE at run time). Rules skip what is unknown, so prototypes
 //! and scripted geometry never give false positives.
 
+use rayon::prelude::*;
+
 use crate::model::faces::{Attribute, Face, Polygonal};
 use crate::model::{ChildRef, Document, FieldEntry, Node, NodeId, Span, Value};
 use crate::report::Diagnostic;
@@ -210,6 +212,22 @@ pub fn polygonal(doc: &Document) -> impl Iterator<Item = Checked<'_>> {
             coord: Some(coord),
         })
     })
+}
+
+/// Every geometry of [`polygonal`] with what `judge` makes of it (None: nothing), in
+/// document order. Geometries are judged in parallel: a judgement is a few counts, so
+/// memory stays bounded, and a large file's deep check uses every core.
+pub fn judge_polygonal<'a, T: Send>(
+    doc: &'a Document,
+    judge: impl Fn(&Checked<'a>) -> Option<T> + Sync,
+) -> Vec<(Checked<'a>, T)> {
+    let geometries: Vec<Checked<'a>> = polygonal(doc).collect();
+    let judged: Vec<Option<T>> = geometries.par_iter().map(&judge).collect();
+    geometries
+        .into_iter()
+        .zip(judged)
+        .filter_map(|(geometry, judged)| Some((geometry, judged?)))
+        .collect()
 }
 
 /// The vertex positions of a checked geometry, in f64: its coordinates, or an
@@ -439,20 +457,38 @@ fn max_abs(v: [f64; 3]) -> f64 {
     v[0].abs().max(v[1].abs()).max(v[2].abs())
 }
 
-/// `v` divided by its largest absolute component, so that squaring neither overflows
-/// nor underflows; None for the zero vector and non-finite ones.
+/// Largest components within which vectors need no scaling: a square, or a product of
+/// four components (the cross product's squared length in [`is_degenerate`]), neither
+/// overflows nor leaves the normal range of f64 (2^±800 against 2^±1022). Every
+/// coordinate and every difference of coordinates read as f32 lies inside.
+const UNSCALED: std::ops::RangeInclusive<f64> = 1.0e-60..=1.0e60;
+
+/// `v` scaled so that squaring neither overflows nor underflows: unchanged when its
+/// largest component is in [`UNSCALED`], else divided by that component; None for the
+/// zero vector and non-finite ones. Callers use it only where the scale cancels out.
 pub fn scaled(v: [f64; 3]) -> Option<[f64; 3]> {
     let m = max_abs(v);
-    (m > 0.0 && v.iter().all(|c| c.is_finite())).then(|| [v[0] / m, v[1] / m, v[2] / m])
+    if !(m > 0.0 && v.iter().all(|c| c.is_finite())) {
+        return None;
+    }
+    Some(if UNSCALED.contains(&m) {
+        v
+    } else {
+        [v[0] / m, v[1] / m, v[2] / m]
+    })
 }
 
-/// The Euclidean length, exact for every finite input from 1e-320 to 1e308: computed on
-/// the vector scaled by its largest component.
+/// The Euclidean length, exact for every finite input from 1e-320 to 1e308: computed
+/// directly when no square can overflow or underflow, else on the vector scaled by its
+/// largest component.
 pub fn length(v: [f64; 3]) -> f64 {
     if v.iter().any(|c| c.is_nan()) {
         return f64::NAN;
     }
     let m = max_abs(v);
+    if UNSCALED.contains(&m) {
+        return dot(v, v).sqrt();
+    }
     match scaled(v) {
         Some(s) => m * dot(s, s).sqrt(),
         None => m,
@@ -474,9 +510,9 @@ pub const DEGENERATE_SINE: f64 = 1e-6;
 
 /// Whether the triangle a, b, c has zero area relative to its edges: the sine of the
 /// angle at `a` between its edges is below [`DEGENERATE_SINE`], or two corners
-/// coincide. Each edge is scaled by its own largest component first, which the sine does
-/// not depend on, so huge and tiny coordinates give the same answer. None when a corner
-/// is not finite.
+/// coincide. An edge outside [`UNSCALED`] is scaled by its own largest component first,
+/// which the sine does not depend on, so huge and tiny coordinates give the same answer.
+/// None when a corner is not finite.
 pub fn is_degenerate(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> Option<bool> {
     let (e1, e2) = (sub(b, a), sub(c, a));
     if !(e1.iter().chain(&e2).all(|x| x.is_finite())) {
@@ -525,13 +561,12 @@ pub fn face_normal(g: &Checked, points: &Points, face: &Face) -> Option<[f64; 3]
     let (mut sum, mut scale, mut degenerate) = ([0.0; 3], 0.0, true);
     for [_, b, c] in face.triangles() {
         let (b, c) = (corner_point(g, points, b)?, corner_point(g, points, c)?);
-        degenerate &= is_degenerate(first, b, c)?;
-        let (e1, e2) = (sub(b, first), sub(c, first));
-        let n = cross(e1, e2);
-        for (s, x) in sum.iter_mut().zip(n) {
+        let fan = FanTriangle::of(first, b, c)?;
+        degenerate &= fan.degenerate;
+        for (s, x) in sum.iter_mut().zip(fan.cross) {
             *s += x;
         }
-        scale += length(e1) * length(e2);
+        scale += fan.edge_lengths;
     }
     if degenerate {
         return None;
@@ -539,6 +574,39 @@ pub fn face_normal(g: &Checked, points: &Points, face: &Face) -> Option<[f64; 3]
     (length(sum) > DEGENERATE_SINE * scale)
         .then(|| unit(sum))
         .flatten()
+}
+
+/// One triangle a, b, c of a face's fan, judged once for both [`face_normal`]'s sum and
+/// its degeneracy.
+struct FanTriangle {
+    /// (b − a) × (c − a).
+    cross: [f64; 3],
+    /// As [`is_degenerate`] decides.
+    degenerate: bool,
+    /// |b − a| · |c − a|.
+    edge_lengths: f64,
+}
+
+impl FanTriangle {
+    /// None when a corner is not finite.
+    fn of(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> Option<FanTriangle> {
+        let (e1, e2) = (sub(b, a), sub(c, a));
+        let cross = cross(e1, e2);
+        if UNSCALED.contains(&max_abs(e1)) && UNSCALED.contains(&max_abs(e2)) {
+            // is_degenerate's own arithmetic on unscaled edges, sharing the cross product.
+            let (q1, q2) = (dot(e1, e1), dot(e2, e2));
+            return Some(FanTriangle {
+                cross,
+                degenerate: dot(cross, cross) <= DEGENERATE_SINE * DEGENERATE_SINE * q1 * q2,
+                edge_lengths: (q1 * q2).sqrt(),
+            });
+        }
+        Some(FanTriangle {
+            cross,
+            degenerate: is_degenerate(a, b, c)?,
+            edge_lengths: length(e1) * length(e2),
+        })
+    }
 }
 
 #[cfg(test)]

@@ -1,7 +1,7 @@
 //! NORMALS_CONTRADICT_CCW: supplied normals point against the faces' winding (deep level).
 
 use super::geometry::{
-    attribute_lists, dot, face_normal, polygonal, unit, Checked, Points, PropertyList,
+    attribute_lists, dot, face_normal, judge_polygonal, scaled, unit, Checked, Points, PropertyList,
 };
 use crate::model::faces::{Attribute, Binding, Face};
 use crate::report::Diagnostic;
@@ -51,22 +51,18 @@ crate::declare_rule! {
 
 fn check(ctx: &mut Ctx) {
     let doc = ctx.doc;
-    for geometry in polygonal(doc) {
-        let Some(lists) = attribute_lists(doc, geometry.id, Attribute::Normal) else {
-            continue;
-        };
+    let judged = judge_polygonal(doc, |geometry| {
+        let lists = attribute_lists(doc, geometry.id, Attribute::Normal)?;
         let [normals] = lists.as_slice() else {
-            continue;
+            return None;
         };
-        let Some(points) = Points::of(doc, &geometry) else {
-            continue;
-        };
+        let points = Points::of(doc, geometry)?;
         let (mut agree, mut contradict) = (0usize, 0usize);
         for face in geometry.faces.faces() {
-            let Some(geometric) = face_normal(&geometry, &points, &face) else {
+            let Some(geometric) = face_normal(geometry, &points, &face) else {
                 continue;
             };
-            let Some(supplied) = supplied_normal(&geometry, normals, &face) else {
+            let Some(supplied) = supplied_normal(geometry, normals, &face) else {
                 continue;
             };
             let d = dot(geometric, supplied);
@@ -77,6 +73,9 @@ fn check(ctx: &mut Ctx) {
                 contradict += 1;
             }
         }
+        Some((normals.child_span, agree, contradict))
+    });
+    for (geometry, (normals_span, agree, contradict)) in judged {
         // "Most": at least two thirds of the judged faces.
         if contradict == 0 || contradict < 2 * agree {
             continue;
@@ -88,7 +87,7 @@ fn check(ctx: &mut Ctx) {
             agree + contradict
         );
         ctx.report(
-            Diagnostic::new(&NORMALS_CONTRADICT_CCW, normals.child_span, message)
+            Diagnostic::new(&NORMALS_CONTRADICT_CCW, normals_span, message)
                 .node(geometry.id)
                 .help(format!(
                     "set ccw='{}' or reverse the normals",
@@ -98,8 +97,9 @@ fn check(ctx: &mut Ctx) {
     }
 }
 
-/// The face's supplied normal direction: its per-face normal, or the sum of its corners'
-/// unit normals; None where an index or a normal is missing or zero.
+/// The face's supplied normal direction (not normalized: only the sign of its dot product
+/// with the geometric normal is used): its per-face normal, or the sum of its corners'
+/// unit normals; None where an index or a normal is missing or zero, or the sum is zero.
 fn supplied_normal(geometry: &Checked, normals: &PropertyList, face: &Face) -> Option<[f64; 3]> {
     let per_face = matches!(
         geometry.faces.binding(Attribute::Normal),
@@ -118,5 +118,5 @@ fn supplied_normal(geometry: &Checked, normals: &PropertyList, face: &Face) -> O
             break;
         }
     }
-    unit(sum)
+    scaled(sum).map(|_| sum)
 }
