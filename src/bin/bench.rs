@@ -316,18 +316,8 @@ fn render_bench(
     scratch: &Path,
 ) -> Result<(), String> {
     x3dcheck::render::prepare_environment();
-    let size = args.render_size;
-    render::speed(
-        out,
-        timer,
-        x3dcheck,
-        scene,
-        size,
-        runs,
-        !args.no_peers,
-        scratch,
-    )?;
-    render::accuracy(out, scene, size, runs)
+    render::speed(out, args, timer, x3dcheck, scene, runs, scratch)?;
+    render::accuracy(out, scene, args.render_size, runs)
 }
 
 #[cfg(not(feature = "render"))]

@@ -28,7 +28,7 @@ use x3dcheck::render::{preview, Gpu, ImageSize, Quality, RenderArgs, Settings, S
 use x3dcheck::report::FileReport;
 
 use super::measure::{self, median_wall, on_path, peak_bytes, wall_range, Sample, Timer};
-use super::{mb, memory_na, seconds, seconds_bare, speed_ratio};
+use super::{mb, memory_na, seconds, seconds_bare, speed_ratio, Args};
 
 const PRESETS: [Quality; 3] = [Quality::Fast, Quality::Balanced, Quality::Accurate];
 
@@ -74,14 +74,14 @@ fn size_text(size: ImageSize) -> String {
 /// Times `x3dcheck SCENE --render` per preset and view3dscene's screenshot of the scene.
 pub fn speed(
     out: &mut String,
+    args: &Args,
     timer: &Timer,
     x3dcheck: &Path,
     scene: &Path,
-    size: ImageSize,
     runs: usize,
-    peers: bool,
     scratch: &Path,
 ) -> Result<(), String> {
+    let size = args.render_size;
     let image = scratch.join("render.png");
     let stderr = scratch.join("render-stderr.txt");
     let size_arg = size_text(size);
@@ -115,7 +115,7 @@ pub fn speed(
     }
 
     let mut notes = Vec::new();
-    let peer = if peers {
+    let peer = if !args.no_peers {
         view3dscene(timer, scene, size, runs, scratch, &mut notes)
     } else {
         notes.push("view3dscene: not run (--no-peers)".to_string());
