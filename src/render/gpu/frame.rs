@@ -7,7 +7,7 @@ use super::pipelines::{PipelineKey, Pipelines, COLOR_FORMAT, DEPTH_FORMAT, VERTE
 use super::resources::{upload_mesh, MeshBuffers, TextureBindings};
 use super::uniforms::{draw_uniform, globals, GpuDraw};
 use super::{GpuError, Shading};
-use crate::render::draw_list::{DrawList, Mesh};
+use crate::render::draw_list::{DrawList, Mesh, Textures};
 
 #[derive(Copy, Clone)]
 pub struct Target {
@@ -17,6 +17,8 @@ pub struct Target {
     pub scale: u32,
     pub samples: u32,
     pub shading: Shading,
+    /// The most indices in one render pass (see [`PASS_INDICES`]).
+    pub pass_indices: u32,
 }
 
 /// Draws the list and returns RGBA8 pixels, rows from the top.
@@ -129,73 +131,96 @@ pub async fn draw(
     }
     let background = list_background_pipeline(&list, &pipelines);
 
+    let [r, g, b] = list
+        .background
+        .sky
+        .first()
+        .map_or([0.0; 3], |(color, _)| *color)
+        .map(f64::from);
+    let (view, resolve_target) = match &multisampled_view {
+        Some(ms) => (ms, Some(&resolved_view)),
+        None => (&resolved_view, None),
+    };
+    let passes = passes(&draws, target.pass_indices);
+    let last = passes.len() - 1;
     let mut encoder = device.create_command_encoder(&Default::default());
-    {
-        let [r, g, b] = list
-            .background
-            .sky
-            .first()
-            .map_or([0.0; 3], |(color, _)| *color)
-            .map(f64::from);
-        let (view, resolve_target) = match &multisampled_view {
-            Some(ms) => (ms, Some(&resolved_view)),
-            None => (&resolved_view, None),
-        };
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("scene"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view,
-                depth_slice: None,
-                resolve_target,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(wgpu::Color { r, g, b, a: 1.0 }),
-                    store: wgpu::StoreOp::Store,
-                },
-            })],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: &depth_view,
-                depth_ops: Some(wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(0.0),
-                    store: wgpu::StoreOp::Discard,
-                }),
-                stencil_ops: None,
-            }),
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
-        pass.set_bind_group(0, &globals_group, &[]);
-        if let Some(background) = &background {
-            pass.set_pipeline(background);
-            pass.draw(0..3, 0..1);
+    for (n, pieces) in passes.into_iter().enumerate() {
+        if n > 0 {
+            // The previous pass is finished before this one is recorded.
+            queue.submit([std::mem::replace(
+                &mut encoder,
+                device.create_command_encoder(&Default::default()),
+            )
+            .finish()]);
+            device
+                .poll(wgpu::PollType::wait_indefinitely())
+                .map_err(|e| GpuError::Failed(e.to_string()))?;
         }
-        for (slot, (key, textures, buffers)) in draws.iter().enumerate() {
-            pass.set_pipeline(pipelines.get(*key));
-            pass.set_bind_group(1, &draw_group, &[(slot * stride) as u32]);
-            pass.set_bind_group(2, bindings.group(textures), &[]);
-            match buffers {
-                MeshBuffers::Surface {
-                    vertices,
-                    indices,
-                    index_count,
-                } => {
-                    for (i, buffer) in vertices.iter().enumerate().take(VERTEX_SLOTS) {
-                        pass.set_vertex_buffer(
-                            i as u32,
-                            buffer.as_ref().unwrap_or(&zeros).slice(..),
-                        );
+        {
+            // The first pass clears; the others go on from what it left.
+            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("scene"),
+                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                    view,
+                    depth_slice: None,
+                    resolve_target,
+                    ops: wgpu::Operations {
+                        load: if n == 0 {
+                            wgpu::LoadOp::Clear(wgpu::Color { r, g, b, a: 1.0 })
+                        } else {
+                            wgpu::LoadOp::Load
+                        },
+                        store: wgpu::StoreOp::Store,
+                    },
+                })],
+                depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                    view: &depth_view,
+                    depth_ops: Some(wgpu::Operations {
+                        load: if n == 0 {
+                            wgpu::LoadOp::Clear(0.0)
+                        } else {
+                            wgpu::LoadOp::Load
+                        },
+                        store: if n == last {
+                            wgpu::StoreOp::Discard
+                        } else {
+                            wgpu::StoreOp::Store
+                        },
+                    }),
+                    stencil_ops: None,
+                }),
+                timestamp_writes: None,
+                occlusion_query_set: None,
+                multiview_mask: None,
+            });
+            pass.set_bind_group(0, &globals_group, &[]);
+            if let (0, Some(background)) = (n, &background) {
+                pass.set_pipeline(background);
+                pass.draw(0..3, 0..1);
+            }
+            for Piece { slot, range } in pieces {
+                let (key, textures, buffers) = &draws[slot];
+                pass.set_pipeline(pipelines.get(*key));
+                pass.set_bind_group(1, &draw_group, &[(slot * stride) as u32]);
+                pass.set_bind_group(2, bindings.group(textures), &[]);
+                match buffers {
+                    MeshBuffers::Surface {
+                        vertices, indices, ..
+                    } => {
+                        for (i, buffer) in vertices.iter().enumerate().take(VERTEX_SLOTS) {
+                            pass.set_vertex_buffer(
+                                i as u32,
+                                buffer.as_ref().unwrap_or(&zeros).slice(..),
+                            );
+                        }
+                        pass.set_index_buffer(indices.slice(..), wgpu::IndexFormat::Uint32);
+                        pass.draw_indexed(range, 0, 0..1);
                     }
-                    pass.set_index_buffer(indices.slice(..), wgpu::IndexFormat::Uint32);
-                    pass.draw_indexed(0..*index_count, 0, 0..1);
-                }
-                MeshBuffers::Stroke {
-                    ends,
-                    colors,
-                    instances,
-                } => {
-                    pass.set_vertex_buffer(0, ends.slice(..));
-                    pass.set_vertex_buffer(1, colors.slice(..));
-                    pass.draw(0..6, 0..*instances);
+                    MeshBuffers::Stroke { ends, colors, .. } => {
+                        pass.set_vertex_buffer(0, ends.slice(..));
+                        pass.set_vertex_buffer(1, colors.slice(..));
+                        pass.draw(0..6, range);
+                    }
                 }
             }
         }
@@ -209,6 +234,58 @@ pub async fn draw(
         target.height,
     )
     .await
+}
+
+/// At most this many indices (or line and point instances, six vertices each) go into
+/// one render pass by default. A software rasterizer keeps every binned triangle of a pass until
+/// the pass ends, which for a scene of millions of triangles is several times the
+/// meshes' own size; passes of this size, each finished before the next begins, keep it
+/// to tens of megabytes at a cost of a few milliseconds each.
+pub const PASS_INDICES: u32 = 3 << 18;
+
+/// A draw call: part of one mesh's indices (or stroke instances).
+struct Piece {
+    slot: usize,
+    range: std::ops::Range<u32>,
+}
+
+/// The draws cut into passes of at most `limit` indices (whole triangles; a triangle or
+/// stroke larger than the limit gets a pass of its own), in order; at least one pass,
+/// empty for an empty scene.
+fn passes(draws: &[(PipelineKey, Textures, MeshBuffers)], limit: u32) -> Vec<Vec<Piece>> {
+    cut(
+        draws.iter().map(|(_, _, buffers)| match buffers {
+            MeshBuffers::Surface { index_count, .. } => (*index_count, 3, 1),
+            MeshBuffers::Stroke { instances, .. } => (*instances, 1, 6),
+        }),
+        limit,
+    )
+}
+
+/// [`passes`] of draws given as (count, unit, weight): `count` indices or instances,
+/// never cut within `unit` of them, each `weight` indices.
+fn cut(draws: impl Iterator<Item = (u32, u32, u32)>, limit: u32) -> Vec<Vec<Piece>> {
+    let mut passes = Vec::new();
+    let mut current = Vec::new();
+    let mut room = limit;
+    for (slot, (count, unit, weight)) in draws.enumerate() {
+        let mut start = 0;
+        while start < count {
+            if room < unit * weight && !current.is_empty() {
+                passes.push(std::mem::take(&mut current));
+                room = limit;
+            }
+            let take = (room / weight / unit * unit).max(unit).min(count - start);
+            current.push(Piece {
+                slot,
+                range: start..start + take,
+            });
+            room = room.saturating_sub(take * weight);
+            start += take;
+        }
+    }
+    passes.push(current);
+    passes
 }
 
 /// The gradient pipeline when the Background is more than one colour.
@@ -314,4 +391,113 @@ fn centre_distance(mesh: &Mesh) -> f64 {
         .map(|k| ((lo[k] + hi[k]) / 2.0).powi(2))
         .sum::<f64>()
         .sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::config::CheckConfig;
+    use crate::render::{preview, ImageSize, Quality, RenderArgs};
+
+    #[test]
+    fn passes_cover_every_draw_once_in_order_within_the_limit() {
+        // Two surfaces (indices, whole triangles) and a stroke (instances of 6 indices).
+        let draws = [(3000, 3, 1), (9, 3, 1), (50, 1, 6)];
+        for limit in [1, 5, 6, 7, 300, 1000, 3005, u32::MAX] {
+            let passes = cut(draws.into_iter(), limit);
+            assert!(!passes.is_empty());
+            let pieces: Vec<&Piece> = passes.iter().flatten().collect();
+            let mut next = [0u32; 3];
+            for piece in &pieces {
+                let (_, unit, _) = draws[piece.slot];
+                assert_eq!(piece.range.start, next[piece.slot], "in order, no gap");
+                assert!(piece.range.end > piece.range.start);
+                assert_eq!(piece.range.start % unit, 0, "whole triangles");
+                next[piece.slot] = piece.range.end;
+            }
+            assert_eq!(next, [3000, 9, 50], "limit {limit}: everything drawn");
+            for pass in &passes {
+                let weight: u32 = pass
+                    .iter()
+                    .map(|p| (p.range.end - p.range.start) * draws[p.slot].2)
+                    .sum();
+                // A unit larger than the limit gets a pass of its own.
+                assert!(weight <= limit.max(6), "limit {limit}: a pass of {weight}");
+            }
+        }
+        assert_eq!(
+            cut(std::iter::empty(), 10).len(),
+            1,
+            "an empty scene: one pass"
+        );
+    }
+
+    #[test]
+    fn a_frame_cut_into_passes_is_the_frame_drawn_in_one() {
+        if std::env::var_os("X3DCHECK_NO_GPU").is_some_and(|v| v == "1") {
+            eprintln!("pass test SKIPPED: X3DCHECK_NO_GPU=1");
+            return;
+        }
+        // Opaque triangles over a background gradient, a blended shape, lines and points.
+        let source = "<X3D profile='Full' version='4.0'><Scene>\
+            <Background skyColor='0 0 0.2 0.3 0.3 0.8' skyAngle='1.6'/>\
+            <Viewpoint position='2 3 9'/>\
+            <Shape><Appearance><Material diffuseColor='0.8 0.4 0.1'/></Appearance>\
+            <ElevationGrid xDimension='30' zDimension='30' xSpacing='0.2' zSpacing='0.2' \
+            creaseAngle='1' height='"
+            .to_string()
+            + &(0..900)
+                .map(|k| format!("{:.3}", ((k % 30) as f32 * 0.4).sin() * 0.5))
+                .collect::<Vec<_>>()
+                .join(" ")
+            + "'/></Shape>\
+            <Transform translation='3 0.5 2'><Shape><Appearance>\
+            <Material diffuseColor='0 0.6 1' transparency='0.5'/></Appearance>\
+            <Sphere radius='1.5'/></Shape></Transform>\
+            <Shape><IndexedLineSet coordIndex='0 1 2 3 0 -1'>\
+            <Coordinate point='0 1 0 6 1 0 6 1 6 0 1 6'/></IndexedLineSet></Shape>\
+            <Shape><PointSet><Coordinate point='1 2 1 2 2 2 3 2 3'/></PointSet></Shape>\
+            </Scene></X3D>";
+        let (mut report, doc) =
+            crate::check::check_document("passes.x3d", source.as_bytes(), &CheckConfig::default());
+        let args = RenderArgs {
+            render: None,
+            size: ImageSize {
+                width: 96,
+                height: 72,
+            },
+            quality: Quality::Balanced,
+            camera: "auto".to_string(),
+        };
+        let list = preview(
+            &args,
+            Quality::Balanced.settings(),
+            std::path::Path::new("passes.x3d"),
+            source.as_bytes(),
+            doc.as_ref(),
+            &mut report,
+        )
+        .expect("a preview")
+        .list()
+        .clone();
+        let gpu = super::super::Gpu::open().expect("an adapter");
+        let draw = |samples, shading, pass_indices| {
+            let target = Target {
+                width: 96,
+                height: 72,
+                scale: 1,
+                samples,
+                shading,
+                pass_indices,
+            };
+            pollster::block_on(draw(&gpu.device, &gpu.queue, list.clone(), target)).unwrap()
+        };
+        for (samples, shading) in [(1, Shading::Gouraud), (4, Shading::Phong)] {
+            let whole = draw(samples, shading, u32::MAX);
+            // A few hundred passes, cutting meshes and strokes apart.
+            let cut = draw(samples, shading, 30);
+            assert!(whole.iter().any(|&b| b != whole[0]), "something is drawn");
+            assert!(whole == cut, "{samples} samples: the cut frame differs");
+        }
+    }
 }

@@ -124,6 +124,7 @@ async fn render_on(
             scale,
             samples: settings.msaa_samples,
             shading: settings.shading,
+            pass_indices: frame::PASS_INDICES,
         },
     )
     .await;
