@@ -13,7 +13,9 @@
 use std::path::{Path, PathBuf};
 
 use x3dcheck::config::CheckConfig;
+use x3dcheck::model::Document;
 use x3dcheck::render::{preview, render_image, Gpu, ImageSize, Quality, RenderArgs};
+use x3dcheck::report::FileReport;
 
 const CHANNEL_TOLERANCE: u8 = 24;
 const PIXEL_BUDGET: f64 = 0.01;
@@ -39,6 +41,18 @@ fn args() -> RenderArgs {
         quality: Quality::Balanced,
         camera: "auto".to_string(),
     }
+}
+
+/// A case's scene file, its bytes, and the check's report and document.
+fn checked_case(case: &Path) -> (PathBuf, Vec<u8>, FileReport, Option<Document>) {
+    let scene = case.join("scene.x3d");
+    let source = std::fs::read(&scene).unwrap();
+    let (report, doc) = x3dcheck::check::check_document(
+        &scene.display().to_string(),
+        &source,
+        &CheckConfig::default(),
+    );
+    (scene, source, report, doc)
 }
 
 /// The case's arguments: `render.toml` may set `quality` and `camera`.
@@ -71,13 +85,7 @@ fn render_cases_match_their_references() {
     assert!(!cases.is_empty());
     let mut failures = Vec::new();
     for case in &cases {
-        let scene = case.join("scene.x3d");
-        let source = std::fs::read(&scene).unwrap();
-        let (mut report, doc) = x3dcheck::check::check_document(
-            &scene.display().to_string(),
-            &source,
-            &CheckConfig::default(),
-        );
+        let (scene, source, mut report, doc) = checked_case(case);
         let image = render_image(&case_args(case), &scene, &source, doc.as_ref(), &mut report)
             .unwrap_or_else(|e| panic!("{}: {e}", case.display()));
         let reference_path = case.join("reference.png");
@@ -283,13 +291,7 @@ fn one_open_device_draws_several_images_like_a_device_each() {
         let case = Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("corpus/render")
             .join(name);
-        let scene = case.join("scene.x3d");
-        let source = std::fs::read(&scene).unwrap();
-        let (mut report, doc) = x3dcheck::check::check_document(
-            &scene.display().to_string(),
-            &source,
-            &CheckConfig::default(),
-        );
+        let (scene, source, mut report, doc) = checked_case(&case);
         let args = case_args(&case);
         let own_device = render_image(&args, &scene, &source, doc.as_ref(), &mut report).unwrap();
         let shared = preview(
