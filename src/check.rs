@@ -19,13 +19,15 @@ pub fn check_source(path: &str, source: &[u8], config: &CheckConfig) -> FileRepo
 }
 
 /// [`check_source`], also handing back the document it read (None when the input is not
-/// a document), so that a caller such as the renderer need not parse it again.
+/// a document), so that a caller such as the renderer need not parse it again. At the
+/// fast level its numeric MF values are [`Summary`](crate::model::Summary)s unless
+/// `config.render` is set ([`CheckConfig::keep_values`]).
 pub fn check_document(
     path: &str,
     source: &[u8],
     config: &CheckConfig,
 ) -> (FileReport, Option<Document>) {
-    let parsed = parse::read(source);
+    let parsed = parse::read_with(source, config.keep_values());
     let mut diagnostics = parsed.diagnostics;
     let base = (path != STDIN_NAME).then(|| match Path::new(path).parent() {
         Some(dir) if !dir.as_os_str().is_empty() => dir,

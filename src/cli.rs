@@ -479,8 +479,17 @@ fn check_input(
     };
     // A panic in a rule is an internal failure of this file, not of the run.
     let failure = format!("internal error while checking {name}");
+    // A document to render keeps its values at every level.
+    let config = if render.render.is_some() {
+        Cow::Owned(CheckConfig {
+            render: true,
+            ..config.clone()
+        })
+    } else {
+        Cow::Borrowed(config)
+    };
     std::panic::catch_unwind(move || {
-        let (mut report, doc) = x3dcheck::check::check_document(&name, &bytes, config);
+        let (mut report, doc) = x3dcheck::check::check_document(&name, &bytes, &config);
         let preview =
             x3dcheck::render::prepare(render, Path::new(&name), &bytes, doc.as_ref(), &mut report)?;
         drop(doc);

@@ -21,6 +21,12 @@ pub struct CheckConfig {
     /// The directory tree the deep level may read referenced files from (textures,
     /// Inlines). None: the checked file's own directory and below.
     pub root: Option<std::path::PathBuf>,
+    /// Whether the document [`check_document`] hands back will be rendered (`--render`).
+    /// At the fast level, unless it will, numeric MF values are checked as they are read
+    /// and not kept (see [`crate::model::Summary`]); the other levels keep them anyway.
+    ///
+    /// [`check_document`]: crate::check::check_document
+    pub render: bool,
 }
 
 impl Default for CheckConfig {
@@ -34,6 +40,7 @@ impl Default for CheckConfig {
             fold: true,
             normal_tolerance: 0.01,
             root: None,
+            render: false,
         }
     }
 }
@@ -42,6 +49,16 @@ impl CheckConfig {
     /// Whether diagnostics of this code are reported at all.
     pub fn enabled(&self, code: &str) -> bool {
         (self.select.is_empty() || self.select.contains(code)) && !self.ignore.contains(code)
+    }
+
+    /// What the reader keeps of numeric MF values: summaries at the fast level when the
+    /// document is not rendered, every number otherwise.
+    pub fn keep_values(&self) -> crate::parse::KeepValues {
+        if self.level == Level::Fast && !self.render {
+            crate::parse::KeepValues::Summaries
+        } else {
+            crate::parse::KeepValues::All
+        }
     }
 
     /// Whether a rule's check runs: enabled, and at or below the configured level.

@@ -138,6 +138,7 @@ fn v(value: &Value) -> V {
         Value::Images(i) => V::Text(format!("{i:?}")),
         Value::Nodes(n) => V::Text(format!("{} nodes", n.len())),
         Value::Unparsed(_) => V::Text("<unparsed>".to_string()),
+        Value::Summary(s) => V::Text(format!("{s:?}")),
     }
 }
 

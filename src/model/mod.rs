@@ -11,7 +11,7 @@ pub mod texture_mapping;
 mod value;
 
 pub use builder::Builder;
-pub use value::{ChildRef, Image, Value};
+pub use value::{ChildRef, Image, Sink, Summarized, Summarizer, Summary, Value};
 
 use std::collections::HashMap;
 

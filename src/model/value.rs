@@ -2,10 +2,19 @@
 //! three million numbers, not a million allocations. The field's [`FieldType`] (from the
 //! schema) says how to read the flat data: its arity and whether it is SF or MF.
 //!
+//! At `--level fast`, when the document is not rendered, a numeric MF value of a schema
+//! field (MFFloat, MFInt32, MFDouble and every vector, colour, rotation and matrix MF type)
+//! is not kept: the reader checks each number as it parses it and keeps a [`Summary`]
+//! instead, with what the fast level needs (the length, the first non-finite and
+//! out-of-range element and their counts, the run sums of the report's stats). SF values,
+//! declared (Script, prototype) fields and every other type are kept whole.
+//!
 //! [`FieldType`]: crate::schema::FieldType
 
-use super::NodeId;
+use super::{Node, NodeId};
 use crate::model::Span;
+use crate::schema::{FieldDef, FieldType, Scalar};
+use crate::validate::document::field_out_of_range::{in_range_f32, in_range_f64, range_applies};
 
 /// The parsed value of one field as the document gave it.
 #[derive(Clone, Debug, PartialEq)]
@@ -24,6 +33,8 @@ pub enum Value {
     /// The text of a field the schema does not know, or whose value did not parse
     /// (the parser has reported why).
     Unparsed(String),
+    /// A numeric MF value checked while it was read and not kept (the fast level).
+    Summary(Box<Summary>),
 }
 
 impl Value {
@@ -38,6 +49,7 @@ impl Value {
             Value::Images(v) => v.len(),
             Value::Nodes(v) => v.len(),
             Value::Unparsed(_) => 0,
+            Value::Summary(s) => s.len,
         }
     }
 
@@ -92,6 +104,201 @@ impl Value {
             Value::Images(v) => Some(v),
             _ => None,
         }
+    }
+
+    pub fn as_summary(&self) -> Option<&Summary> {
+        match self {
+            Value::Summary(s) => Some(s),
+            _ => None,
+        }
+    }
+}
+
+/// What the fast level knows of a numeric MF value it did not keep. The failures are
+/// `(first index, count)` over the flat scalars, as FIELD_VALUE_NONFINITE and
+/// FIELD_OUT_OF_RANGE report them.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Summary {
+    /// [`Scalar::Int32`], [`Scalar::Float`] or [`Scalar::Double`].
+    pub scalar: Scalar,
+    /// Number of scalars.
+    pub len: usize,
+    /// NaN or an infinity (floats and doubles).
+    pub nonfinite: Option<(usize, usize)>,
+    /// Outside the field's range, when [`range_applies`] (else None).
+    pub out_of_range: Option<(usize, usize)>,
+    /// Int32 only: Σ max(n − k, 0) over the runs of n values ended by −1 or the end
+    /// (`[0]` for k = 1, `[1]` for k = 2), as the stats count polygons and polylines.
+    pub index_runs: [u64; 2],
+    /// Int32 only: Σ max(max(v, 0) − k, 0) over the values (`[0]` for k = 1, `[1]` for
+    /// k = 2), as the stats count strips, fans and line vertex counts.
+    pub counts: [u64; 2],
+}
+
+impl Summary {
+    /// Whether the values of a field of this type are summarized when asked.
+    pub fn applies_to(ty: FieldType) -> bool {
+        ty.is_mf() && matches!(ty.scalar(), Scalar::Int32 | Scalar::Float | Scalar::Double)
+    }
+}
+
+/// Where a reader puts the numbers of a value as it parses them: a vector (the value
+/// kept) or a [`Summarizer`]. The parsers are generic over it, so keeping costs nothing.
+pub trait Sink<T> {
+    fn push(&mut self, value: T);
+    /// How many numbers it took.
+    fn count(&self) -> usize;
+}
+
+impl<T> Sink<T> for Vec<T> {
+    #[inline(always)]
+    fn push(&mut self, value: T) {
+        Vec::push(self, value);
+    }
+
+    #[inline(always)]
+    fn count(&self) -> usize {
+        Vec::len(self)
+    }
+}
+
+/// A number a [`Summarizer`] takes: the same tests the fast-level rules make.
+pub trait Summarized: Copy {
+    const SCALAR: Scalar;
+    fn is_finite(self) -> bool;
+    fn in_range(self, def: &FieldDef) -> bool;
+    /// The index run and count sums (Int32 only).
+    #[inline(always)]
+    fn count(self, _state: &mut RunState) {}
+}
+
+impl Summarized for f32 {
+    const SCALAR: Scalar = Scalar::Float;
+    #[inline(always)]
+    fn is_finite(self) -> bool {
+        f32::is_finite(self)
+    }
+    #[inline(always)]
+    fn in_range(self, def: &FieldDef) -> bool {
+        in_range_f32(self, def)
+    }
+}
+
+impl Summarized for f64 {
+    const SCALAR: Scalar = Scalar::Double;
+    #[inline(always)]
+    fn is_finite(self) -> bool {
+        f64::is_finite(self)
+    }
+    #[inline(always)]
+    fn in_range(self, def: &FieldDef) -> bool {
+        in_range_f64(self, def)
+    }
+}
+
+impl Summarized for i32 {
+    const SCALAR: Scalar = Scalar::Int32;
+    #[inline(always)]
+    fn is_finite(self) -> bool {
+        true
+    }
+    #[inline(always)]
+    fn in_range(self, def: &FieldDef) -> bool {
+        in_range_f64(f64::from(self), def)
+    }
+    #[inline(always)]
+    fn count(self, state: &mut RunState) {
+        if self == -1 {
+            state.end_run();
+        } else {
+            state.run += 1;
+        }
+        let n = u64::from(self.max(0) as u32);
+        state.counts[0] += n.saturating_sub(1);
+        state.counts[1] += n.saturating_sub(2);
+    }
+}
+
+/// The run sums of an Int32 value being summarized.
+#[derive(Default)]
+pub struct RunState {
+    run: u64,
+    index_runs: [u64; 2],
+    counts: [u64; 2],
+}
+
+impl RunState {
+    #[inline(always)]
+    fn end_run(&mut self) {
+        self.index_runs[0] += self.run.saturating_sub(1);
+        self.index_runs[1] += self.run.saturating_sub(2);
+        self.run = 0;
+    }
+}
+
+/// Checks the numbers of one value as they are parsed, keeping none of them.
+pub struct Summarizer<T> {
+    len: usize,
+    /// The field whose range is checked, when [`range_applies`].
+    range: Option<&'static FieldDef>,
+    nonfinite: Option<(usize, usize)>,
+    out_of_range: Option<(usize, usize)>,
+    runs: RunState,
+    _scalar: std::marker::PhantomData<T>,
+}
+
+#[inline(always)]
+fn fail(found: &mut Option<(usize, usize)>, index: usize) {
+    match found {
+        None => *found = Some((index, 1)),
+        Some((_, count)) => *count += 1,
+    }
+}
+
+impl<T: Summarized> Summarizer<T> {
+    /// For a value of the schema field `def` on `node`.
+    pub fn new(node: &Node, def: &'static FieldDef) -> Summarizer<T> {
+        Summarizer {
+            len: 0,
+            range: range_applies(node, def).then_some(def),
+            nonfinite: None,
+            out_of_range: None,
+            runs: RunState::default(),
+            _scalar: std::marker::PhantomData,
+        }
+    }
+
+    pub fn finish(mut self) -> Value {
+        self.runs.end_run();
+        Value::Summary(Box::new(Summary {
+            scalar: T::SCALAR,
+            len: self.len,
+            nonfinite: self.nonfinite,
+            out_of_range: self.out_of_range,
+            index_runs: self.runs.index_runs,
+            counts: self.runs.counts,
+        }))
+    }
+}
+
+impl<T: Summarized> Sink<T> for Summarizer<T> {
+    #[inline(always)]
+    fn push(&mut self, value: T) {
+        if !value.is_finite() {
+            fail(&mut self.nonfinite, self.len);
+        }
+        if let Some(def) = self.range {
+            if !value.in_range(def) {
+                fail(&mut self.out_of_range, self.len);
+            }
+        }
+        value.count(&mut self.runs);
+        self.len += 1;
+    }
+
+    #[inline(always)]
+    fn count(&self) -> usize {
+        self.len
     }
 }
 

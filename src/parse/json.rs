@@ -40,6 +40,7 @@ use tree::{Elements, Kind, Members, Tree, ValueRef};
 use crate::check::Parsed;
 use crate::model::builder::Parent;
 use crate::model::*;
+use crate::parse::KeepValues;
 use crate::report::Diagnostic;
 use crate::schema::{AccessType, FieldType, Scalar, Version};
 use crate::validate::document::{
@@ -49,6 +50,11 @@ use crate::validate::document::{
 
 /// Reads an X3D JSON document.
 pub fn read(source: &[u8]) -> Parsed {
+    read_with(source, KeepValues::All)
+}
+
+/// Reads an X3D JSON document, keeping numeric MF values whole or as summaries.
+pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
     let failed = |diagnostic: Diagnostic| Parsed {
         encoding: Some(Encoding::Json),
         document: None,
@@ -81,6 +87,7 @@ pub fn read(source: &[u8]) -> Parsed {
         t: &tree,
         builder: Builder::new(Encoding::Json),
         stack: Vec::new(),
+        keep,
     };
     reader.x3d(x3d);
     reader.run();
@@ -246,6 +253,8 @@ struct JsonReader<'t, 's> {
     t: &'t Tree<'s>,
     builder: Builder,
     stack: Vec<Frame<'t, 's>>,
+    /// Whether numeric MF values of schema fields are kept or summarized.
+    keep: KeepValues,
 }
 
 /// Node object members that are not node fields: read by the reader itself, so their
@@ -935,6 +944,13 @@ impl<'t, 's> JsonReader<'t, 's> {
         let field = self.builder.field_ref(id, name);
         let label = format!("`@{name}`");
         let parsed = match &field {
+            FieldRef::Schema { def, .. }
+                if self.keep == KeepValues::Summaries && Summary::applies_to(def.ty) =>
+            {
+                let t = self.t;
+                let converted = value::convert_summary(t, value, self.builder.doc().node(id), def);
+                self.converted_or_reported(converted, value, &label)
+            }
             FieldRef::Schema { def, .. } => self.convert(def.ty, value, &label, Some(name)),
             FieldRef::Declared { ty: Some(ty), .. } => self.convert(*ty, value, &label, Some(name)),
             _ => Value::Unparsed(self.t.raw_full(value).to_string()),
@@ -970,7 +986,19 @@ impl<'t, 's> JsonReader<'t, 's> {
             );
             return Value::Unparsed(t.raw_full(value).to_string());
         }
-        match value::convert(t, value, ty) {
+        let converted = value::convert(t, value, ty);
+        self.converted_or_reported(converted, value, label)
+    }
+
+    /// The value converted, or the error reported at its place (and the text kept).
+    fn converted_or_reported(
+        &mut self,
+        converted: Result<Value, value::ValueError>,
+        value: usize,
+        label: &str,
+    ) -> Value {
+        let t = self.t;
+        match converted {
             Ok(parsed) => parsed,
             Err(error) => {
                 let mut diagnostic = Diagnostic::new(

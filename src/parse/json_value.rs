@@ -11,9 +11,9 @@
 //! vector per field.
 
 use super::tree::{Kind, ScanNumber, Tree, ValueRef, NOT_INTEGER};
-use crate::model::{Image, Value};
+use crate::model::{Image, Node, Sink, Summarized, Summarizer, Summary, Value};
 use crate::parse::number::{parse_f32, parse_f64, scan_float, scan_i32};
-use crate::schema::{FieldType, Scalar};
+use crate::schema::{FieldDef, FieldType, Scalar};
 
 /// A value that does not fit its field's type. `span` is a byte range in the input: the
 /// offending element, or the whole value.
@@ -45,6 +45,38 @@ impl ValueError {
         self.help = Some(help.into());
         self
     }
+}
+
+/// [`convert`] for the schema field `def` of `node`, keeping a [`Summary`] of a numeric
+/// MF value instead of its numbers (the fast level): the same numbers are read, the same
+/// errors reported, and the summary says what the fast-level rules would find.
+pub fn convert_summary(
+    tree: &Tree,
+    i: usize,
+    node: &Node,
+    def: &'static FieldDef,
+) -> Result<Value, ValueError> {
+    let ty = def.ty;
+    if !Summary::applies_to(ty) {
+        return convert(tree, i, ty);
+    }
+    match ty.scalar() {
+        Scalar::Float => summarize(tree, i, node, def, &FLOAT32),
+        Scalar::Double => summarize(tree, i, node, def, &FLOAT64),
+        _ => summarize(tree, i, node, def, &INT32),
+    }
+}
+
+fn summarize<T: Summarized>(
+    tree: &Tree,
+    i: usize,
+    node: &Node,
+    def: &'static FieldDef,
+    number: &NumberType<T>,
+) -> Result<Value, ValueError> {
+    let mut summarizer = Summarizer::new(node, def);
+    numbers_into(tree, i, def.ty, number, &mut summarizer)?;
+    Ok(summarizer.finish())
 }
 
 /// Converts the JSON value at item `i` to a value of type `ty`. Node types are not values
@@ -425,10 +457,37 @@ fn numbers<T>(
             None => Err(wrong_kind(tree, i, ty)),
         };
     }
+    let capacity = if tree.kind(i) == Kind::Array {
+        tree.item(i).len as usize
+    } else {
+        0
+    };
+    let mut values = Vec::with_capacity(capacity);
+    numbers_into(tree, i, ty, number, &mut values)?;
+    Ok(values)
+}
+
+/// The numbers of the array at item `i` into `values`, its count checked.
+fn numbers_into<T, S: Sink<T>>(
+    tree: &Tree,
+    i: usize,
+    ty: FieldType,
+    number: &NumberType<T>,
+    values: &mut S,
+) -> Result<(), ValueError> {
+    let bad_number = |e: ValueRef, message: String, index: Option<usize>| {
+        let error = ValueError::new(
+            tree.full_span(e),
+            format!("{ty} takes {}: {message}", element_noun(ty).1),
+        );
+        match index {
+            Some(index) if ty.is_mf() => error.index(index / ty.arity()),
+            _ => error,
+        }
+    };
     if tree.kind(i) != Kind::Array {
         return Err(wrong_kind(tree, i, ty));
     }
-    let mut values = Vec::with_capacity(tree.item(i).len as usize);
     let mut elements = tree.elements(i);
     loop {
         if let Some(v) = elements.next_number(number.scan) {
@@ -437,15 +496,14 @@ fn numbers<T>(
         }
         // Not a number, or one `scan` refuses: read it on its own, or report it.
         let Some(e) = elements.next() else { break };
-        let index = values.len();
+        let index = values.count();
         match scalar(tree, e, number.read) {
             Some(Ok(v)) => values.push(v),
             Some(Err(message)) => return Err(bad_number(e, message, Some(index))),
             None => return Err(element_error(tree, e, ty, index)),
         }
     }
-    check_count(tree, i, ty, values.len())?;
-    Ok(values)
+    check_count(tree, i, ty, values.count())
 }
 
 fn strings(tree: &Tree, i: usize, ty: FieldType) -> Result<Vec<String>, ValueError> {

@@ -11,11 +11,25 @@ pub mod xml_value;
 pub use crate::check::Parsed;
 pub use detect::{detect, Detected};
 
-/// Reads an input of any supported encoding.
+/// What a reader keeps of the numeric MF values of schema fields.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum KeepValues {
+    /// Every number (what the standard and deep levels and the renderer read).
+    All,
+    /// A [`Summary`](crate::model::Summary) of each: what the fast level reads.
+    Summaries,
+}
+
+/// Reads an input of any supported encoding, keeping every value.
 pub fn read(source: &[u8]) -> Parsed {
+    read_with(source, KeepValues::All)
+}
+
+/// Reads an input of any supported encoding, keeping numeric MF values as `keep` says.
+pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
     match detect(source) {
-        Detected::Xml => xml::read(source),
-        Detected::Json => json::read(source),
+        Detected::Xml => xml::read_with(source, keep),
+        Detected::Json => json::read_with(source, keep),
         Detected::Unsupported(diagnostic) => Parsed {
             encoding: None,
             document: None,

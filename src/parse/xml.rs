@@ -14,8 +14,9 @@ use crate::check::Parsed;
 use crate::limits::{MAX_FIELDS_PER_NODE, MAX_INPUT_BYTES};
 use crate::model::builder::{Limit, Parent};
 use crate::model::*;
+use crate::parse::KeepValues;
 use crate::report::Diagnostic;
-use crate::schema::{AccessType, FieldType, Scalar};
+use crate::schema::{AccessType, FieldDef, FieldType, Scalar};
 use crate::validate::document::{
     field_value_syntax::FIELD_VALUE_SYNTAX, root_not_x3d::ROOT_NOT_X3D,
     use_with_fields::USE_WITH_FIELDS, xml_malformed::XML_MALFORMED,
@@ -23,8 +24,14 @@ use crate::validate::document::{
 
 /// Reads an X3D XML document.
 pub fn read(source: &[u8]) -> Parsed {
+    read_with(source, KeepValues::All)
+}
+
+/// Reads an X3D XML document, keeping numeric MF values whole or as summaries.
+pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
     let mut reader = XmlReader {
         source,
+        keep,
         builder: Builder::new(Encoding::Xml),
         stack: Vec::new(),
         root_closed: false,
@@ -96,6 +103,8 @@ enum DeclOwner {
 
 struct XmlReader<'s> {
     source: &'s [u8],
+    /// Whether numeric MF values of schema fields are kept or summarized.
+    keep: KeepValues,
     builder: Builder,
     stack: Vec<Frame>,
     root_closed: bool,
@@ -682,6 +691,11 @@ impl<'s> XmlReader<'s> {
     fn attribute_field(&mut self, node: NodeId, attr: &Attr) {
         let field = self.builder.field_ref(node, attr.name);
         let value = match field.clone() {
+            FieldRef::Schema { def, .. }
+                if self.keep == KeepValues::Summaries && Summary::applies_to(def.ty) =>
+            {
+                self.parse_attr_summary(node, def, attr)
+            }
             FieldRef::Schema { def, .. } => self.parse_attr_value(def.ty, attr),
             FieldRef::Declared { ty: Some(ty), .. } => self.parse_attr_value(ty, attr),
             _ => Value::Unparsed(attr.value.to_string()),
@@ -716,7 +730,23 @@ impl<'s> XmlReader<'s> {
         } else {
             Cow::Borrowed(&*attr.value)
         };
-        match xml_value::parse_value(ty, &text) {
+        let parsed = xml_value::parse_value(ty, &text);
+        self.parsed_or_reported(parsed, attr)
+    }
+
+    /// [`Self::parse_attr_value`] for a numeric MF value kept as a [`Summary`].
+    fn parse_attr_summary(&mut self, node: NodeId, def: &'static FieldDef, attr: &Attr) -> Value {
+        let parsed = xml_value::parse_summary(self.builder.doc().node(node), def, &attr.value);
+        self.parsed_or_reported(parsed, attr)
+    }
+
+    /// The value parsed, or the syntax error reported at its place (and the text kept).
+    fn parsed_or_reported(
+        &mut self,
+        parsed: Result<Value, xml_value::SyntaxError>,
+        attr: &Attr,
+    ) -> Value {
+        match parsed {
             Ok(value) => value,
             Err(error) => {
                 let span = if attr.verbatim {

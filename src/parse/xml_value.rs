@@ -9,8 +9,8 @@
 use std::fmt;
 
 use super::number::{is_separator, scan_float, scan_i32, scan_pixel, token_end, Float, IntError};
-use crate::model::{Image, Value};
-use crate::schema::{FieldType, Scalar};
+use crate::model::{Image, Node, Sink, Summarized, Summarizer, Summary, Value};
+use crate::schema::{FieldDef, FieldType, Scalar};
 
 /// A value that does not follow the syntax of its field type. `offset` and `len` are a
 /// byte range in the text given to [`parse_value`].
@@ -80,6 +80,40 @@ pub fn parse_value(ty: FieldType, text: &str) -> Result<Value, SyntaxError> {
             format!("{ty} fields take child elements, not attribute text"),
         )),
     }
+}
+
+/// [`parse_value`] for the schema field `def` of `node`, keeping a [`Summary`] of a
+/// numeric MF value instead of its numbers (the fast level): the same numbers are parsed,
+/// the same errors reported, and the summary says what the fast-level rules would find.
+pub fn parse_summary(
+    node: &Node,
+    def: &'static FieldDef,
+    text: &str,
+) -> Result<Value, SyntaxError> {
+    let ty = def.ty;
+    if !Summary::applies_to(ty) {
+        return parse_value(ty, text);
+    }
+    match ty.scalar() {
+        Scalar::Float => summarize::<f32>(node, def, text.as_bytes(), scan_floats),
+        Scalar::Double => summarize::<f64>(node, def, text.as_bytes(), scan_floats),
+        _ => summarize::<i32>(node, def, text.as_bytes(), scan_int32s),
+    }
+}
+
+/// [`scan_floats`] or [`scan_int32s`] into a summary.
+type Scan<T> = fn(FieldType, &[u8], &mut Summarizer<T>) -> Result<(), SyntaxError>;
+
+fn summarize<T: Summarized>(
+    node: &Node,
+    def: &'static FieldDef,
+    s: &[u8],
+    scan: Scan<T>,
+) -> Result<Value, SyntaxError> {
+    let mut summarizer = Summarizer::<T>::new(node, def);
+    scan(def.ty, s, &mut summarizer)?;
+    check_count(def.ty, s, summarizer.count())?;
+    Ok(summarizer.finish())
 }
 
 /// True when an MFString value was written without any double quotes (`url='a.png'`).
@@ -200,6 +234,17 @@ fn parse_floats<F: Float>(ty: FieldType, s: &[u8]) -> Result<Vec<F>, SyntaxError
     } else {
         Vec::with_capacity(ty.arity())
     };
+    scan_floats(ty, s, &mut values)?;
+    trim_capacity(&mut values);
+    Ok(values)
+}
+
+/// The numbers of `s` into `values`.
+fn scan_floats<F: Float, S: Sink<F>>(
+    ty: FieldType,
+    s: &[u8],
+    values: &mut S,
+) -> Result<(), SyntaxError> {
     let n = s.len();
     let mut i = 0;
     loop {
@@ -217,8 +262,7 @@ fn parse_floats<F: Float>(ty: FieldType, s: &[u8]) -> Result<Vec<F>, SyntaxError
             Err(end) => return Err(float_error(ty, s, i, end)),
         }
     }
-    trim_capacity(&mut values);
-    Ok(values)
+    Ok(())
 }
 
 #[cold]
@@ -254,6 +298,13 @@ fn parse_int32s(ty: FieldType, s: &[u8]) -> Result<Vec<i32>, SyntaxError> {
     } else {
         Vec::with_capacity(1)
     };
+    scan_int32s(ty, s, &mut values)?;
+    trim_capacity(&mut values);
+    Ok(values)
+}
+
+/// The whole numbers of `s` into `values`.
+fn scan_int32s<S: Sink<i32>>(ty: FieldType, s: &[u8], values: &mut S) -> Result<(), SyntaxError> {
     let n = s.len();
     let mut i = 0;
     loop {
@@ -271,8 +322,7 @@ fn parse_int32s(ty: FieldType, s: &[u8]) -> Result<Vec<i32>, SyntaxError> {
             Err((error, _)) => return Err(int_error(ty, s, i, error)),
         }
     }
-    trim_capacity(&mut values);
-    Ok(values)
+    Ok(())
 }
 
 #[cold]

@@ -15,12 +15,16 @@
 //!   (x−1)(z−1)·2; IndexedLineSet n−1 per index run of n ≥ 2; LineSet n−1 per vertexCount
 //!   of n ≥ 2; PointSet its coordinates. Other geometry (Box, Sphere, Extrusion, NURBS, …)
 //!   counts 0: how finely it is tessellated is the browser's choice.
+//!
+//! At the fast level a numeric MF value may be a [`Summary`], which holds these lengths
+//! and run sums, so the numbers are the same.
 
 use std::collections::BTreeMap;
 
 use serde::{Deserialize, Serialize};
 
-use crate::model::{ChildRef, Document, Node, Value};
+use crate::model::{ChildRef, Document, Node, Summary, Value};
+use crate::schema::Scalar;
 
 #[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase", deny_unknown_fields)]
@@ -102,7 +106,7 @@ struct Primitives {
 }
 
 fn primitives(doc: &Document, node: &Node) -> Primitives {
-    let ints = |name| node.value(name).and_then(Value::as_int32s).unwrap_or(&[]);
+    let ints = |name| Ints::of(node.value(name));
     let triangles = |triangles| Primitives {
         triangles,
         ..Primitives::default()
@@ -117,9 +121,9 @@ fn primitives(doc: &Document, node: &Node) -> Primitives {
             } else {
                 "index"
             };
-            triangles(index_runs(ints(field)).map(|n| n.saturating_sub(2)).sum())
+            triangles(ints(field).index_runs(2))
         }
-        "IndexedTriangleSet" => triangles(ints("index").len() as u64 / 3),
+        "IndexedTriangleSet" => triangles(ints("index").len() / 3),
         "TriangleSet" => triangles(coordinates(doc, node) / 3),
         "TriangleStripSet" | "TriangleFanSet" => {
             let field = if def.name == "TriangleStripSet" {
@@ -127,13 +131,12 @@ fn primitives(doc: &Document, node: &Node) -> Primitives {
             } else {
                 "fanCount"
             };
-            triangles(counts(ints(field)).map(|n| n.saturating_sub(2)).sum())
+            triangles(ints(field).counts(2))
         }
         "ElevationGrid" => {
             let dimension = |name| {
-                ints(name)
-                    .first()
-                    .map_or(0, |&d| u64::from(d.max(0) as u32))
+                let ints = node.value(name).and_then(Value::as_int32s).unwrap_or(&[]);
+                ints.first().map_or(0, |&d| u64::from(d.max(0) as u32))
             };
             let (x, z) = (dimension("xDimension"), dimension("zDimension"));
             triangles(
@@ -143,15 +146,11 @@ fn primitives(doc: &Document, node: &Node) -> Primitives {
             )
         }
         "IndexedLineSet" => Primitives {
-            lines: index_runs(ints("coordIndex"))
-                .map(|n| n.saturating_sub(1))
-                .sum(),
+            lines: ints("coordIndex").index_runs(1),
             ..Primitives::default()
         },
         "LineSet" => Primitives {
-            lines: counts(ints("vertexCount"))
-                .map(|n| n.saturating_sub(1))
-                .sum(),
+            lines: ints("vertexCount").counts(1),
             ..Primitives::default()
         },
         "PointSet" => Primitives {
@@ -162,17 +161,50 @@ fn primitives(doc: &Document, node: &Node) -> Primitives {
     }
 }
 
-/// Lengths of the runs of indices separated by −1 (a last run without −1 counts too).
-fn index_runs(indices: &[i32]) -> impl Iterator<Item = u64> + '_ {
-    indices
-        .split(|&i| i == -1)
-        .map(|run| run.len() as u64)
-        .filter(|&n| n > 0)
+/// An MFInt32 value, whole or summarized (none when unset or not MFInt32).
+enum Ints<'a> {
+    Whole(&'a [i32]),
+    Summary(&'a Summary),
 }
 
-/// Non-negative vertex counts (negative ones define nothing).
-fn counts(values: &[i32]) -> impl Iterator<Item = u64> + '_ {
-    values.iter().map(|&n| u64::from(n.max(0) as u32))
+impl<'a> Ints<'a> {
+    fn of(value: Option<&'a Value>) -> Ints<'a> {
+        match value {
+            Some(Value::Summary(s)) if s.scalar == Scalar::Int32 => Ints::Summary(s),
+            other => Ints::Whole(other.and_then(Value::as_int32s).unwrap_or(&[])),
+        }
+    }
+
+    fn len(&self) -> u64 {
+        match self {
+            Ints::Whole(v) => v.len() as u64,
+            Ints::Summary(s) => s.len as u64,
+        }
+    }
+
+    /// Σ max(n − k, 0) over the runs of n indices ended by −1 (a last run without −1
+    /// counts too); k is 1 or 2.
+    fn index_runs(&self, k: u64) -> u64 {
+        match self {
+            Ints::Whole(v) => v
+                .split(|&i| i == -1)
+                .map(|run| (run.len() as u64).saturating_sub(k))
+                .sum(),
+            Ints::Summary(s) => s.index_runs[k as usize - 1],
+        }
+    }
+
+    /// Σ max(n − k, 0) over the non-negative vertex counts n (negative ones define
+    /// nothing); k is 1 or 2.
+    fn counts(&self, k: u64) -> u64 {
+        match self {
+            Ints::Whole(v) => v
+                .iter()
+                .map(|&n| u64::from(n.max(0) as u32).saturating_sub(k))
+                .sum(),
+            Ints::Summary(s) => s.counts[k as usize - 1],
+        }
+    }
 }
 
 /// Points in the Coordinate or CoordinateDouble node of the `coord` field.
@@ -182,6 +214,9 @@ fn coordinates(doc: &Document, node: &Node) -> u64 {
     };
     match coord.value("point") {
         Some(v @ (Value::Floats(_) | Value::Doubles(_))) => v.len() as u64 / 3,
+        Some(Value::Summary(s)) if matches!(s.scalar, Scalar::Float | Scalar::Double) => {
+            s.len as u64 / 3
+        }
         _ => 0,
     }
 }

@@ -50,10 +50,11 @@ fn check(ctx: &mut Ctx) {
             let Some(def) = entry.schema_def() else {
                 continue;
             };
-            if def.min.is_none() && def.max.is_none() || is_geometry_index(node, def.name) {
+            if !range_applies(node, def) {
                 continue;
             }
             let outside = match &entry.value {
+                Value::Summary(summary) => summary.out_of_range,
                 Value::Floats(v) => failures(v.iter().map(|&x| in_range_f32(x, def))),
                 Value::Doubles(v) => failures(v.iter().map(|&x| in_range_f64(x, def))),
                 Value::Int32s(v) => failures(v.iter().map(|&x| in_range_f64(f64::from(x), def))),
@@ -64,6 +65,13 @@ fn check(ctx: &mut Ctx) {
             }
         }
     }
+}
+
+/// Whether this rule checks the values of field `def` on `node`: the field has a range,
+/// and is not a geometry index field. The fast level's summaries
+/// ([`crate::model::Summarizer`]) decide with this too.
+pub fn range_applies(node: &Node, def: &FieldDef) -> bool {
+    !(def.min.is_none() && def.max.is_none() || is_geometry_index(node, def.name))
 }
 
 /// Index fields of geometry (coordIndex, index, …) have the more specific INDEX_NEGATIVE,
@@ -115,6 +123,7 @@ fn report(
 
 /// Single-precision values are compared with the bound rounded to f32, the precision
 /// the field has; NaN compares false everywhere and so is never in range.
+#[inline]
 pub fn in_range_f32(value: f32, def: &FieldDef) -> bool {
     let above = |b: Bound| {
         if b.inclusive {
@@ -133,6 +142,7 @@ pub fn in_range_f32(value: f32, def: &FieldDef) -> bool {
     def.min.is_none_or(above) && def.max.is_none_or(below) && !value.is_nan()
 }
 
+#[inline]
 pub fn in_range_f64(value: f64, def: &FieldDef) -> bool {
     let above = |b: Bound| {
         if b.inclusive {

@@ -36,6 +36,7 @@ fn check(ctx: &mut Ctx) {
     for (id, node) in ctx.doc.iter() {
         for entry in &node.fields {
             let failures = match &entry.value {
+                Value::Summary(summary) => summary.nonfinite,
                 Value::Floats(v) => failures(v.iter().map(|x| x.is_finite())),
                 Value::Doubles(v) => failures(v.iter().map(|x| x.is_finite())),
                 _ => continue,
