@@ -72,7 +72,6 @@ fn size_text(size: ImageSize) -> String {
 }
 
 /// Times `x3dcheck SCENE --render` per preset and view3dscene's screenshot of the scene.
-#[allow(clippy::too_many_arguments)]
 pub fn speed(
     out: &mut String,
     args: &Args,
