@@ -6,7 +6,7 @@
 
 mod common;
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use x3dcheck::check::check_document;
 use x3dcheck::config::CheckConfig;
@@ -30,31 +30,10 @@ fn fast_kept() -> CheckConfig {
     }
 }
 
+const X3D_EXTENSIONS: &[&str] = &["x3d", "x3dj", "json"];
+
 fn json(report: &FileReport) -> String {
     x3dcheck::report::json::render(std::slice::from_ref(report), None)
-}
-
-/// Scenes under `root` with one of the X3D extensions, sorted.
-fn scenes(root: &Path) -> Vec<PathBuf> {
-    assert!(root.is_dir(), "{} is missing", root.display());
-    let mut files = Vec::new();
-    let mut dirs = vec![root.to_path_buf()];
-    while let Some(dir) = dirs.pop() {
-        for entry in std::fs::read_dir(&dir).unwrap().flatten() {
-            let path = entry.path();
-            if entry.file_type().unwrap().is_dir() {
-                dirs.push(path);
-            } else if path
-                .extension()
-                .and_then(|e| e.to_str())
-                .is_some_and(|e| ["x3d", "x3dj", "json"].contains(&e.to_ascii_lowercase().as_str()))
-            {
-                files.push(path);
-            }
-        }
-    }
-    files.sort();
-    files
 }
 
 /// Numeric MF values of schema fields still kept whole, and summaries, in `doc`.
@@ -80,8 +59,8 @@ fn kept_and_summarized(doc: &Document) -> (usize, usize) {
 #[test]
 fn every_scene_reports_the_same_at_fast_with_summaries() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let mut files = scenes(&root.join("corpus"));
-    files.extend(scenes(&root.join("../shared/corpus")));
+    let mut files = common::files_under(&root.join("corpus"), X3D_EXTENSIONS);
+    files.extend(common::corpus_files(X3D_EXTENSIONS));
     assert!(files.len() > 1000, "only {} scenes", files.len());
     let (mut differing, mut summaries) = (Vec::new(), 0);
     for path in &files {

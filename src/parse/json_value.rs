@@ -440,20 +440,10 @@ fn numbers<T>(
     ty: FieldType,
     number: &NumberType<T>,
 ) -> Result<Vec<T>, ValueError> {
-    let bad_number = |e: ValueRef, message: String, index: Option<usize>| {
-        let error = ValueError::new(
-            tree.full_span(e),
-            format!("{ty} takes {}: {message}", element_noun(ty).1),
-        );
-        match index {
-            Some(index) if ty.is_mf() => error.index(index / ty.arity()),
-            _ => error,
-        }
-    };
     if !ty.is_mf() && ty.arity() == 1 {
         return match scalar(tree, i.into(), number.read) {
             Some(Ok(v)) => Ok(vec![v]),
-            Some(Err(message)) => Err(bad_number(i.into(), message, None)),
+            Some(Err(message)) => Err(bad_number(tree, ty, i.into(), message, None)),
             None => Err(wrong_kind(tree, i, ty)),
         };
     }
@@ -467,6 +457,24 @@ fn numbers<T>(
     Ok(values)
 }
 
+/// A number of a `ty` value that did not read: at element `index / arity` of an MF value.
+fn bad_number(
+    tree: &Tree,
+    ty: FieldType,
+    e: ValueRef,
+    message: String,
+    index: Option<usize>,
+) -> ValueError {
+    let error = ValueError::new(
+        tree.full_span(e),
+        format!("{ty} takes {}: {message}", element_noun(ty).1),
+    );
+    match index {
+        Some(index) if ty.is_mf() => error.index(index / ty.arity()),
+        _ => error,
+    }
+}
+
 /// The numbers of the array at item `i` into `values`, its count checked.
 fn numbers_into<T, S: Sink<T>>(
     tree: &Tree,
@@ -475,16 +483,6 @@ fn numbers_into<T, S: Sink<T>>(
     number: &NumberType<T>,
     values: &mut S,
 ) -> Result<(), ValueError> {
-    let bad_number = |e: ValueRef, message: String, index: Option<usize>| {
-        let error = ValueError::new(
-            tree.full_span(e),
-            format!("{ty} takes {}: {message}", element_noun(ty).1),
-        );
-        match index {
-            Some(index) if ty.is_mf() => error.index(index / ty.arity()),
-            _ => error,
-        }
-    };
     if tree.kind(i) != Kind::Array {
         return Err(wrong_kind(tree, i, ty));
     }
@@ -499,7 +497,7 @@ fn numbers_into<T, S: Sink<T>>(
         let index = values.count();
         match scalar(tree, e, number.read) {
             Some(Ok(v)) => values.push(v),
-            Some(Err(message)) => return Err(bad_number(e, message, Some(index))),
+            Some(Err(message)) => return Err(bad_number(tree, ty, e, message, Some(index))),
             None => return Err(element_error(tree, e, ty, index)),
         }
     }

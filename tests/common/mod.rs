@@ -35,14 +35,18 @@ pub fn stdout(output: &Output) -> String {
 /// The files of `../shared/corpus` whose extension is one of `extensions` (any case),
 /// sorted by path.
 pub fn corpus_files(extensions: &[&str]) -> Vec<PathBuf> {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus");
-    assert!(
-        root.is_dir(),
-        "../shared/corpus is missing: {}",
-        root.display()
-    );
+    files_under(
+        &Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus"),
+        extensions,
+    )
+}
+
+/// The files under `root` whose extension is one of `extensions` (any case), sorted by
+/// path.
+pub fn files_under(root: &Path, extensions: &[&str]) -> Vec<PathBuf> {
+    assert!(root.is_dir(), "{} is missing", root.display());
     let mut files = Vec::new();
-    let mut dirs = vec![root];
+    let mut dirs = vec![root.to_path_buf()];
     while let Some(dir) = dirs.pop() {
         for entry in std::fs::read_dir(&dir).unwrap().flatten() {
             let path = entry.path();
