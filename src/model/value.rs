@@ -105,13 +105,6 @@ impl Value {
             _ => None,
         }
     }
-
-    pub fn as_summary(&self) -> Option<&Summary> {
-        match self {
-            Value::Summary(s) => Some(s),
-            _ => None,
-        }
-    }
 }
 
 /// What the fast level knows of a numeric MF value it did not keep. The failures are

@@ -11,7 +11,7 @@
 //! vector per field.
 
 use super::tree::{Kind, ScanNumber, Tree, ValueRef, NOT_INTEGER};
-use crate::model::{Image, Node, Sink, Summarized, Summarizer, Summary, Value};
+use crate::model::{Image, Node, Sink, Summarized, Summarizer, Value};
 use crate::parse::number::{parse_f32, parse_f64, scan_float, scan_i32};
 use crate::schema::{FieldDef, FieldType, Scalar};
 
@@ -47,20 +47,18 @@ impl ValueError {
     }
 }
 
-/// [`convert`] for the schema field `def` of `node`, keeping a [`Summary`] of a numeric
-/// MF value instead of its numbers (the fast level): the same numbers are read, the same
-/// errors reported, and the summary says what the fast-level rules would find.
+/// [`convert`] for the schema field `def` of `node`, a numeric MF field
+/// ([`Summary::applies_to`](crate::model::Summary::applies_to)), keeping a
+/// [`Summary`](crate::model::Summary) instead of its numbers (the fast
+/// level): the same numbers are read, the same errors reported, and the summary says what
+/// the fast-level rules would find.
 pub fn convert_summary(
     tree: &Tree,
     i: usize,
     node: &Node,
     def: &'static FieldDef,
 ) -> Result<Value, ValueError> {
-    let ty = def.ty;
-    if !Summary::applies_to(ty) {
-        return convert(tree, i, ty);
-    }
-    match ty.scalar() {
+    match def.ty.scalar() {
         Scalar::Float => summarize(tree, i, node, def, &FLOAT32),
         Scalar::Double => summarize(tree, i, node, def, &FLOAT64),
         _ => summarize(tree, i, node, def, &INT32),

@@ -9,7 +9,7 @@
 use std::fmt;
 
 use super::number::{is_separator, scan_float, scan_i32, scan_pixel, token_end, Float, IntError};
-use crate::model::{Image, Node, Sink, Summarized, Summarizer, Summary, Value};
+use crate::model::{Image, Node, Sink, Summarized, Summarizer, Value};
 use crate::schema::{FieldDef, FieldType, Scalar};
 
 /// A value that does not follow the syntax of its field type. `offset` and `len` are a
@@ -82,19 +82,17 @@ pub fn parse_value(ty: FieldType, text: &str) -> Result<Value, SyntaxError> {
     }
 }
 
-/// [`parse_value`] for the schema field `def` of `node`, keeping a [`Summary`] of a
-/// numeric MF value instead of its numbers (the fast level): the same numbers are parsed,
-/// the same errors reported, and the summary says what the fast-level rules would find.
+/// [`parse_value`] for the schema field `def` of `node`, a numeric MF field
+/// ([`Summary::applies_to`](crate::model::Summary::applies_to)), keeping a
+/// [`Summary`](crate::model::Summary) instead of its numbers (the fast
+/// level): the same numbers are parsed, the same errors reported, and the summary says
+/// what the fast-level rules would find.
 pub fn parse_summary(
     node: &Node,
     def: &'static FieldDef,
     text: &str,
 ) -> Result<Value, SyntaxError> {
-    let ty = def.ty;
-    if !Summary::applies_to(ty) {
-        return parse_value(ty, text);
-    }
-    match ty.scalar() {
+    match def.ty.scalar() {
         Scalar::Float => summarize::<f32>(node, def, text.as_bytes(), scan_floats),
         Scalar::Double => summarize::<f64>(node, def, text.as_bytes(), scan_floats),
         _ => summarize::<i32>(node, def, text.as_bytes(), scan_int32s),

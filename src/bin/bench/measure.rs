@@ -145,7 +145,8 @@ pub fn peak_bytes(samples: &[Sample]) -> Option<u64> {
         .and_then(|v| v.into_iter().max())
 }
 
-fn median(mut values: Vec<f64>) -> f64 {
+/// The median of `values`: the middle one, or the mean of the middle two; NaN for none.
+pub fn median(mut values: Vec<f64>) -> f64 {
     if values.is_empty() {
         return f64::NAN;
     }

@@ -163,7 +163,10 @@ pub fn speed(
          (read, check at the standard level, draw, write the PNG); peak RSS as above.",
         if runs == 1 { "" } else { "s" }
     );
-    let balanced = median_wall(&rows[1].1);
+    let balanced = PRESETS
+        .iter()
+        .position(|&q| q == Quality::Balanced)
+        .map_or(f64::NAN, |i| median_wall(&rows[i].1));
     match peer_median {
         Some(reference) => {
             let ratio = reference / balanced;
@@ -558,14 +561,17 @@ fn measure_scenes(
         reference.seconds.push(seconds);
         for (quality, measured) in PRESETS.iter().zip(presets.iter_mut()) {
             let mut times = Vec::with_capacity(runs);
-            let mut error = ImageError::default();
+            let mut image = None;
             for _ in 0..runs {
-                let (seconds, image) = scene.draw(gpu, size, quality.settings(), None)?;
+                let (seconds, drawn) = scene.draw(gpu, size, quality.settings(), None)?;
                 times.push(seconds);
-                error = ImageError::between(&image, &truth);
+                image = Some(drawn);
             }
-            times.sort_by(f64::total_cmp);
-            measured.seconds.push(times[times.len() / 2]);
+            measured.seconds.push(measure::median(times));
+            // Every draw of a preset is the same image: the last one is measured.
+            let error = image.map_or_else(ImageError::default, |image| {
+                ImageError::between(&image, &truth)
+            });
             measured.errors.push((scene.name.clone(), error));
         }
     }

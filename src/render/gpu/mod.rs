@@ -61,13 +61,14 @@ pub struct Gpu {
 }
 
 impl Gpu {
-    /// Opens a device on any adapter (see [`find_adapter`]).
+    /// Opens a device on any adapter, software ones included (`WGPU_BACKEND` chooses).
     pub fn open() -> Result<Gpu, GpuError> {
         let (device, queue) = pollster::block_on(open_device())?;
         Ok(Gpu { device, queue })
     }
 
-    /// Renders the draw list as [`render`] does.
+    /// Renders the draw list into a `width` × `height` RGBA image (rows from the top),
+    /// consuming it.
     pub fn render(
         &self,
         list: DrawList,

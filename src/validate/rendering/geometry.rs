@@ -461,7 +461,7 @@ fn max_abs(v: [f64; 3]) -> f64 {
 /// four components (the cross product's squared length in [`is_degenerate`]), neither
 /// overflows nor leaves the normal range of f64 (2^±800 against 2^±1022). Every
 /// coordinate and every difference of coordinates read as f32 lies inside.
-const UNSCALED: std::ops::RangeInclusive<f64> = 1.0e-60..=1.0e60;
+pub const UNSCALED: std::ops::RangeInclusive<f64> = 1.0e-60..=1.0e60;
 
 /// `v` scaled so that squaring neither overflows nor underflows: unchanged when its
 /// largest component is in [`UNSCALED`], else divided by that component; None for the
