@@ -13,7 +13,7 @@ struct Entry {
 }
 
 /// The table rows of RULES.md: `| CODE | sev | …`. §1 is the fast level; the others are
-/// standard unless the severity says "(deep)". For a severity that depends on version or
+/// standard unless the severity says "(deep)", or the table has a `lvl` column (§9). For a severity that depends on version or
 /// value ("error in 4.0, warning in 4.1", "info (7–19), warning (>19)") the first is the
 /// rule's default.
 fn catalogue() -> Vec<Entry> {
@@ -42,7 +42,15 @@ fn catalogue() -> Vec<Entry> {
             .unwrap_or("");
         let severity_value =
             Severity::parse(first_word).unwrap_or_else(|| panic!("{code}: severity `{severity}`"));
-        let level = if fast_section {
+        // Tables with a `lvl` column (§9) say the level there.
+        let level_cell = cells.get(3).copied().filter(|c| ["fast", "standard", "deep"].contains(c));
+        let level = if let Some(cell) = level_cell {
+            match cell {
+                "fast" => Level::Fast,
+                "deep" => Level::Deep,
+                _ => Level::Standard,
+            }
+        } else if fast_section {
             Level::Fast
         } else if severity.contains("deep") {
             Level::Deep

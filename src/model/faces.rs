@@ -494,6 +494,15 @@ pub fn runs(list: &[i32]) -> impl Iterator<Item = Range<usize>> + '_ {
     })
 }
 
+/// Whether a run of [`runs`] is bounded by a negative entry other than the `-1`
+/// separator: such an entry is INDEX_NEGATIVE, and the runs it cuts are not what the
+/// author wrote, so the rules that judge a run's length leave them alone.
+pub fn next_to_invalid_index(list: &[i32], run: &Range<usize>) -> bool {
+    let before = run.start.checked_sub(1).and_then(|at| list.get(at));
+    let after = list.get(run.end);
+    [before, after].into_iter().flatten().any(|&index| index < -1)
+}
+
 /// The ranges of consecutive vertices `counts` takes from `total` (LineSet.vertexCount,
 /// stripCount, fanCount), cut at `total`; negative counts take nothing.
 pub fn counted_runs(counts: &[i32], total: usize) -> impl Iterator<Item = Range<usize>> + '_ {

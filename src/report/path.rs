@@ -16,7 +16,7 @@
 use std::cell::OnceCell;
 use std::collections::HashMap;
 
-use crate::model::{Document, NodeId, Place, Value};
+use crate::model::{Document, NodeId, Place, Span, Value};
 
 /// The path of diagnostics that concern no node.
 pub const ROOT: &str = "/X3D";
@@ -40,10 +40,55 @@ impl<'d> NodePaths<'d> {
         node_path(self.doc, id, |id| self.position(id))
     }
 
+    /// The path of a place that no node was recorded for (a value that did not parse, a
+    /// USE of an undefined name, a ROUTE): the innermost node whose element holds it, or
+    /// else the ProtoBody or Scene that does, or else [`ROOT`].
+    pub fn path_at(&self, span: Span) -> String {
+        if let Some(node) = node_at(self.doc, span) {
+            return self.path(node);
+        }
+        let holds = |outer: Span| outer.start <= span.start && span.end <= outer.end;
+        if let Some(proto) = self.doc.protos.iter().rposition(|p| holds(p.span)) {
+            let decl = proto_declare(self.doc, proto);
+            return if self.doc.protos[proto].external {
+                decl.replacen("ProtoDeclare", "ExternProtoDeclare", 1)
+            } else {
+                format!("{decl}/ProtoBody")
+            };
+        }
+        match self.doc.scene_span {
+            Some(scene) if holds(scene) => "/X3D/Scene".to_string(),
+            _ => ROOT.to_string(),
+        }
+    }
+
     fn position(&self, id: NodeId) -> u32 {
         let positions = self.positions.get_or_init(|| positions(self.doc));
         positions.get(id.index()).copied().unwrap_or(1).max(1)
     }
+}
+
+/// The innermost node whose span holds `span`. Readers number nodes in the order their
+/// elements start, so the candidates are the last node that starts at or before `span`
+/// and its ancestors.
+fn node_at(doc: &Document, span: Span) -> Option<NodeId> {
+    let holds = |id: NodeId| {
+        let outer = doc.node(id).span;
+        outer.start <= span.start && span.end <= outer.end
+    };
+    let started = doc.nodes.partition_point(|n| n.span.start <= span.start);
+    let mut current = NodeId(started.checked_sub(1)? as u32);
+    // Bounded by the depth of the tree; the count guards a model that is not a tree.
+    for _ in 0..=doc.nodes.len() {
+        if holds(current) {
+            return Some(current);
+        }
+        match doc.node(current).place {
+            Place::Field { parent, .. } => current = parent,
+            _ => return None,
+        }
+    }
+    None
 }
 
 /// Every node's position among the references of the same type in its sibling list.

@@ -5,7 +5,8 @@
 use super::line_index::LineIndex;
 use super::path::{NodePaths, ROOT};
 use super::Diagnostic;
-use crate::model::{Document, Span};
+use crate::model::{Document, NodeKind, Span};
+use crate::schema::clauses;
 use crate::validate::Severity;
 
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -66,7 +67,8 @@ pub fn resolve(diagnostics: &[Diagnostic], source: &[u8], doc: Option<&Document>
             let end = at(d.span.end.max(d.span.start));
             let path = match (&paths, d.node) {
                 (Some(paths), Some(node)) => paths.path(node),
-                _ => ROOT.to_string(),
+                (Some(paths), None) => paths.path_at(d.span),
+                (None, _) => ROOT.to_string(),
             };
             Resolved {
                 code: d.rule.code,
@@ -77,7 +79,7 @@ pub fn resolve(diagnostics: &[Diagnostic], source: &[u8], doc: Option<&Document>
                 end_line: end.line,
                 end_column: end.column,
                 path,
-                clause: d.rule.clause,
+                clause: clause_of(d, doc),
                 index: d.index,
                 indices: d.indices.clone(),
                 value: d.value.clone(),
@@ -100,4 +102,20 @@ pub fn resolve(diagnostics: &[Diagnostic], source: &[u8], doc: Option<&Document>
             }
         })
         .collect()
+}
+
+/// The clause a diagnostic cites: its rule's, or, when the rule cites a node type's
+/// subclause, the subclause of the node type it concerns (a SpotLight's direction cites
+/// SpotLight's, a QuadSet's count CADGeometry's).
+fn clause_of(d: &Diagnostic, doc: Option<&Document>) -> &'static str {
+    if !clauses::is_node_subclause(d.rule.clause) {
+        return d.rule.clause;
+    }
+    let node = doc.zip(d.node).and_then(|(doc, id)| doc.nodes.get(id.index()));
+    match node.map(|n| &n.kind) {
+        Some(NodeKind::Known { def, version }) => {
+            clauses::node_subclause(*version, def.name).unwrap_or(d.rule.clause)
+        }
+        _ => d.rule.clause,
+    }
 }

@@ -82,15 +82,7 @@ fn check(ctx: &mut Ctx) {
         let node = ctx.doc.node(id);
         let Some(def) = node.def() else { continue };
         let needed = def.component;
-        let provided = profile.level(ctx.version, needed.component);
-        let has = if provided == 0 {
-            format!("profile {} has no {}", profile.name, needed.component)
-        } else {
-            format!(
-                "profile {} provides {} level {provided}",
-                profile.name, needed.component
-            )
-        };
+        let has = provided_text(ctx, profile.name, profile.level(ctx.version, needed.component), needed.component);
         let times = if count > 1 {
             format!(" ({count} nodes)")
         } else {
@@ -105,11 +97,36 @@ fn check(ctx: &mut Ctx) {
             ),
         )
         .node(id)
-        .help(format!(
-            "add <component name='{}' level='{}'/> to the head, or use a larger profile",
-            needed.component, needed.level
-        ));
+        .help(if declared(needed.component) > 0 {
+            format!(
+                "raise the component statement to <component name='{}' level='{}'/>, or use a larger profile",
+                needed.component, needed.level
+            )
+        } else {
+            format!(
+                "add <component name='{}' level='{}'/> to the head, or use a larger profile",
+                needed.component, needed.level
+            )
+        });
         diagnostic.count = count;
         ctx.report(diagnostic);
     }
+}
+
+/// What the document provides of `component`: the profile's level and every `component`
+/// statement that names it, each with its level ("profile Immersive has no HAnim and
+/// `<component name='HAnim' level='1'/>` provides level 1").
+fn provided_text(ctx: &Ctx, profile: &str, from_profile: u8, component: &str) -> String {
+    let mut parts = vec![if from_profile == 0 {
+        format!("profile {profile} has no {component}")
+    } else {
+        format!("profile {profile} provides {component} level {from_profile}")
+    }];
+    for statement in ctx.doc.head.components.iter().filter(|c| c.name.text == component) {
+        parts.push(match statement.level {
+            Some((level, _)) => format!("<component name='{component}' level='{level}'/> provides level {level}"),
+            None => format!("<component name='{component}'/> gives no level"),
+        });
+    }
+    parts.join(" and ")
 }

@@ -2,6 +2,7 @@
 
 use crate::model::NodeKind;
 use crate::report::Diagnostic;
+use crate::schema::versions;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -40,8 +41,10 @@ fn check(ctx: &mut Ctx) {
                         &NODE_NOT_IN_VERSION,
                         node.name_span,
                         format!(
-                            "{} is not in X3D {}; X3D {version} has it",
-                            def.name, ctx.version
+                            "{} is not in X3D {}; it is in {}",
+                            def.name,
+                            ctx.version,
+                            versions::describe(&versions::with_node(def.name))
                         ),
                     )
                     .node(id),

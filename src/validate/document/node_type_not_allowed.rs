@@ -1,6 +1,6 @@
 //! NODE_TYPE_NOT_ALLOWED: a node given to a field that does not accept its type.
 
-use crate::model::{ChildRef, Document, NodeKind};
+use crate::model::{ChildRef, Document, FieldRef, NodeKind};
 use crate::report::Diagnostic;
 use crate::schema::NodeDef;
 use crate::validate::Ctx;
@@ -19,7 +19,9 @@ crate::declare_rule! {
     /// `material`, a TwoSidedMaterial in `backMaterial` (which takes
     /// X3DOneSidedMaterialNode, 12.4.2), a MultiTexture in a material's `xxxTexture` field,
     /// a non-geometry in Shape.geometry, a Material at the Scene's top level. A
-    /// ProtoInstance counts as the type of the first node of its ProtoBody.
+    /// ProtoInstance counts as the type of the first node of its ProtoBody. A field that
+    /// is not in the document's version is FIELD_NOT_IN_VERSION and its nodes are not
+    /// judged here.
     ///
     /// ## Why it matters
     /// Browsers ignore a node of the wrong type (or fail to load the scene), so what it
@@ -53,9 +55,19 @@ fn check(ctx: &mut Ctx) {
             continue;
         };
         for entry in &node.fields {
-            let Some(field) = entry.schema_def() else {
+            // A field of another version is FIELD_NOT_IN_VERSION: its acceptable types
+            // come from a hierarchy the document's version lacks, so judging its nodes
+            // would report the same cause twice.
+            let FieldRef::Schema {
+                def: field,
+                version,
+            } = entry.field
+            else {
                 continue;
             };
+            if version != ctx.version {
+                continue;
+            }
             if field.acceptable.is_empty() {
                 continue;
             }

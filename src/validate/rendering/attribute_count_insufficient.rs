@@ -22,15 +22,14 @@ crate::declare_rule! {
     /// - IndexedFaceSet (13.3.6): per vertex without an index list, coordIndex selects the
     ///   values, so largest coordIndex + 1 are needed; per face (colorPerVertex or
     ///   normalPerVertex FALSE), one index per face in colorIndex/normalIndex or, without
-    ///   one, one value per face; texCoordIndex, when given, needs an index for every
-    ///   vertex of coordIndex ("at least as many indices as the coordIndex field", not
-    ///   counting a final -1). A per-vertex colorIndex or normalIndex shorter than
-    ///   coordIndex is not reported: the clause sets no count for them, and the vertices
-    ///   past its end take the coordinate index (as browsers do).
+    ///   one, one value per face. A per-vertex colorIndex, normalIndex or texCoordIndex
+    ///   shorter than coordIndex, or with its -1 separators elsewhere, is
+    ///   INDEX_COUNT_MISMATCH ("at least as many indices as the coordIndex field", 13.3.6).
     /// - ElevationGrid (13.3.4): xDimension × zDimension values per vertex (colours,
     ///   normals, texture coordinates), (xDimension−1) × (zDimension−1) per quadrilateral.
-    /// - IndexedLineSet (11.4.4): per vertex without colorIndex, largest coordIndex + 1
-    ///   colours; per polyline, one colorIndex entry or one colour per polyline.
+    /// - IndexedLineSet (11.4): per vertex without colorIndex, largest coordIndex + 1
+    ///   colours; per polyline, one colorIndex entry or one colour per polyline. A
+    ///   per-vertex colorIndex that does not follow coordIndex is INDEX_COUNT_MISMATCH.
     /// - LineSet (11.4.5): one colour per vertex of its polylines; PointSet (11.4.11):
     ///   "at least the number of points contained in the coord node".
     ///
@@ -147,12 +146,9 @@ fn check_polygonal(ctx: &mut Ctx, g: &Checked, attribute: Attribute, lists: &[Pr
                 },
             }
         }
-        (PolygonKind::IndexedFaceSet, Binding::PerVertex { index: Some(list) }) => {
-            if attribute == Attribute::TexCoord {
-                check_tex_coord_index(ctx, g, list);
-            }
-            return;
-        }
+        // A per-vertex index list's length is INDEX_COUNT_MISMATCH's; its values past
+        // the lists are INDEX_OUT_OF_RANGE's.
+        (PolygonKind::IndexedFaceSet, Binding::PerVertex { index: Some(_) }) => return,
         (PolygonKind::IndexedFaceSet, Binding::PerVertex { index: None }) => {
             let coord_index = g
                 .node
@@ -228,31 +224,6 @@ fn report_short(
     );
     let span: Span = list.child_span;
     ctx.report(Diagnostic::new(&ATTRIBUTE_COUNT_INSUFFICIENT, span, message).node(id));
-}
-
-/// texCoordIndex "shall contain at least as many indices as the coordIndex field" (13.3.6):
-/// every vertex position of coordIndex needs one; a final -1 does not.
-fn check_tex_coord_index(ctx: &mut Ctx, g: &Checked, tex_coord_index: &[i32]) {
-    let coord_index = g
-        .node
-        .value("coordIndex")
-        .and_then(Value::as_int32s)
-        .unwrap_or(&[]);
-    let Some(last_vertex) = coord_index.iter().rposition(|&i| i >= 0) else {
-        return;
-    };
-    if tex_coord_index.len() > last_vertex {
-        return;
-    }
-    let span = g
-        .node
-        .entry("texCoordIndex")
-        .map_or(g.node.name_span, |e| e.span);
-    let message = format!(
-        "IndexedFaceSet.texCoordIndex has {} but coordIndex has a vertex at position {last_vertex}: texCoordIndex needs one index per coordIndex entry",
-        entries(tex_coord_index.len())
-    );
-    ctx.report(Diagnostic::new(&ATTRIBUTE_COUNT_INSUFFICIENT, span, message).node(g.id));
 }
 
 fn check_lines(

@@ -1,7 +1,7 @@
 //! POLYLINE_TOO_SHORT: an IndexedLineSet polyline of a single vertex.
 
 use super::geometry::{shape_is_known, ScalarSpans};
-use crate::model::faces::runs;
+use crate::model::faces::{next_to_invalid_index, runs};
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -9,8 +9,9 @@ crate::declare_rule! {
     /// ## What it does
     /// Reports an IndexedLineSet polyline with one vertex: a single index between `-1`
     /// separators. Empty runs (two separators in a row, a leading or trailing `-1`) are
-    /// not polylines and are not reported. LineSet.vertexCount values below 2 are outside
-    /// the field's `[2,∞)` range and are reported as FIELD_OUT_OF_RANGE.
+    /// not polylines and are not reported; a run cut by a negative index other than `-1`
+    /// is INDEX_NEGATIVE's and is not judged here. LineSet.vertexCount values below 2 are
+    /// outside the field's `[2,∞)` range and are reported as FIELD_OUT_OF_RANGE.
     ///
     /// ## Why it matters
     /// A polyline connects vertices; one vertex draws nothing. It usually means a lost
@@ -49,7 +50,7 @@ fn check(ctx: &mut Ctx) {
         };
         let mut spans = ScalarSpans::new(ctx.source, entry);
         for (number, run) in runs(indices).enumerate() {
-            if run.len() >= 2 {
+            if run.len() >= 2 || next_to_invalid_index(indices, &run) {
                 continue;
             }
             ctx.report_repeated(&POLYLINE_TOO_SHORT, id, "coordIndex", run.start, || {

@@ -1,7 +1,7 @@
 //! STRIP_FAN_TOO_SHORT: an indexed strip or fan of fewer than three indices.
 
 use super::geometry::{shape_is_known, ScalarSpans};
-use crate::model::faces::runs;
+use crate::model::faces::{next_to_invalid_index, runs};
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -10,6 +10,8 @@ crate::declare_rule! {
     /// Reports a strip of an IndexedTriangleStripSet or a fan of an IndexedTriangleFanSet
     /// with one or two indices between `-1` separators. Empty runs (two separators in a
     /// row, a leading or trailing `-1`) are not strips and are not reported.
+    /// A run cut by a negative index other than `-1` is INDEX_NEGATIVE's and is not
+    /// judged here.
     /// TriangleStripSet.stripCount and TriangleFanSet.fanCount values below 3 are outside
     /// the fields' `[3,∞)` range and are reported as FIELD_OUT_OF_RANGE.
     ///
@@ -56,7 +58,7 @@ fn check(ctx: &mut Ctx) {
         };
         let mut spans = ScalarSpans::new(ctx.source, entry);
         for (number, run) in runs(indices).enumerate() {
-            if run.len() >= 3 {
+            if run.len() >= 3 || next_to_invalid_index(indices, &run) {
                 continue;
             }
             ctx.report_repeated(&STRIP_FAN_TOO_SHORT, id, "index", run.start, || {

@@ -135,13 +135,26 @@ pub fn repeated_mappings(doc: &Document, node_type: &str, field: &str) -> Vec<Re
     found
 }
 
-/// Appearances that have both a material and a backMaterial: (Appearance, material,
-/// backMaterial), in document order.
+/// An Appearance's backMaterial, unless it is of a type the field does not accept (a
+/// TwoSidedMaterial): NODE_TYPE_NOT_ALLOWED reports that, and a browser ignores it, so no
+/// backMaterial rule has anything more to say about it.
+pub fn back_material(doc: &Document, appearance: &Node) -> Option<ChildRef> {
+    let back = *appearance.children("backMaterial").first()?;
+    let accepted = appearance.entry("backMaterial").and_then(|e| e.schema_def());
+    if let (Some(field), Some(def)) = (accepted, doc.node(back.node).def()) {
+        if !field.acceptable.is_empty() && !field.acceptable.iter().any(|a| def.is_a(a)) {
+            return None;
+        }
+    }
+    Some(back)
+}
+
+/// Appearances that have both a material and a backMaterial ([`back_material`]):
+/// (Appearance, material, backMaterial), in document order.
 pub fn front_and_back(doc: &Document) -> impl Iterator<Item = (NodeId, ChildRef, ChildRef)> + '_ {
     appearances(doc).filter_map(|(appearance, node)| {
         let front = *node.children("material").first()?;
-        let back = *node.children("backMaterial").first()?;
-        Some((appearance, front, back))
+        Some((appearance, front, back_material(doc, node)?))
     })
 }
 

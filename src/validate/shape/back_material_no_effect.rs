@@ -1,6 +1,6 @@
 //! BACK_MATERIAL_NO_EFFECT: backMaterial on a Shape whose back faces are never drawn.
 
-use super::analysis::shape_pairs;
+use super::analysis::{back_material, shape_pairs};
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -49,7 +49,7 @@ fn check(ctx: &mut Ctx) {
     for pair in shape_pairs(doc) {
         let Some(back) = pair
             .appearance
-            .and_then(|a| doc.node(a).children("backMaterial").first().copied())
+            .and_then(|a| back_material(doc, doc.node(a)))
         else {
             continue;
         };

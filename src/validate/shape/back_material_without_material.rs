@@ -1,6 +1,6 @@
 //! BACK_MATERIAL_WITHOUT_MATERIAL: backMaterial set while material is NULL.
 
-use super::analysis::appearances;
+use super::analysis::{appearances, back_material};
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -37,7 +37,7 @@ fn check(ctx: &mut Ctx) {
     }
     let mut found = Vec::new();
     for (appearance, node) in appearances(ctx.doc) {
-        let Some(&back) = node.children("backMaterial").first() else {
+        let Some(back) = back_material(ctx.doc, node) else {
             continue;
         };
         if node.child("material").is_none() {

@@ -1,7 +1,7 @@
 //! The comparison 12.2.3 item 2 asks for: the xxxTexture and xxxTextureMapping fields of
 //! an Appearance's material and backMaterial. Shared by the three rules that report on it.
 
-use super::analysis::{appearances, texture_fields};
+use super::analysis::{appearances, back_material, texture_fields};
 use crate::model::{ChildRef, Document, NodeId, Value};
 
 /// How deep texture nodes' children (TextureProperties, ComposedCubeMapTexture faces…) are
@@ -22,10 +22,9 @@ pub struct MaterialPair {
 pub fn material_pairs(doc: &Document) -> Vec<MaterialPair> {
     let mut pairs = Vec::new();
     for (_, node) in appearances(doc) {
-        let (Some(&front), Some(&back)) = (
-            node.children("material").first(),
-            node.children("backMaterial").first(),
-        ) else {
+        let (Some(&front), Some(back)) =
+            (node.children("material").first(), back_material(doc, node))
+        else {
             continue;
         };
         let (front_node, back_node) = (doc.node(front.node), doc.node(back.node));

@@ -19,6 +19,7 @@ pub mod back_material_texture_not_shared;
 pub mod back_material_with_two_sided;
 pub mod back_material_without_material;
 pub mod bbox_too_small;
+pub mod color_ignored_by_texture;
 pub mod hatch_style_unsupported;
 pub mod lines_emissive_black;
 pub mod linetype_unsupported;
@@ -58,4 +59,5 @@ pub static RULES: &[&Rule] = &[
     &unlit_normals_unused::UNLIT_NORMALS_UNUSED,
     &lines_emissive_black::LINES_EMISSIVE_BLACK,
     &bbox_too_small::BBOX_TOO_SMALL,
+    &color_ignored_by_texture::COLOR_IGNORED_BY_TEXTURE,
 ];

@@ -11,10 +11,19 @@ crate::declare_rule! {
     /// Reports a non-empty `xxxTextureMapping` of an Appearance's material or backMaterial,
     /// whose `xxxTexture` is not NULL, that names the `mapping` of no node on the
     /// Appearance's list of texture transformations (12.2.4.2: `textureTransform`'s node, or
-    /// the children of its MultiTextureTransform). Checked only when that list is not
-    /// empty: without transformations the rule of 12.2.4.2 has nothing to refer to, and a
-    /// mapping that exists only for texture coordinates is normal. The list depends only
-    /// on the Appearance, so this is judged once per Appearance and material.
+    /// the children of its MultiTextureTransform). The list depends only on the
+    /// Appearance, so this is judged once per Appearance and material.
+    ///
+    /// An Appearance without `textureTransform` (an empty list) is no exception. The 4.0
+    /// text reads: "If the xxxTextureMapping field is not empty, it must refer to a
+    /// corresponding X3DSingleTextureTransformNode node within the list of texture
+    /// transformations"; it names no case in which a non-empty mapping may refer to
+    /// nothing, and "If the list is empty, no texture transformation is used" is said of
+    /// an *empty* xxxTextureMapping only. 4.1 keeps the sentence with "should" and adds
+    /// that a browser then proceeds "as if xxxTextureMapping would be empty", which for an
+    /// empty list means no transformation. So a mapping name used only to pick texture
+    /// coordinates (12.2.4.1) still needs a texture transformation of that name: without
+    /// one it is reported, as an error in 4.0 and a warning in 4.1.
     ///
     /// An error in X3D 4.0 ("must refer to"), a warning in 4.1 ("should", with browsers
     /// falling back to the first transformation).
@@ -56,10 +65,10 @@ fn check(ctx: &mut Ctx) {
     let mut found = Vec::new();
     for (appearance, node) in appearances(doc) {
         let list = texture_transforms(doc, Some(appearance));
-        if list.opaque || list.items.is_empty() {
+        if list.opaque {
             continue;
         }
-        let transform = node.children("textureTransform")[0];
+        let transform = node.children("textureTransform").first().copied();
         for material in one_sided_materials(doc, appearance) {
             let m = doc.node(material.child.node);
             for (texture, mapping) in texture_fields(material.def) {
@@ -80,29 +89,37 @@ fn check(ctx: &mut Ctx) {
                         mapping,
                         name,
                         entry.span,
-                        transform.span,
+                        transform,
                     ));
                 }
             }
         }
     }
     for (material, field, mapping, name, span, transform) in found {
-        ctx.report(
-            Diagnostic::new(
+        let (what, help) = match transform {
+            Some(_) => (
+                "names no texture transformation of its Appearance",
+                "give a texture transformation that mapping, or fix the name; \
+                 meanwhile browsers use the first transformation (the 4.1 fallback)",
+            ),
+            None => (
+                "names a texture transformation, but its Appearance has none",
+                "add a TextureTransform with that mapping to the Appearance, or empty the \
+                 mapping if no texture coordinates are chosen by it",
+            ),
+        };
+        let mut diagnostic = Diagnostic::new(
                 &TEXTURE_TRANSFORM_MAPPING_UNRESOLVED,
                 span,
-                format!(
-                    "{field}.{mapping} {name:?} names no texture transformation of its Appearance"
-                ),
+                format!("{field}.{mapping} {name:?} {what}"),
             )
             .node(material)
             .severity(severity)
             .value(name)
-            .related(transform, "the Appearance's texture transformations")
-            .help(
-                "give a texture transformation that mapping, or fix the name; \
-                 meanwhile browsers use the first transformation (the 4.1 fallback)",
-            ),
-        );
+            .help(help);
+        if let Some(transform) = transform {
+            diagnostic = diagnostic.related(transform.span, "the Appearance's texture transformations");
+        }
+        ctx.report(diagnostic);
     }
 }

@@ -4,6 +4,7 @@ pub(crate) mod files;
 pub mod image_format_unsupported;
 pub mod image_unreadable;
 pub mod image_url_empty;
+pub mod movie_format_unsupported;
 pub mod multitexture_coords_short;
 pub mod multitexture_extra_modes;
 pub mod pixel_texture_size_mismatch;
@@ -28,4 +29,5 @@ pub static RULES: &[&Rule] = &[
     &url_unresolved::URL_UNRESOLVED,
     &image_unreadable::IMAGE_UNREADABLE,
     &image_format_unsupported::IMAGE_FORMAT_UNSUPPORTED,
+    &movie_format_unsupported::MOVIE_FORMAT_UNSUPPORTED,
 ];

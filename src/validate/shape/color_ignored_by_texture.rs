@@ -1,0 +1,106 @@
+//! COLOR_IGNORED_BY_TEXTURE: a Shape whose geometry's Color node is replaced by an RGB or
+//! RGBA texture.
+
+use super::analysis::shape_pairs;
+use crate::model::{Document, NodeId};
+use crate::report::Diagnostic;
+use crate::validate::Ctx;
+
+crate::declare_rule! {
+    /// ## What it does
+    /// Reports a Shape whose geometry has a Color or ColorRGBA node in its `color` field
+    /// while its Appearance's `texture` is an RGB or RGBA texture. Judged per Shape, that
+    /// is per Appearance × geometry pair the scene forms, since both are shared by USE:
+    /// one diagnostic per pair, at the geometry's `color` node.
+    ///
+    /// Whether a texture is RGB or RGBA is known from the document for a PixelTexture
+    /// (the components of its SFImage: 3 or 4). An ImageTexture's or MovieTexture's
+    /// components are those of its file, which this rule does not read, and a
+    /// MultiTexture combines its textures by its modes: neither is judged, so nothing is
+    /// reported for them (the rule prefers a miss to a guess).
+    ///
+    /// ## Why it matters
+    /// "RGB or RGBA textures take precedence over colours; specifying both an RGB or RGBA
+    /// texture and a Color node for geometric shape will result in the Color node being
+    /// ignored" (11.2; Tables 17.2 and 17.3 of 17.2.2): the per-vertex colours the author
+    /// wrote never show.
+    ///
+    /// ## Example
+    /// ```xml
+    /// <Shape>
+    ///   <Appearance><PixelTexture image='1 1 3 0xFF0000'/></Appearance>
+    ///   <TriangleSet>
+    ///     <Color color='1 0 0 0 1 0 0 0 1'/>
+    ///     <Coordinate point='0 0 0 1 0 0 0 1 0'/>
+    ///   </TriangleSet>
+    /// </Shape>
+    /// ```
+    ///
+    /// ## Use instead
+    /// An intensity (one- or two-component) texture, which modulates the colours, or no
+    /// Color node.
+    ///
+    /// ## Clause
+    /// 19775-1 11.2 (geometric properties, Color); 17.2.2 Lighting model, Tables 17.2 and
+    /// 17.3.
+    pub static COLOR_IGNORED_BY_TEXTURE = {
+        severity: Info,
+        level: Standard,
+        clause: "17.2.2",
+        versions: "all",
+        check: Some(check),
+    }
+}
+
+fn check(ctx: &mut Ctx) {
+    let doc = ctx.doc;
+    let mut found = Vec::new();
+    for pair in shape_pairs(doc) {
+        let Some(appearance) = pair.appearance else {
+            continue;
+        };
+        let Some(texture) = doc.node(appearance).children("texture").first().copied() else {
+            continue;
+        };
+        let Some(components) = rgb_components(doc, texture.node) else {
+            continue;
+        };
+        let geometry = doc.node(pair.geometry);
+        if geometry.is_connected("color") {
+            continue;
+        }
+        let Some(&color) = geometry.children("color").first() else {
+            continue;
+        };
+        if doc.node(color.node).is_a("X3DColorNode") {
+            found.push((pair.shape, pair.geometry, color, texture, components));
+        }
+    }
+    for (shape, geometry, color, texture, components) in found {
+        let colour_type = ctx.doc.node(color.node).type_name().to_string();
+        let kind = if components == 3 { "RGB" } else { "RGBA" };
+        let diagnostic = Diagnostic::new(
+            &COLOR_IGNORED_BY_TEXTURE,
+            color.span,
+            format!(
+                "the {colour_type} node of this {} is ignored: the Shape's Appearance applies an {kind} texture, which takes precedence over colours",
+                ctx.doc.node(geometry).type_name()
+            ),
+        )
+        .node(geometry)
+        .related(texture.span, format!("the {kind} texture"))
+        .related(ctx.doc.node(shape).name_span, "the Shape");
+        ctx.report(diagnostic);
+    }
+}
+
+/// The components (3 or 4) of a texture known to be RGB or RGBA from the document alone;
+/// None for any other texture or one that cannot be told.
+fn rgb_components(doc: &Document, texture: NodeId) -> Option<i32> {
+    let node = doc.node(texture);
+    if !node.is_a("PixelTexture") || node.is_connected("image") {
+        return None;
+    }
+    let image = node.value("image")?.as_images()?.first()?;
+    matches!(image.components, 3 | 4).then_some(image.components)
+}
