@@ -2,6 +2,7 @@
 
 pub mod clauses;
 pub mod profiles;
+mod range;
 pub mod types;
 pub mod versions;
 // Generated and checked for freshness byte for byte, so rustfmt must leave it alone.
@@ -9,4 +10,5 @@ pub mod versions;
 pub mod generated;
 
 pub use generated::schema;
+pub use range::{in_range_f32, in_range_f64, range_text};
 pub use types::*;
