@@ -38,7 +38,11 @@ fn check_text(text: &str) -> Vec<String> {
         ..CheckConfig::default()
     };
     let report = x3dcheck::check_source("<stdin>", text.as_bytes(), &config);
-    report.diagnostics.iter().map(|d| d.code.to_string()).collect()
+    report
+        .diagnostics
+        .iter()
+        .map(|d| d.code.to_string())
+        .collect()
 }
 
 fn fixtures() -> Vec<std::path::PathBuf> {
@@ -145,7 +149,11 @@ fn one_cause_gives_one_diagnostic() {
         "<Shape><Appearance><TwoSidedMaterial DEF='T'/></Appearance><Box/></Shape>\
          <Shape><Appearance><Material/><TwoSidedMaterial USE='T' containerField='backMaterial'/></Appearance><Box/></Shape>",
     ));
-    let codes: Vec<&str> = codes.iter().map(String::as_str).filter(|c| *c != "NODE_DEPRECATED").collect();
+    let codes: Vec<&str> = codes
+        .iter()
+        .map(String::as_str)
+        .filter(|c| *c != "NODE_DEPRECATED")
+        .collect();
     assert_eq!(codes, ["NODE_TYPE_NOT_ALLOWED"]);
     // An index of -2 that cuts a strip: INDEX_NEGATIVE, not also STRIP_FAN_TOO_SHORT.
     let codes = check_text(&scene(

@@ -500,7 +500,10 @@ pub fn runs(list: &[i32]) -> impl Iterator<Item = Range<usize>> + '_ {
 pub fn next_to_invalid_index(list: &[i32], run: &Range<usize>) -> bool {
     let before = run.start.checked_sub(1).and_then(|at| list.get(at));
     let after = list.get(run.end);
-    [before, after].into_iter().flatten().any(|&index| index < -1)
+    [before, after]
+        .into_iter()
+        .flatten()
+        .any(|&index| index < -1)
 }
 
 /// The ranges of consecutive vertices `counts` takes from `total` (LineSet.vertexCount,

@@ -42,7 +42,7 @@ impl<'d> NodePaths<'d> {
 
     /// The path of a place that no node was recorded for (a value that did not parse, a
     /// USE of an undefined name, a ROUTE): the innermost node whose element holds it, or
-    /// else the ProtoBody or Scene that does, or else [`ROOT`].
+    /// else the ProtoDeclare or Scene that does, or else [`ROOT`].
     pub fn path_at(&self, span: Span) -> String {
         if let Some(node) = node_at(self.doc, span) {
             return self.path(node);
@@ -56,8 +56,10 @@ impl<'d> NodePaths<'d> {
                 format!("{decl}/ProtoBody")
             };
         }
+        // The Scene is the root's last child, and an XML reader records only its start
+        // tag: whatever starts after that start is inside it.
         match self.doc.scene_span {
-            Some(scene) if holds(scene) => "/X3D/Scene".to_string(),
+            Some(scene) if scene.start <= span.start => "/X3D/Scene".to_string(),
             _ => ROOT.to_string(),
         }
     }

@@ -111,7 +111,9 @@ fn clause_of(d: &Diagnostic, doc: Option<&Document>) -> &'static str {
     if !clauses::is_node_subclause(d.rule.clause) {
         return d.rule.clause;
     }
-    let node = doc.zip(d.node).and_then(|(doc, id)| doc.nodes.get(id.index()));
+    let node = doc
+        .zip(d.node)
+        .and_then(|(doc, id)| doc.nodes.get(id.index()));
     match node.map(|n| &n.kind) {
         Some(NodeKind::Known { def, version }) => {
             clauses::node_subclause(*version, def.name).unwrap_or(d.rule.clause)

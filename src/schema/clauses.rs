@@ -25,21 +25,22 @@ const CHAPTERS: &[(&str, u32, u32)] = &[
 ];
 
 /// Per version: node type → subclause, for the components of [`CHAPTERS`].
-static SUBCLAUSES: LazyLock<HashMap<Version, HashMap<&'static str, String>>> = LazyLock::new(|| {
-    let mut tables = HashMap::new();
-    for version in Version::ALL {
-        let table: &mut HashMap<&'static str, String> = tables.entry(version).or_default();
-        for &(component, chapter, section) in CHAPTERS {
-            // `nodes` is sorted by name, so the n-th of the component is its n-th subclause.
-            let nodes = schema(version).nodes.iter();
-            let of_component = nodes.filter(|n| n.component.component == component);
-            for (n, node) in of_component.enumerate() {
-                table.insert(node.name, format!("{chapter}.{section}.{}", n + 1));
+static SUBCLAUSES: LazyLock<HashMap<Version, HashMap<&'static str, String>>> =
+    LazyLock::new(|| {
+        let mut tables = HashMap::new();
+        for version in Version::ALL {
+            let table: &mut HashMap<&'static str, String> = tables.entry(version).or_default();
+            for &(component, chapter, section) in CHAPTERS {
+                // `nodes` is sorted by name, so the n-th of the component is its n-th subclause.
+                let nodes = schema(version).nodes.iter();
+                let of_component = nodes.filter(|n| n.component.component == component);
+                for (n, node) in of_component.enumerate() {
+                    table.insert(node.name, format!("{chapter}.{section}.{}", n + 1));
+                }
             }
         }
-    }
-    tables
-});
+        tables
+    });
 
 /// The subclause that defines `node` in `version`; None for a node type of a component
 /// outside [`CHAPTERS`] or not in that version.
@@ -58,9 +59,9 @@ pub fn is_node_subclause(clause: &str) -> bool {
     let rest: Vec<&str> = parts.collect();
     let numeric = rest.len() <= 1 && rest.iter().all(|p| p.parse::<u32>().is_ok());
     numeric
-        && CHAPTERS.iter().any(|&(_, c, s)| {
-            chapter.parse() == Ok(c) && section.parse() == Ok(s)
-        })
+        && CHAPTERS
+            .iter()
+            .any(|&(_, c, s)| chapter.parse() == Ok(c) && section.parse() == Ok(s))
 }
 
 #[cfg(test)]
@@ -98,7 +99,11 @@ mod tests {
             let found = headings(file, prefix);
             assert!(found.len() >= 10, "{file}: {found:?}");
             for (number, name) in found {
-                assert_eq!(node_subclause(version, &name), Some(number.as_str()), "{name}");
+                assert_eq!(
+                    node_subclause(version, &name),
+                    Some(number.as_str()),
+                    "{name}"
+                );
             }
         }
     }
@@ -106,10 +111,16 @@ mod tests {
     #[test]
     fn each_node_cites_its_own_component_and_version() {
         assert_eq!(node_subclause(Version::V4_0, "QuadSet"), Some("32.4.6"));
-        assert_eq!(node_subclause(Version::V4_0, "IndexedQuadSet"), Some("32.4.5"));
+        assert_eq!(
+            node_subclause(Version::V4_0, "IndexedQuadSet"),
+            Some("32.4.5")
+        );
         assert_eq!(node_subclause(Version::V4_1, "SpotLight"), Some("17.4.4"));
         assert_eq!(node_subclause(Version::V4_0, "SpotLight"), Some("17.4.3"));
-        assert_eq!(node_subclause(Version::V4_1, "IndexedFaceSet"), Some("13.3.6"));
+        assert_eq!(
+            node_subclause(Version::V4_1, "IndexedFaceSet"),
+            Some("13.3.6")
+        );
         assert_eq!(node_subclause(Version::V4_1, "Transform"), None);
         assert!(is_node_subclause("11.4") && is_node_subclause("17.4.1"));
         assert!(!is_node_subclause("12.2.3") && !is_node_subclause("4.4.3"));

@@ -61,7 +61,10 @@ mod tests {
 
     #[test]
     fn names_the_first_version_and_the_gaps() {
-        assert_eq!(describe(&with_field("PointLight", "global")), "X3D 3.1 and later");
+        assert_eq!(
+            describe(&with_field("PointLight", "global")),
+            "X3D 3.1 and later"
+        );
         assert_eq!(describe(&with_node("MetadataBoolean")), "X3D 3.3 and later");
         assert_eq!(describe(&[Version::V3_3]), "X3D 3.3 only");
         assert_eq!(

@@ -82,7 +82,12 @@ fn check(ctx: &mut Ctx) {
         let node = ctx.doc.node(id);
         let Some(def) = node.def() else { continue };
         let needed = def.component;
-        let has = provided_text(ctx, profile.name, profile.level(ctx.version, needed.component), needed.component);
+        let has = provided_text(
+            ctx,
+            profile.name,
+            profile.level(ctx.version, needed.component),
+            needed.component,
+        );
         let times = if count > 1 {
             format!(" ({count} nodes)")
         } else {
@@ -122,9 +127,17 @@ fn provided_text(ctx: &Ctx, profile: &str, from_profile: u8, component: &str) ->
     } else {
         format!("profile {profile} provides {component} level {from_profile}")
     }];
-    for statement in ctx.doc.head.components.iter().filter(|c| c.name.text == component) {
+    for statement in ctx
+        .doc
+        .head
+        .components
+        .iter()
+        .filter(|c| c.name.text == component)
+    {
         parts.push(match statement.level {
-            Some((level, _)) => format!("<component name='{component}' level='{level}'/> provides level {level}"),
+            Some((level, _)) => {
+                format!("<component name='{component}' level='{level}'/> provides level {level}")
+            }
             None => format!("<component name='{component}'/> gives no level"),
         });
     }

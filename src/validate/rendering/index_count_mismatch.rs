@@ -92,7 +92,10 @@ fn compare(ctx: &mut Ctx, id: NodeId, type_name: &str, field: &str, coord_index:
         return;
     }
     // A final -1 of coordIndex ends the last face or polyline and needs no match.
-    let needed = coord_index.iter().rposition(|&i| i != -1).map_or(0, |at| at + 1);
+    let needed = coord_index
+        .iter()
+        .rposition(|&i| i != -1)
+        .map_or(0, |at| at + 1);
     let shifted = coord_index.iter().zip(list).position(|(&coord, &index)| {
         // Entries below -1 are INDEX_NEGATIVE's: they separate nothing and match nothing.
         coord >= -1 && index >= -1 && (coord == -1) != (index == -1)

@@ -140,7 +140,9 @@ pub fn repeated_mappings(doc: &Document, node_type: &str, field: &str) -> Vec<Re
 /// backMaterial rule has anything more to say about it.
 pub fn back_material(doc: &Document, appearance: &Node) -> Option<ChildRef> {
     let back = *appearance.children("backMaterial").first()?;
-    let accepted = appearance.entry("backMaterial").and_then(|e| e.schema_def());
+    let accepted = appearance
+        .entry("backMaterial")
+        .and_then(|e| e.schema_def());
     if let (Some(field), Some(def)) = (accepted, doc.node(back.node).def()) {
         if !field.acceptable.is_empty() && !field.acceptable.iter().any(|a| def.is_a(a)) {
             return None;

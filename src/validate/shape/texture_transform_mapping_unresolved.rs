@@ -109,16 +109,17 @@ fn check(ctx: &mut Ctx) {
             ),
         };
         let mut diagnostic = Diagnostic::new(
-                &TEXTURE_TRANSFORM_MAPPING_UNRESOLVED,
-                span,
-                format!("{field}.{mapping} {name:?} {what}"),
-            )
-            .node(material)
-            .severity(severity)
-            .value(name)
-            .help(help);
+            &TEXTURE_TRANSFORM_MAPPING_UNRESOLVED,
+            span,
+            format!("{field}.{mapping} {name:?} {what}"),
+        )
+        .node(material)
+        .severity(severity)
+        .value(name)
+        .help(help);
         if let Some(transform) = transform {
-            diagnostic = diagnostic.related(transform.span, "the Appearance's texture transformations");
+            diagnostic =
+                diagnostic.related(transform.span, "the Appearance's texture transformations");
         }
         ctx.report(diagnostic);
     }

@@ -136,9 +136,14 @@ mod tests {
     #[test]
     fn tells_mpeg1_from_its_successors() {
         assert_eq!(not_mpeg1(&[0, 0, 1, 0xBA, 0x21, 0, 1]), None);
-        assert_eq!(not_mpeg1(&[0, 0, 1, 0xBA, 0x44, 0, 1]), Some("an MPEG-2 program stream"));
+        assert_eq!(
+            not_mpeg1(&[0, 0, 1, 0xBA, 0x44, 0, 1]),
+            Some("an MPEG-2 program stream")
+        );
         assert_eq!(not_mpeg1(&[0, 0, 1, 0xB3, 0x14, 0, 0xF0, 0x13]), None);
-        let mpeg2 = [0, 0, 1, 0xB3, 0x14, 0, 0xF0, 0x13, 0, 0, 0, 0, 0, 0, 1, 0xB5, 0x14];
+        let mpeg2 = [
+            0, 0, 1, 0xB3, 0x14, 0, 0xF0, 0x13, 0, 0, 0, 0, 0, 0, 1, 0xB5, 0x14,
+        ];
         assert_eq!(not_mpeg1(&mpeg2), Some("MPEG-2 video"));
         assert_eq!(
             not_mpeg1(b"\0\0\0\x18ftypmp42"),
