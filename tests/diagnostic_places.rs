@@ -140,7 +140,7 @@ fn one_cause_gives_one_diagnostic() {
     // A field of another version: FIELD_NOT_IN_VERSION, not also NODE_TYPE_NOT_ALLOWED.
     let codes = check_text(&scene(
         "3.0",
-        "<Shape><Appearance><Material><ImageTexture containerField='normalTexture'/></Material></Appearance><Box/></Shape>",
+        "<Shape><Appearance><Material><ImageTexture containerField='normalTexture' url='\"bumps.png\"'/></Material></Appearance><Box/></Shape>",
     ));
     assert_eq!(codes, ["FIELD_NOT_IN_VERSION"]);
     // A TwoSidedMaterial USE'd as backMaterial: NODE_TYPE_NOT_ALLOWED alone.
