@@ -24,6 +24,7 @@ pub mod node_type_not_allowed;
 pub mod node_unknown;
 pub mod profile_missing;
 pub mod profile_unknown;
+pub mod root_content_ignored;
 pub mod root_not_x3d;
 pub mod sfnode_multiple;
 pub mod use_cycle;
@@ -69,6 +70,7 @@ pub static RULES: &[&Rule] = &[
     &field_deprecated::FIELD_DEPRECATED,
     &component_level_insufficient::COMPONENT_LEVEL_INSUFFICIENT,
     &validation_incomplete::VALIDATION_INCOMPLETE,
+    &root_content_ignored::ROOT_CONTENT_IGNORED,
 ];
 
 /// The index of the first element that fails a test and how many fail, for rules that
