@@ -11,6 +11,7 @@ pub mod coord_missing;
 pub mod count_exceeds_coords;
 pub mod count_leaves_coords;
 pub mod degenerate_triangle;
+pub mod height_count_mismatch;
 pub mod index_negative;
 pub mod index_out_of_range;
 pub mod normal_not_unit;
@@ -36,4 +37,5 @@ pub static RULES: &[&Rule] = &[
     &normal_not_unit::NORMAL_NOT_UNIT,
     &normals_contradict_ccw::NORMALS_CONTRADICT_CCW,
     &degenerate_triangle::DEGENERATE_TRIANGLE,
+    &height_count_mismatch::HEIGHT_COUNT_MISMATCH,
 ];
