@@ -512,7 +512,11 @@ fn input_files_are_never_written() {
 
 /// The codes and lines of a report's findings.
 fn found(report: &FileReport) -> Vec<(&'static str, usize)> {
-    report.diagnostics.iter().map(|d| (d.code, d.line)).collect()
+    report
+        .diagnostics
+        .iter()
+        .map(|d| (d.code, d.line))
+        .collect()
 }
 
 #[test]
@@ -530,7 +534,9 @@ fn characters_outside_xml_are_malformed_wherever_they_are() {
         assert!(report.diagnostics[0].message.contains("XML 1.0 2.2 Char"));
     }
     // Tabs, line feeds and carriage returns are characters.
-    assert!(check(scene("<WorldInfo title='a\tb\r\nc'/>")).diagnostics.is_empty());
+    assert!(check(scene("<WorldInfo title='a\tb\r\nc'/>"))
+        .diagnostics
+        .is_empty());
 }
 
 #[test]
@@ -542,7 +548,9 @@ fn an_entity_holding_a_less_than_sign_is_refused_in_attribute_values() {
         );
         let report = check(source);
         assert_eq!(codes(&report), ["XML_MALFORMED"], "{entity}: {report:?}");
-        assert!(report.diagnostics[0].message.contains("No < in Attribute Values"));
+        assert!(report.diagnostics[0]
+            .message
+            .contains("No < in Attribute Values"));
     }
     // `&#38;#60;` stands for the text `&#60;`: a character reference, which is fine.
     let source = format!(
@@ -568,10 +576,13 @@ fn content_beside_head_and_scene_is_reported() {
         found(&report),
         [("ROOT_CONTENT_IGNORED", 2), ("ROOT_CONTENT_IGNORED", 3)]
     );
-    assert_eq!(report.diagnostics[0].help.as_deref(), Some("nodes belong in the Scene"));
-    let json = r#"{"X3D": {"@version": "4.0", "@profile": "Full", "encoding": "UTF-8",
+    assert_eq!(
+        report.diagnostics[0].help.as_deref(),
+        Some("nodes belong in the Scene")
+    );
+    let json = r##"{"X3D": {"@version": "4.0", "@profile": "Full", "encoding": "UTF-8",
 "-children": [{"#comment": "fine"}, {"Transform": {}}],
-"Scene": {}, "Bogus": 1}}"#;
+"Scene": {}, "Bogus": 1}}"##;
     assert_eq!(
         found(&check(json)),
         [("ROOT_CONTENT_IGNORED", 2), ("ROOT_CONTENT_IGNORED", 3)]
@@ -588,8 +599,14 @@ fn head_content_and_statement_attributes_are_checked() {
         found(&report),
         [("ROOT_CONTENT_IGNORED", 2), ("FIELD_UNKNOWN", 3)]
     );
-    assert_eq!(report.diagnostics[0].help.as_deref(), Some("did you mean `meta`?"));
-    assert_eq!(report.diagnostics[1].help.as_deref(), Some("did you mean `content`?"));
+    assert_eq!(
+        report.diagnostics[0].help.as_deref(),
+        Some("did you mean `meta`?")
+    );
+    assert_eq!(
+        report.diagnostics[1].help.as_deref(),
+        Some("did you mean `content`?")
+    );
     let json = r#"{"X3D": {"@version": "4.0", "@profile": "Full", "head": {
 "metta": [{}], "meta": [{"@name": "a", "@contnet": "b"}]}, "Scene": {}}}"#;
     assert_eq!(
@@ -606,7 +623,10 @@ fn head_content_and_statement_attributes_are_checked() {
     );
     let report = check(json);
     assert_eq!(limits_of(&report).len(), 1, "{:?}", limits_of(&report));
-    let unknown = codes(&report).iter().filter(|&&c| c == "FIELD_UNKNOWN").count();
+    let unknown = codes(&report)
+        .iter()
+        .filter(|&&c| c == "FIELD_UNKNOWN")
+        .count();
     assert_eq!(unknown, MAX_FIELDS_PER_NODE);
 }
 
@@ -624,7 +644,10 @@ fn elevation_grid_heights_must_fill_the_grid() {
     assert!(report.diagnostics[0]
         .message
         .contains("2147483647 × 2147483647 = 4611686014132420609"));
-    assert_eq!(codes(&check(grid("2", "3", "0 0 0 0 0 0 0"))), ["HEIGHT_COUNT_MISMATCH"]);
+    assert_eq!(
+        codes(&check(grid("2", "3", "0 0 0 0 0 0 0"))),
+        ["HEIGHT_COUNT_MISMATCH"]
+    );
     assert!(check(grid("2", "3", "0 0 0 0 0 0")).diagnostics.is_empty());
 }
 

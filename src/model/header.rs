@@ -36,7 +36,14 @@ pub fn statement_attributes(statement: &str) -> Option<&'static [&'static str]> 
     Some(match statement {
         "head" => &["class", "id", "style"],
         "component" => &["name", "level", "class", "id", "style"],
-        "unit" => &["category", "name", "conversionFactor", "class", "id", "style"],
+        "unit" => &[
+            "category",
+            "name",
+            "conversionFactor",
+            "class",
+            "id",
+            "style",
+        ],
         "meta" => &[
             "name",
             "content",

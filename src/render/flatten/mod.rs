@@ -28,8 +28,8 @@ const MAX_INLINE_DEPTH: usize = 8;
 /// Grouping nodes nested deeper than this are not walked (the checker reports nesting).
 const MAX_DEPTH: usize = 256;
 use crate::limits::{
-    MAX_RENDER_NODE_INSTANCES as MAX_NODE_INSTANCES, MAX_RENDER_PRIMITIVES, MAX_RENDER_SHAPES,
-    MIN_RENDER_PRIMITIVES, RENDER_PRIMITIVES_PER_PIXEL,
+    MAX_RENDER_NODE_INSTANCES as MAX_NODE_INSTANCES, MAX_RENDER_PRIMITIVES, MIN_RENDER_PRIMITIVES,
+    RENDER_PRIMITIVES_PER_PIXEL,
 };
 
 /// Triangles (lines, points) drawn at most for an image of this size (the bounds of
