@@ -198,9 +198,13 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
     let mut text = String::new();
     for (outcome, config) in outcomes.into_iter().zip(&configs) {
         match outcome {
-            Ok((report, rendered)) => {
-                text.push_str(&rendered);
-                reports.push(report);
+            Ok(checked) => {
+                if let Some(message) = checked.render_failure {
+                    eprintln!("x3dcheck: {message}");
+                    failed = true;
+                }
+                text.push_str(&checked.text);
+                reports.push(checked.report);
                 fail_levels.push(config.fail_on);
             }
             Err(message) => {
@@ -457,7 +461,14 @@ fn too_large() -> io::Error {
 }
 
 /// A checked file with its rendered text, or why it could not be checked.
-type Outcome = Result<(FileReport, String), String>;
+type Outcome = Result<Checked, String>;
+
+struct Checked {
+    report: FileReport,
+    text: String,
+    /// Why `--render` made no image (the report is written all the same).
+    render_failure: Option<String>,
+}
 
 /// `format` is the format rendered per file (`None`: nothing, `--statistics`).
 fn check_input(
@@ -490,8 +501,9 @@ fn check_input(
     };
     std::panic::catch_unwind(move || {
         let (mut report, doc) = x3dcheck::check::check_document(&name, &bytes, &config);
+        // A file that cannot be drawn keeps its report: the findings say why.
         let preview =
-            x3dcheck::render::prepare(render, Path::new(&name), &bytes, doc.as_ref(), &mut report)?;
+            x3dcheck::render::prepare(render, Path::new(&name), &bytes, doc.as_ref(), &mut report);
         drop(doc);
         let text = match format {
             Some(Format::Human) => human::render(&report, &bytes, color),
@@ -501,10 +513,16 @@ fn check_input(
         };
         // The preview no longer needs the document or its source.
         drop(bytes);
-        if let Some(preview) = preview {
-            preview.save()?;
-        }
-        Ok((report, text))
+        let render_failure = match preview {
+            Ok(Some(preview)) => preview.save().err(),
+            Ok(None) => None,
+            Err(message) => Some(message),
+        };
+        Ok(Checked {
+            report,
+            text,
+            render_failure,
+        })
     })
     .map_err(|_| failure)?
 }

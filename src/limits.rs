@@ -57,3 +57,30 @@ pub const MAX_IMAGE_SIDE: u32 = 16_384;
 
 /// Bytes one decoded image may take (the decoder's own allocation limit).
 pub const MAX_IMAGE_BYTES: u64 = 1 << 30;
+
+/// Corners of one polygon (IndexedFaceSet face, Extrusion cap) the renderer triangulates.
+/// Ear clipping (the `earcut` crate) is fast on real faces, but on an adversarial one
+/// (a star of thin spikes) its cost grows with the square of the corners: 10,000 take
+/// 0.2 s, 50,000 5 s, 200,000 100 s. A larger face is not drawn and reported.
+pub const MAX_FACE_CORNERS: usize = 8192;
+
+/// The renderer's budgets (`--render`): past one, the walk of the scene stops or the part
+/// is left out, reported as LIMIT_EXCEEDED, and the image shows what was drawn so far.
+/// Together they keep a render within seconds and within memory proportional to what it
+/// draws, however far DEF/USE expands the scene.
+///
+/// Node instances the renderer walks: DEF/USE can make a small file stand for 2^199.
+pub const MAX_RENDER_NODE_INSTANCES: u64 = 1_000_000;
+
+/// Shape instances drawn: each is a mesh of its own (placed relative to the eye in f64)
+/// and a draw call, so a small file of nested USEs of one Box could ask for a million.
+pub const MAX_RENDER_SHAPES: usize = 65_536;
+
+/// Triangles, lines and points drawn per pixel of the image, between the two bounds
+/// below (each costs about 150 bytes until the frame is drawn).
+pub const RENDER_PRIMITIVES_PER_PIXEL: u64 = 16;
+pub const MIN_RENDER_PRIMITIVES: u64 = 4_000_000;
+pub const MAX_RENDER_PRIMITIVES: u64 = 16_000_000;
+
+/// Texture bytes (RGBA8, with mipmaps) the renderer loads, over all textures.
+pub const MAX_RENDER_TEXTURE_BYTES: usize = 512 << 20;

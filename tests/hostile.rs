@@ -509,3 +509,171 @@ fn input_files_are_never_written() {
     }
     assert_eq!(snapshot(&inputs), before);
 }
+
+/// The codes and lines of a report's findings.
+fn found(report: &FileReport) -> Vec<(&'static str, usize)> {
+    report
+        .diagnostics
+        .iter()
+        .map(|d| (d.code, d.line))
+        .collect()
+}
+
+#[test]
+fn characters_outside_xml_are_malformed_wherever_they_are() {
+    for (place, text) in [
+        ("character data", "<Script><![CDATA[a\u{0}b]]></Script>"),
+        ("a comment", "<!-- a\u{0}b -->"),
+        ("an element name", "<Gro\u{0}up/>"),
+        ("an attribute value", "<WorldInfo title='a\u{1}b'/>"),
+        ("a noncharacter", "<WorldInfo title='a\u{FFFE}b'/>"),
+    ] {
+        let report = check(scene(text));
+        assert_eq!(codes(&report), ["XML_MALFORMED"], "{place}: {report:?}");
+        assert_eq!(report.diagnostics[0].line, 2, "{place}");
+        assert!(report.diagnostics[0].message.contains("XML 1.0 2.2 Char"));
+    }
+    // Tabs, line feeds and carriage returns are characters.
+    assert!(check(scene("<WorldInfo title='a\tb\r\nc'/>"))
+        .diagnostics
+        .is_empty());
+}
+
+#[test]
+fn an_entity_holding_a_less_than_sign_is_refused_in_attribute_values() {
+    for entity in ["a<b", "&#60;", "&#x3C;", "&inner;"] {
+        let source = format!(
+            "<!DOCTYPE X3D [<!ENTITY inner 'x<y'><!ENTITY e '{entity}'>]>\n{}",
+            scene("<WorldInfo title='&e;'/>")
+        );
+        let report = check(source);
+        assert_eq!(codes(&report), ["XML_MALFORMED"], "{entity}: {report:?}");
+        assert!(report.diagnostics[0]
+            .message
+            .contains("No < in Attribute Values"));
+    }
+    // `&#38;#60;` stands for the text `&#60;`: a character reference, which is fine.
+    let source = format!(
+        "<!DOCTYPE X3D [<!ENTITY e '&#38;#60;'>]>\n{}",
+        scene("<WorldInfo title='&e;'/>")
+    );
+    assert!(check(source).diagnostics.is_empty());
+}
+
+#[test]
+fn a_repeated_top_level_x3d_is_reported() {
+    let json = r#"{"X3D": {"@version": "4.0", "@profile": "Full", "Scene": {}},
+"X3D": {"@version": "4.0", "@profile": "Full", "Scene": {}}}"#;
+    assert_eq!(found(&check(json)), [("FIELD_DUPLICATE", 2)]);
+}
+
+#[test]
+fn content_beside_head_and_scene_is_reported() {
+    let xml = "<X3D profile='Full' version='4.0'>\n<Transform><Shape><Box/></Shape></Transform>\n\
+               <Bogus/><head/><Scene/>\n<ds:Signature xmlns:ds='http://www.w3.org/2000/09/xmldsig#'/></X3D>";
+    let report = check(xml);
+    assert_eq!(
+        found(&report),
+        [("ROOT_CONTENT_IGNORED", 2), ("ROOT_CONTENT_IGNORED", 3)]
+    );
+    assert_eq!(
+        report.diagnostics[0].help.as_deref(),
+        Some("nodes belong in the Scene")
+    );
+    let json = r##"{"X3D": {"@version": "4.0", "@profile": "Full", "encoding": "UTF-8",
+"-children": [{"#comment": "fine"}, {"Transform": {}}],
+"Scene": {}, "Bogus": 1}}"##;
+    assert_eq!(
+        found(&check(json)),
+        [("ROOT_CONTENT_IGNORED", 2), ("ROOT_CONTENT_IGNORED", 3)]
+    );
+}
+
+#[test]
+fn head_content_and_statement_attributes_are_checked() {
+    let xml = "<X3D profile='Full' version='4.0'><head>\n<metta name='a' content='b'/>\n\
+               <meta name='a' contnet='b' xmlns:x='urn:x'/>\n<unit category='length' name='m' conversionFactor='1' id='u'/>\n\
+               </head><Scene/></X3D>";
+    let report = check(xml);
+    assert_eq!(
+        found(&report),
+        [("ROOT_CONTENT_IGNORED", 2), ("FIELD_UNKNOWN", 3)]
+    );
+    assert_eq!(
+        report.diagnostics[0].help.as_deref(),
+        Some("did you mean `meta`?")
+    );
+    assert_eq!(
+        report.diagnostics[1].help.as_deref(),
+        Some("did you mean `content`?")
+    );
+    let json = r#"{"X3D": {"@version": "4.0", "@profile": "Full", "head": {
+"metta": [{}], "meta": [{"@name": "a", "@contnet": "b"}]}, "Scene": {}}}"#;
+    assert_eq!(
+        found(&check(json)),
+        [("ROOT_CONTENT_IGNORED", 2), ("FIELD_UNKNOWN", 2)]
+    );
+    // As many attributes as a node may have, then LIMIT_EXCEEDED, in both encodings.
+    let members: Vec<String> = (0..MAX_FIELDS_PER_NODE + 10)
+        .map(|i| format!(r#""@a{i}": "x""#))
+        .collect();
+    let json = format!(
+        r#"{{"X3D": {{"@version": "4.0", "@profile": "Full", "head": {{"meta": [{{{}}}]}}, "Scene": {{}}}}}}"#,
+        members.join(", ")
+    );
+    let report = check(json);
+    assert_eq!(limits_of(&report).len(), 1, "{:?}", limits_of(&report));
+    let unknown = codes(&report)
+        .iter()
+        .filter(|&&c| c == "FIELD_UNKNOWN")
+        .count();
+    assert_eq!(unknown, MAX_FIELDS_PER_NODE);
+}
+
+#[test]
+fn elevation_grid_heights_must_fill_the_grid() {
+    let grid = |x: &str, z: &str, heights: &str| {
+        scene(&format!(
+            "<Shape><ElevationGrid xDimension='{x}' zDimension='{z}' height='{heights}'/></Shape>"
+        ))
+    };
+    let report = check(grid("3", "3", "1"));
+    assert_eq!(codes(&report), ["HEIGHT_COUNT_MISMATCH"], "{report:?}");
+    let report = check(grid("2147483647", "2147483647", "1"));
+    assert_eq!(codes(&report), ["HEIGHT_COUNT_MISMATCH"]);
+    assert!(report.diagnostics[0]
+        .message
+        .contains("2147483647 × 2147483647 = 4611686014132420609"));
+    assert_eq!(
+        codes(&check(grid("2", "3", "0 0 0 0 0 0 0"))),
+        ["HEIGHT_COUNT_MISMATCH"]
+    );
+    assert!(check(grid("2", "3", "0 0 0 0 0 0")).diagnostics.is_empty());
+}
+
+#[test]
+fn render_keeps_the_findings_of_a_file_it_cannot_draw() {
+    let dir = scratch(
+        "render-unreadable",
+        &[
+            ("broken.x3d", "<X3D><Scene><Shape></Scene></X3D>"),
+            ("broken.x3dj", "{\"X3D\": {"),
+            ("vrml.x3d", "#VRML V2.0 utf8\n"),
+        ],
+    );
+    for (file, code) in [
+        ("broken.x3d", "XML_MALFORMED"),
+        ("broken.x3dj", "JSON_MALFORMED"),
+        ("vrml.x3d", "ENCODING_UNSUPPORTED"),
+    ] {
+        let output = x3dcheck(&dir, &[file, "--render", "out.png", "--format", "json"]);
+        let report: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+        let files = report["files"].as_array().unwrap();
+        assert_eq!(files.len(), 1, "{file}: {report}");
+        assert_eq!(files[0]["diagnostics"][0]["code"], code, "{file}");
+        assert_eq!(output.status.code(), Some(2), "{file}");
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(stderr.contains("no scene to render"), "{file}: {stderr}");
+        assert!(!dir.join("out.png").exists());
+    }
+}

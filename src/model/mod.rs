@@ -7,12 +7,17 @@ pub mod bounds;
 pub mod builder;
 pub mod faces;
 mod fields;
+mod header;
 pub mod rules;
 pub mod texture_mapping;
 mod value;
 
 pub use crate::diagnostic::{NodeId, Span};
 pub use builder::Builder;
+pub use header::{
+    is_namespace_declaration, record, statement_attributes, statement_name, HeaderPart,
+    IgnoredContent, UnknownAttribute,
+};
 pub use value::{range_applies, ChildRef, Image, Sink, Summarized, Summarizer, Summary, Value};
 
 use std::collections::HashMap;
@@ -258,6 +263,8 @@ pub struct Head {
     pub components: Vec<ComponentStatement>,
     pub units: usize,
     pub metas: usize,
+    /// Attributes of head, component, unit and meta that they do not have.
+    pub unknown_attributes: Vec<UnknownAttribute>,
 }
 
 /// One parsed document.
@@ -280,6 +287,8 @@ pub struct Document {
     pub protos: Vec<ProtoDecl>,
     /// IMPORT/EXPORT statements: counted, not checked.
     pub imports_exports: Vec<Span>,
+    /// Content of the X3D root and head that X3D gives no meaning (not read further).
+    pub ignored: Vec<IgnoredContent>,
     /// DEF names per scope, each with the first node that took it.
     pub defs: HashMap<(Scope, String), NodeId>,
 }
@@ -299,6 +308,7 @@ impl Document {
             routes: Vec::new(),
             protos: Vec::new(),
             imports_exports: Vec::new(),
+            ignored: Vec::new(),
             defs: HashMap::new(),
         }
     }

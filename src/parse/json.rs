@@ -40,7 +40,8 @@ use tree::{Elements, Kind, Members, Tree, ValueRef};
 use super::rules::{FIELD_VALUE_SYNTAX, JSON_MALFORMED, ROOT_NOT_X3D, USE_WITH_FIELDS};
 use super::Parsed;
 use crate::diagnostic::Diagnostic;
-use crate::model::builder::Parent;
+use crate::limits::MAX_FIELDS_PER_NODE;
+use crate::model::builder::{Limit, Parent};
 use crate::model::rules::FIELD_DUPLICATE;
 use crate::model::*;
 use crate::parse::KeepValues;
@@ -105,10 +106,13 @@ fn malformed(at: usize, len: usize, message: &str) -> Diagnostic {
     )
 }
 
+/// The top-level value in the [`Tree`].
+const TOP: usize = 0;
+
 /// The `"X3D"` member of the top-level object: its key and value.
 #[allow(clippy::result_large_err)]
 fn root(t: &Tree) -> Result<(usize, usize), Diagnostic> {
-    let top = 0;
+    let top = TOP;
     let not_x3d = |message: String| {
         Err(Diagnostic::new(
             &ROOT_NOT_X3D,
@@ -407,6 +411,8 @@ impl<'t, 's> JsonReader<'t, 's> {
     fn x3d(&mut self, (key, x3d): (usize, usize)) {
         let t = self.t;
         self.builder.doc_mut().root_span = self.member_span(key, x3d);
+        // A second top-level `X3D` (the first is read) is lost as a repeated Scene is.
+        self.duplicate_keys(TOP, |_| true);
         self.duplicate_keys(x3d, |_| true);
         // Version and profile first: node and field lookup depend on the version.
         for (key, value) in t.members(x3d) {
@@ -446,6 +452,7 @@ impl<'t, 's> JsonReader<'t, 's> {
                 self.head(value);
             }
         }
+        self.header_content(x3d, HeaderPart::Root);
         // The Scene last, on the stack; a repeated Scene is reported and read too.
         let scenes: Vec<(usize, usize)> = t
             .members(x3d)
@@ -471,15 +478,103 @@ impl<'t, 's> JsonReader<'t, 's> {
         }
     }
 
+    /// Records the members of the X3D object or of head (`part`) that X3D gives no
+    /// meaning there: besides `@` attributes (the head's own are checked), comments and
+    /// a `-children` array of comments (the JSON schema's `-childStatements`), X3D holds
+    /// `encoding`, `JSON schema`, head and Scene; head holds component, unit and meta.
+    fn header_content(&mut self, object: usize, part: HeaderPart) {
+        let t = self.t;
+        if part == HeaderPart::Head {
+            self.statement_attributes("head", object);
+        }
+        for (key, value) in t.members(object) {
+            let name = t.str(key);
+            let known = match part {
+                HeaderPart::Root => &["encoding", "JSON schema", "head", "Scene"][..],
+                HeaderPart::Head => &["component", "unit", "meta"][..],
+            };
+            if name.starts_with('@') || name.starts_with("#comment") || known.contains(&&*name) {
+                continue;
+            }
+            if name == "-children" && t.kind(value) == Kind::Array {
+                let statements = t.elements(value).filter_map(|e| t.object(e));
+                for statement in statements {
+                    for (key, _) in t.members(statement) {
+                        if !t.str(key).starts_with("#comment") {
+                            self.ignore(key, part);
+                        }
+                    }
+                }
+                continue;
+            }
+            self.ignore(key, part);
+        }
+    }
+
+    fn ignore(&mut self, key: usize, part: HeaderPart) {
+        let name = Named {
+            text: self.t.str(key).into_owned(),
+            span: span(self.t.span(key)),
+        };
+        record(
+            &mut self.builder.doc_mut().ignored,
+            IgnoredContent { name, part },
+        );
+    }
+
+    /// Records the `@` members that head statement `statement` (its object) does not
+    /// have, and the other members of component, unit and meta but comments and
+    /// `-children`; past
+    /// [`MAX_FIELDS_PER_NODE`] members the rest are not read.
+    fn statement_attributes(&mut self, statement: &'static str, object: usize) {
+        let t = self.t;
+        let known = statement_attributes(statement).unwrap_or(&[]);
+        for (count, (key, _)) in t.members(object).enumerate() {
+            if count == MAX_FIELDS_PER_NODE {
+                let message = format!(
+                    "an object with more than {MAX_FIELDS_PER_NODE} members; the rest are not read"
+                );
+                self.builder
+                    .exceeded(Limit::FieldsPerNode, span(t.span(key)), message);
+                break;
+            }
+            let written = t.str(key);
+            let attribute = written.strip_prefix('@');
+            // head's other members are its content (`header_content`).
+            let fine = match attribute {
+                Some(name) => known.contains(&name),
+                None => {
+                    statement == "head" || written.starts_with("#comment") || written == "-children"
+                }
+            };
+            if !fine {
+                let name = Named {
+                    text: attribute.unwrap_or(&written).to_string(),
+                    span: span(t.span(key)),
+                };
+                record(
+                    &mut self.builder.doc_mut().head.unknown_attributes,
+                    UnknownAttribute { statement, name },
+                );
+            }
+        }
+    }
+
     fn head(&mut self, head: usize) {
         let t = self.t;
         self.duplicate_keys(head, |_| true);
+        self.header_content(head, HeaderPart::Head);
         for (key, value) in t.members(head) {
             let objects: Vec<usize> = match t.kind(value) {
                 Kind::Array => t.elements(value).filter_map(|e| t.object(e)).collect(),
                 Kind::Object => vec![value],
                 _ => Vec::new(),
             };
+            if let Some(statement) = statement_name(&t.str(key)).filter(|&s| s != "head") {
+                for &object in &objects {
+                    self.statement_attributes(statement, object);
+                }
+            }
             match t.str(key).as_ref() {
                 "component" => {
                     for object in objects {

@@ -52,6 +52,41 @@ pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
     }
 }
 
+/// The offset of the first character that XML 1.0's Char production (2.2) leaves out: a
+/// C0 control other than tab, line feed and carriage return (NUL among them), or U+FFFE,
+/// U+FFFF. The input is UTF-8, whose encoding of surrogates quick-xml refuses, so these
+/// are the characters left to find. Chunks are tested with no early exit, so that the
+/// compiler vectorizes the scan of large files.
+fn first_forbidden_char(source: &[u8]) -> Option<usize> {
+    const CHUNK: usize = 64;
+    let suspect = |b: u8| (b < 0x20 && !matches!(b, b'\t' | b'\n' | b'\r')) || b == 0xEF;
+    let forbidden_at = |at: usize| match source[at] {
+        0xEF => matches!(source.get(at + 1..at + 3), Some([0xBF, 0xBE | 0xBF])),
+        _ => true,
+    };
+    source
+        .chunks(CHUNK)
+        .enumerate()
+        .filter(|(_, chunk)| chunk.iter().fold(false, |any, &b| any | suspect(b)))
+        .flat_map(|(k, chunk)| {
+            let base = k * CHUNK;
+            (0..chunk.len())
+                .filter(move |&i| suspect(chunk[i]))
+                .map(move |i| base + i)
+        })
+        .find(|&at| forbidden_at(at))
+}
+
+/// Names the character at the start of `bytes` (one [`first_forbidden_char`] found).
+fn forbidden_message(bytes: &[u8]) -> String {
+    let code = match bytes {
+        [0xEF, 0xBF, last, ..] => 0xFF00 | u32::from(*last),
+        [b, ..] => u32::from(*b),
+        [] => 0,
+    };
+    format!("character U+{code:04X} is not allowed in an XML document (XML 1.0 2.2 Char)")
+}
+
 /// What an open element is, so that its children and end tag are handled right.
 enum Frame {
     Root,
@@ -126,16 +161,25 @@ impl<'s> XmlReader<'s> {
         }
         let mut reader = Reader::from_reader(self.source);
         reader.config_mut().check_end_names = true;
+        // quick-xml does not check XML's Char production: the first character outside it
+        // is an error once the reader reaches it (an earlier error is reported first).
+        let forbidden = first_forbidden_char(self.source);
         loop {
             let start = reader.buffer_position() as usize;
             let event = match reader.read_event() {
                 Ok(event) => event,
                 Err(error) => {
                     let at = reader.error_position() as usize;
-                    return Err(self.malformed(at, &error.to_string()));
+                    return Err(match forbidden {
+                        Some(bad) if bad <= at => self.forbidden_char(bad),
+                        _ => self.malformed(at, &error.to_string()),
+                    });
                 }
             };
             let end = reader.buffer_position() as usize;
+            if let Some(bad) = forbidden.filter(|&bad| bad < end) {
+                return Err(self.forbidden_char(bad));
+            }
             match event {
                 Event::Start(element) => self.start(&element, start, end, false)?,
                 Event::Empty(element) => {
@@ -169,6 +213,10 @@ impl<'s> XmlReader<'s> {
             Span::new(at, at),
             format!("not well-formed XML: {message}"),
         ))
+    }
+
+    fn forbidden_char(&self, at: usize) -> Box<Diagnostic> {
+        self.malformed(at, &forbidden_message(&self.source[at..]))
     }
 
     fn span_of(&self, bytes: &[u8]) -> Option<Span> {
@@ -333,23 +381,35 @@ impl<'s> XmlReader<'s> {
         let element = Span::new(start, end);
         let hint = context.parent_hint();
         match (context, name) {
-            (Context::Root, "head") => Frame::Head,
+            (Context::Root, "head") => {
+                self.statement_attributes("head", attrs);
+                Frame::Head
+            }
             (Context::Root, "Scene") => {
                 self.builder.doc_mut().scene_span = Some(element);
                 Frame::Scene
             }
+            // An XML Signature (x3d-4.0.xsd allows `ds:Signature` after the Scene).
+            (Context::Root, _) if name == "Signature" || name.ends_with(":Signature") => {
+                Frame::Other
+            }
+            (Context::Root, _) => self.ignored(name, name_span, HeaderPart::Root),
             (Context::Head, "component") => {
+                self.statement_attributes("component", attrs);
                 self.component(attrs, element);
                 Frame::Other
             }
             (Context::Head, "unit") => {
+                self.statement_attributes("unit", attrs);
                 self.builder.doc_mut().head.units += 1;
                 Frame::Other
             }
             (Context::Head, "meta") => {
+                self.statement_attributes("meta", attrs);
                 self.builder.doc_mut().head.metas += 1;
                 Frame::Other
             }
+            (Context::Head, _) => self.ignored(name, name_span, HeaderPart::Head),
             (Context::Nodes(_), "ROUTE") => {
                 self.route(attrs, element);
                 Frame::Other
@@ -417,6 +477,37 @@ impl<'s> XmlReader<'s> {
                 Frame::Other
             }
             _ => Frame::Other,
+        }
+    }
+
+    /// An element X3D gives no meaning where it stands: recorded, its content skipped.
+    fn ignored(&mut self, name: &str, span: Span, part: HeaderPart) -> Frame {
+        let name = Named {
+            text: name.to_string(),
+            span,
+        };
+        record(
+            &mut self.builder.doc_mut().ignored,
+            IgnoredContent { name, part },
+        );
+        Frame::Other
+    }
+
+    /// Records the attributes that a head statement (`statement`) does not have.
+    fn statement_attributes(&mut self, statement: &'static str, attrs: &[Attr]) {
+        let known = statement_attributes(statement).unwrap_or(&[]);
+        let unknown = attrs
+            .iter()
+            .filter(|a| !known.contains(&a.name) && !is_namespace_declaration(a.name));
+        for attr in unknown {
+            let name = Named {
+                text: attr.name.to_string(),
+                span: attr.name_span,
+            };
+            record(
+                &mut self.builder.doc_mut().head.unknown_attributes,
+                UnknownAttribute { statement, name },
+            );
         }
     }
 

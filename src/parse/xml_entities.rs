@@ -64,11 +64,16 @@ impl Entities {
     /// 3.3.3), within the document's budget.
     pub fn expand<'a>(&self, attribute: &Attribute<'a>) -> Result<Cow<'a, str>, ExpandError> {
         let over_budget = Cell::new(false);
+        let holds_lt = Cell::new(false);
         let resolve = |name: &str| {
             if let Some(text) = resolve_predefined_entity(name) {
                 return Some(text);
             }
             let text = self.declared.get(name)?;
+            if stands_for_lt(text) {
+                holds_lt.set(true);
+                return None;
+            }
             match self.budget.get().checked_sub(text.len()) {
                 Some(left) => {
                     self.budget.set(left);
@@ -91,6 +96,16 @@ impl Entities {
                     "entity references nested more than {MAX_ENTITY_NESTING} deep (or a recursive entity); the value is not read"
                 ))
             }
+            quick_xml::Error::Escape(EscapeError::UnrecognizedEntity(range, name))
+                if holds_lt.get() =>
+            {
+                ExpandError::Malformed {
+                    at: range.start.saturating_sub(1),
+                    message: format!(
+                        "entity `&{name};` stands for text holding `<`, which an attribute value must not contain (XML 1.0 3.1, WFC: No < in Attribute Values)"
+                    ),
+                }
+            }
             quick_xml::Error::Escape(EscapeError::UnrecognizedEntity(range, name)) => {
                 ExpandError::Malformed {
                     at: range.start.saturating_sub(1),
@@ -103,6 +118,21 @@ impl Entities {
             },
         })
     }
+}
+
+/// Whether an entity's text puts a `<` into the value: literally, or as a character
+/// reference, which XML replaces when it reads the declaration (4.5), so that the
+/// replacement text holds `<` (`&#38;#60;` stands for the text `&#60;`, which is fine).
+fn stands_for_lt(text: &str) -> bool {
+    text.contains('<')
+        || text.split("&#").skip(1).any(|reference| {
+            let digits = reference.split(';').next().unwrap_or("");
+            let code = match digits.strip_prefix('x') {
+                Some(hex) => u32::from_str_radix(hex, 16),
+                None => digits.parse::<u32>(),
+            };
+            code == Ok(0x3C)
+        })
 }
 
 /// `(name, replacement text)` of each internal general entity declared in an internal

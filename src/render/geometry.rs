@@ -28,6 +28,8 @@ pub struct LocalMesh {
     /// set is empty (it is computed when the mesh is placed).
     pub tex_coords: Vec<Vec<[f32; 2]>>,
     pub indices: Vec<u32>,
+    /// Faces left out for having more than [`crate::limits::MAX_FACE_CORNERS`] corners.
+    pub faces_over_limit: usize,
 }
 
 #[derive(Clone, Debug, Default)]
@@ -132,6 +134,29 @@ pub fn build(doc: &Document, geometry: NodeId, needs: &Needs) -> Built {
             ),
         },
         other => Built::NotDrawn(format!("{other} is not drawn")),
+    }
+}
+
+/// At most how many triangles, lines or points [`build`] makes of `geometry`, from the
+/// sizes of its fields alone, before anything is built: the renderer's budget is checked
+/// against it, so a geometry past the budget costs no memory. The primitives and the
+/// Geometry2D nodes make a few thousand at most (0 here; they are counted once built),
+/// and Extrusion has its own cap.
+pub fn primitive_bound(doc: &Document, geometry: NodeId) -> usize {
+    let len = |node: NodeId, field: &str| doc.value_of(node, field).map_or(0, |v| v.len());
+    let points = || child(doc, geometry, "coord").map_or(0, |c| len(c, "point") / 3);
+    match doc.node(geometry).type_name() {
+        // A face of n corners makes n − 2 triangles; a strip or fan of n indices n − 2.
+        "IndexedFaceSet" | "IndexedLineSet" => len(geometry, "coordIndex"),
+        "IndexedTriangleSet"
+        | "IndexedTriangleFanSet"
+        | "IndexedTriangleStripSet"
+        | "IndexedQuadSet" => len(geometry, "index"),
+        "TriangleSet" | "TriangleFanSet" | "TriangleStripSet" | "QuadSet" | "LineSet"
+        | "PointSet" => points(),
+        // Two triangles per grid cell, and fewer cells than heights.
+        "ElevationGrid" => len(geometry, "height").saturating_mul(2),
+        _ => 0,
     }
 }
 

@@ -5,7 +5,8 @@
 //! the rule that picks its texture coordinates (12.2.4, or the MultiTexture stage order of
 //! 18.4.4 and 18.4.5), resolved per Shape in `shape.rs`.
 
-use super::{Context, Walker, MAX_TEXTURE_BYTES};
+use super::{Context, Walker};
+use crate::limits::MAX_RENDER_TEXTURE_BYTES as MAX_TEXTURE_BYTES;
 use crate::model::NodeId;
 use crate::render::draw_list::{
     LightingModel, Material, StageFunction, StageMode, StageSource, Stroke, MAX_STAGES,

@@ -27,16 +27,16 @@ use place::Pending;
 const MAX_INLINE_DEPTH: usize = 8;
 /// Grouping nodes nested deeper than this are not walked (the checker reports nesting).
 const MAX_DEPTH: usize = 256;
-/// Node instances walked at most (so at most as many shape instances): DEF/USE can make a
-/// small file stand for 2^199 of them.
-const MAX_NODE_INSTANCES: u64 = 1_000_000;
-/// Texture bytes (RGBA8, with mipmaps) loaded at most, over all textures.
-const MAX_TEXTURE_BYTES: usize = 512 << 20;
+use crate::limits::{
+    MAX_RENDER_NODE_INSTANCES as MAX_NODE_INSTANCES, MAX_RENDER_PRIMITIVES, MIN_RENDER_PRIMITIVES,
+    RENDER_PRIMITIVES_PER_PIXEL,
+};
 
-/// Triangles (lines, points) drawn at most for an image of this size: 16 per pixel, at
-/// least 4 million and at most 16 million, so that memory stays bounded (~150 bytes each).
+/// Triangles (lines, points) drawn at most for an image of this size (the bounds of
+/// [`crate::limits`]), so that memory stays bounded.
 pub fn primitive_budget(width: u32, height: u32) -> usize {
-    (u64::from(width) * u64::from(height) * 16).clamp(4_000_000, 16_000_000) as usize
+    (u64::from(width) * u64::from(height) * RENDER_PRIMITIVES_PER_PIXEL)
+        .clamp(MIN_RENDER_PRIMITIVES, MAX_RENDER_PRIMITIVES) as usize
 }
 
 /// Something in the scene that is not drawn, or drawn approximately.
@@ -185,7 +185,8 @@ impl Walker<'_> {
         ]))
     }
 
-    /// Stops the walk at a cap, saying how far the scene expands and what was drawn.
+    /// Stops the walk at a cap (LIMIT_EXCEEDED), saying how far the scene expands and
+    /// what was drawn.
     fn stop(&mut self, context: Context, drawn: String) {
         self.spent.stopped = true;
         let expands = match context.doc.instances() {
@@ -197,7 +198,7 @@ impl Walker<'_> {
             message: format!(
                 "renderer: the scene expands to {expands} node instances; drawn up to {drawn}"
             ),
-            limit: false,
+            limit: true,
         });
     }
 

@@ -7,6 +7,7 @@ use glam::DMat4;
 use super::appearance::{unlit_from, Role, Rule};
 use super::place::{Channel, Pending, TextureTransform};
 use super::{Context, Scope, Walker};
+use crate::limits::{MAX_FACE_CORNERS, MAX_RENDER_SHAPES};
 use crate::model::bounds::{geometry_bounds, Affine};
 use crate::model::texture_mapping::{texture_coordinates, texture_transforms, MappingList};
 use crate::model::NodeId;
@@ -76,6 +77,17 @@ impl Walker<'_> {
             normals: any_lit || generators_need_normals,
             tex_coords: sources,
         };
+        if self.shapes.len() >= MAX_RENDER_SHAPES {
+            self.stop(context, format!("{MAX_RENDER_SHAPES} shape instances"));
+            return;
+        }
+        // Checked before building too, so that a geometry past the budget costs nothing.
+        let budget = self.options.primitive_budget;
+        let bound = geometry::primitive_bound(doc, geometry);
+        if self.spent.primitives.saturating_add(bound) > budget {
+            self.stop(context, format!("{budget} triangles, lines and points"));
+            return;
+        }
         let (mut mesh, shading) = match geometry::build(doc, geometry, &needs) {
             Built::Mesh(mesh, shading) => (mesh, shading),
             Built::NotDrawn(reason) => {
@@ -83,6 +95,13 @@ impl Walker<'_> {
                 return;
             }
         };
+        if mesh.faces_over_limit > 0 {
+            let message = format!(
+                "{} faces of more than {MAX_FACE_CORNERS} corners are not drawn",
+                mesh.faces_over_limit
+            );
+            self.push_note(context, geometry, message, true);
+        }
         let mut front = look.front;
         let mut back = look.back;
         if shading.unlit {
@@ -165,8 +184,7 @@ impl Walker<'_> {
         };
         let mesh_primitive = mesh.primitive;
         let primitives = mesh.indices.len() / mesh.primitive.arity();
-        if self.spent.primitives + primitives > self.options.primitive_budget {
-            let budget = self.options.primitive_budget;
+        if self.spent.primitives + primitives > budget {
             self.stop(context, format!("{budget} triangles, lines and points"));
             return;
         }

@@ -1,6 +1,6 @@
 //! FIELD_UNKNOWN: a field no version of the node's type has.
 
-use crate::model::{FieldRef, NodeKind, Origin};
+use crate::model::{statement_attributes, FieldRef, NodeKind, Origin};
 use crate::report::Diagnostic;
 use crate::validate::{suggest, Ctx};
 
@@ -11,8 +11,15 @@ crate::declare_rule! {
     /// `diffuseColor`). Fields of unknown node types are not reported again, and node
     /// children placed by `containerField` are CONTAINER_FIELD_INVALID's business.
     ///
+    /// The statements of the header are checked the same way: an attribute that `head`,
+    /// `component`, `unit` or `meta` does not have (x3d-4.0.xsd and the JSON schema:
+    /// component `name` `level`; unit `category` `name` `conversionFactor`; meta `name`
+    /// `content` `dir` `http-equiv` `lang` `scheme`; and `class` `id` `style` on each,
+    /// which X3D 4 gives every statement; XML namespace declarations are not attributes).
+    ///
     /// ## Why it matters
-    /// Browsers ignore unknown fields, so a misspelt field silently keeps its default.
+    /// Browsers ignore unknown fields, so a misspelt field silently keeps its default
+    /// (and a misspelt `meta` attribute loses its metadata).
     ///
     /// ## Example
     /// ```xml
@@ -21,6 +28,7 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 4.4.2 (field semantics) and the node's interface table.
+    /// 19776-1 4.2.3 (the header statements).
     pub static FIELD_UNKNOWN = {
         severity: Error,
         level: Fast,
@@ -31,6 +39,22 @@ crate::declare_rule! {
 }
 
 fn check(ctx: &mut Ctx) {
+    for unknown in &ctx.doc.head.unknown_attributes {
+        if ctx.is_full() {
+            return;
+        }
+        let (statement, name) = (unknown.statement, &unknown.name.text);
+        let names = statement_attributes(statement).unwrap_or(&[]);
+        ctx.report(
+            Diagnostic::new(
+                &FIELD_UNKNOWN,
+                unknown.name.span,
+                format!("the {statement} statement has no attribute `{name}`"),
+            )
+            .value(name.clone())
+            .help_opt(suggest::help(name, names.iter().copied())),
+        );
+    }
     for (id, node) in ctx.doc.iter() {
         let NodeKind::Known { def, .. } = node.kind else {
             continue;

@@ -18,6 +18,7 @@ pub mod node_type_not_allowed;
 pub mod node_unknown;
 pub mod profile_missing;
 pub mod profile_unknown;
+pub mod root_content_ignored;
 pub mod sfnode_multiple;
 pub mod validation_incomplete;
 pub mod x3d_version_missing;
@@ -57,6 +58,7 @@ pub static RULES: &[&Check] = &[
     &field_deprecated::CHECK,
     &component_level_insufficient::CHECK,
     &validation_incomplete::CHECK,
+    &root_content_ignored::CHECK,
 ];
 
 /// The index of the first element that fails a test and how many fail, for rules that

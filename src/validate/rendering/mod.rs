@@ -13,6 +13,7 @@ pub mod count_leaves_coords;
 pub mod degenerate_triangle;
 pub mod face_not_convex;
 pub mod index_count_mismatch;
+pub mod height_count_mismatch;
 pub mod index_negative;
 pub mod index_out_of_range;
 pub mod normal_not_unit;
@@ -40,4 +41,5 @@ pub static RULES: &[&Check] = &[
     &degenerate_triangle::CHECK,
     &index_count_mismatch::CHECK,
     &face_not_convex::CHECK,
+    &height_count_mismatch::CHECK,
 ];
