@@ -2,10 +2,11 @@
 //! refuses any entry that no longer matches what the UOM says, so that an entry whose node
 //! or field was renamed or dropped fails the build instead of silently doing nothing.
 
-use crate::overrides::{Change, ComponentOverride, FieldOverride, NewField, NodeOverride};
+use crate::overrides::{Change, ComponentOverride, NewField, NodeOverride};
 use crate::overrides::{COMPONENT_OVERRIDES, FIELD_OVERRIDES, NODE_OVERRIDES};
-use crate::types::ComponentLevel;
+use crate::types::{ComponentLevel, Version};
 use crate::uom::{self, Component, Field, Schema};
+use crate::vrml97;
 
 /// What applying the overrides did, over all versions, for the stderr summary.
 #[derive(Default)]
@@ -23,7 +24,15 @@ pub fn apply(schema: &mut Schema, applied: &mut Applied) -> Result<(), String> {
         .iter()
         .filter(|o| o.versions.contains(&version))
     {
-        apply_field(schema, entry, applied).map_err(|e| {
+        apply_field(
+            schema,
+            entry.node,
+            entry.field,
+            &entry.change,
+            entry.clause,
+            applied,
+        )
+        .map_err(|e| {
             format!(
                 "src/schema/overrides.rs: {version} {}.{} ({}): {e}",
                 entry.node, entry.field, entry.clause
@@ -57,6 +66,42 @@ pub fn apply(schema: &mut Schema, applied: &mut Applied) -> Result<(), String> {
     Ok(())
 }
 
+/// VRML97's table: the nodes of `src/schema/vrml97.rs` taken from X3D 3.0's table (with
+/// its overrides applied), changed by that file's differences.
+pub fn vrml97(x3d_3_0: &Schema, applied: &mut Applied) -> Result<Schema, String> {
+    let mut schema = x3d_3_0.clone();
+    schema.version = Version::Vrml97;
+    for (name, clause) in vrml97::NODES {
+        if !schema.nodes.iter().any(|n| n.name == *name) {
+            return Err(format!(
+                "src/schema/vrml97.rs: {name} (14772-1 {clause}) is not a node of X3D 3.0"
+            ));
+        }
+    }
+    schema
+        .nodes
+        .retain(|n| vrml97::NODES.iter().any(|(name, _)| n.name == *name));
+    for entry in vrml97::DIFFERENCES {
+        let clause = format!("14772-1 {}", entry.vrml97);
+        apply_field(
+            &mut schema,
+            entry.node,
+            entry.field,
+            &entry.change,
+            &clause,
+            applied,
+        )
+        .map_err(|e| {
+            format!(
+                "src/schema/vrml97.rs: {}.{} ({clause}): {e}",
+                entry.node, entry.field
+            )
+        })?;
+    }
+    schema.components = uom::component_levels(&schema.nodes);
+    Ok(schema)
+}
+
 fn apply_component(
     schema: &mut Schema,
     entry: &ComponentOverride,
@@ -83,34 +128,36 @@ fn apply_component(
     Ok(())
 }
 
+/// Applies `change` to the field `field` of `node` (a concrete node, or every concrete
+/// node inheriting that abstract type); `clause` names the source in the no-op list.
 fn apply_field(
     schema: &mut Schema,
-    entry: &FieldOverride,
+    node: &str,
+    field: &str,
+    change: &Change,
+    clause: &str,
     applied: &mut Applied,
 ) -> Result<(), String> {
     let version = schema.version;
     let targets: Vec<usize> = (0..schema.nodes.len())
         .filter(|&i| {
-            let node = &schema.nodes[i];
-            node.name == entry.node || node.ancestors.iter().any(|a| a == entry.node)
+            let n = &schema.nodes[i];
+            n.name == node || n.ancestors.iter().any(|a| a == node)
         })
         .collect();
     if targets.is_empty() {
-        return Err(format!(
-            "no node of this version is or inherits {}",
-            entry.node
-        ));
+        return Err(format!("no node of this version is or inherits {node}"));
     }
-    if let Change::Add(new) = &entry.change {
+    if let Change::Add(new) = change {
         for &i in &targets {
             let node = &mut schema.nodes[i];
-            if node.fields.iter().any(|f| f.name == entry.field) {
+            if node.fields.iter().any(|f| f.name == field) {
                 return Err(format!(
                     "{} already has this field in the UOM: drop or change the override",
                     node.name
                 ));
             }
-            node.fields.push(new_field(entry.field, new));
+            node.fields.push(new_field(field, new));
             node.fields.sort_by(|a, b| a.name.cmp(&b.name));
             applied.changes += 1;
         }
@@ -120,26 +167,22 @@ fn apply_field(
     let mut found = 0;
     let mut changed = 0;
     for &i in &targets {
-        let node = &mut schema.nodes[i];
-        let Some(position) = node.fields.iter().position(|f| f.name == entry.field) else {
+        let n = &mut schema.nodes[i];
+        let Some(position) = n.fields.iter().position(|f| f.name == field) else {
             continue;
         };
         found += 1;
-        if modify(&mut node.fields, position, &entry.change) {
+        if modify(&mut n.fields, position, change) {
             changed += 1;
         }
     }
     if found == 0 {
-        return Err(format!(
-            "no node that is or inherits {} has this field",
-            entry.node
-        ));
+        return Err(format!("no node that is or inherits {node} has this field"));
     }
     if changed == 0 {
-        applied.no_ops.push(format!(
-            "{version} {}.{} ({})",
-            entry.node, entry.field, entry.clause
-        ));
+        applied
+            .no_ops
+            .push(format!("{version} {node}.{field} ({clause})"));
     }
     applied.changes += changed;
     Ok(())
@@ -166,6 +209,7 @@ fn modify(fields: &mut Vec<Field>, position: usize, change: &Change) -> bool {
             field.component = new;
             !same
         }
+        Change::Access(access) => replace(&mut field.access, *access),
         Change::Strict => replace(&mut field.enumeration_strict, true),
         Change::Remove => {
             fields.remove(position);
@@ -232,8 +276,24 @@ mod tests {
     use std::collections::BTreeMap;
 
     use super::*;
-    use crate::types::{AccessType, Bound, FieldType, Version};
+    use crate::overrides::FieldOverride;
+    use crate::types::{AccessType, Bound, FieldType};
     use crate::uom::Node;
+
+    fn apply_entry(
+        schema: &mut Schema,
+        entry: &FieldOverride,
+        applied: &mut Applied,
+    ) -> Result<(), String> {
+        let FieldOverride {
+            node,
+            field,
+            change,
+            clause,
+            ..
+        } = entry;
+        apply_field(schema, node, field, change, clause, applied)
+    }
 
     fn schema() -> Schema {
         let field = |name: &str| Field {
@@ -285,11 +345,11 @@ mod tests {
         let mut schema = schema();
         let mut applied = Applied::default();
         let max = entry("X3DLightNode", "beamWidth", Change::Max(HALF_PI));
-        apply_field(&mut schema, &max, &mut applied).unwrap();
+        apply_entry(&mut schema, &max, &mut applied).unwrap();
         assert_eq!(schema.nodes[0].fields[0].max, HALF_PI);
         assert_eq!(applied.changes, 1);
         // The same again changes nothing and is reported as such.
-        apply_field(&mut schema, &max, &mut applied).unwrap();
+        apply_entry(&mut schema, &max, &mut applied).unwrap();
         assert_eq!(applied.no_ops.len(), 1);
     }
 
@@ -297,9 +357,9 @@ mod tests {
     fn refuses_entries_that_match_nothing() {
         let mut applied = Applied::default();
         let unknown_node = entry("SpotLite", "beamWidth", Change::Remove);
-        assert!(apply_field(&mut schema(), &unknown_node, &mut applied).is_err());
+        assert!(apply_entry(&mut schema(), &unknown_node, &mut applied).is_err());
         let unknown_field = entry("SpotLight", "beamwidth", Change::Remove);
-        assert!(apply_field(&mut schema(), &unknown_field, &mut applied).is_err());
+        assert!(apply_entry(&mut schema(), &unknown_field, &mut applied).is_err());
         let added_twice = entry(
             "SpotLight",
             "intensity",
@@ -314,7 +374,7 @@ mod tests {
                 acceptable: &[],
             }),
         );
-        assert!(apply_field(&mut schema(), &added_twice, &mut applied).is_err());
+        assert!(apply_entry(&mut schema(), &added_twice, &mut applied).is_err());
         let node = NodeOverride {
             versions: &[Version::V4_0],
             node: "X3DLightNode",
@@ -333,7 +393,7 @@ mod tests {
         let mut schema = schema();
         let mut applied = Applied::default();
         let remove = entry("SpotLight", "beamWidth", Change::Remove);
-        apply_field(&mut schema, &remove, &mut applied).unwrap();
+        apply_entry(&mut schema, &remove, &mut applied).unwrap();
         let add = entry(
             "SpotLight",
             "attenuation",
@@ -348,7 +408,7 @@ mod tests {
                 acceptable: &[],
             }),
         );
-        apply_field(&mut schema, &add, &mut applied).unwrap();
+        apply_entry(&mut schema, &add, &mut applied).unwrap();
         let names: Vec<&str> = schema.nodes[0]
             .fields
             .iter()

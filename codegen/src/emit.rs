@@ -8,6 +8,7 @@ use std::fmt::Write;
 use crate::overrides::{COMPONENT_OVERRIDES, FIELD_OVERRIDES, NODE_OVERRIDES};
 use crate::types::{Bound, Version};
 use crate::uom::{Component, Field, Schema};
+use crate::vrml97;
 
 pub fn render(schemas: &[Schema]) -> String {
     // Keyed by the field's Rust expression: equal text is equal definition. BTreeMap order
@@ -29,10 +30,13 @@ pub fn render(schemas: &[Schema]) -> String {
     writeln!(
         out,
         "// with the corrections of src/schema/overrides.rs applied ({} field, {} node and {} component\n\
-         // overrides), where the specification clauses in ../shared/spec differ from the UOM.",
+         // overrides), where the specification clauses in ../shared/spec differ from the UOM;\n\
+         // VRML97's table is X3D 3.0's with the {} nodes and {} differences of src/schema/vrml97.rs.",
         FIELD_OVERRIDES.len(),
         NODE_OVERRIDES.len(),
-        COMPONENT_OVERRIDES.len()
+        COMPONENT_OVERRIDES.len(),
+        vrml97::NODES.len(),
+        vrml97::DIFFERENCES.len()
     )
     .unwrap();
     // The UOM's bounds include 3.1416 and 1.5708; they are the spec's values, not stand-ins
@@ -49,7 +53,12 @@ pub fn render(schemas: &[Schema]) -> String {
     out.push_str("\npub fn schema(version: Version) -> &'static VersionSchema {\n");
     out.push_str("    match version {\n");
     for version in Version::ALL {
-        writeln!(out, "        Version::{version:?} => &{version:?},").unwrap();
+        writeln!(
+            out,
+            "        Version::{version:?} => &{},",
+            static_name(version)
+        )
+        .unwrap();
     }
     out.push_str("    }\n}\n");
     out
@@ -59,7 +68,8 @@ fn render_schema(out: &mut String, schema: &Schema, pool: &BTreeMap<String, usiz
     let version = schema.version;
     writeln!(
         out,
-        "pub static {version:?}: VersionSchema = VersionSchema {{"
+        "pub static {}: VersionSchema = VersionSchema {{",
+        static_name(version)
     )
     .unwrap();
     writeln!(out, "    version: Version::{version:?},").unwrap();
@@ -90,6 +100,11 @@ fn render_schema(out: &mut String, schema: &Schema, pool: &BTreeMap<String, usiz
         .unwrap();
     }
     out.push_str("    ],\n};\n");
+}
+
+/// `V3_0`, …, `VRML97`: the variant's name in upper case, as statics are named.
+fn static_name(version: Version) -> String {
+    format!("{version:?}").to_uppercase()
 }
 
 fn field_expr(field: &Field) -> String {

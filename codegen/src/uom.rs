@@ -20,11 +20,13 @@ const IS_FIELD: &str = "IS";
 const STATEMENT_TYPE: &str = "SceneGraphStructureStatement";
 
 /// A component and level, as a `<componentInfo name= level=>` states them.
+#[derive(Clone)]
 pub struct Component {
     pub name: String,
     pub level: u8,
 }
 
+#[derive(Clone)]
 pub struct Field {
     pub name: String,
     pub ty: FieldType,
@@ -38,6 +40,7 @@ pub struct Field {
     pub component: Option<Component>,
 }
 
+#[derive(Clone)]
 pub struct Node {
     pub name: String,
     pub component: Component,
@@ -47,6 +50,7 @@ pub struct Node {
     pub fields: Vec<Field>,
 }
 
+#[derive(Clone)]
 pub struct Schema {
     pub version: Version,
     /// Sorted by name.

@@ -44,6 +44,8 @@ pub enum Change {
     Default(&'static str),
     /// The component level the field needs above its node's; None for just the node's.
     Component(Option<ComponentLevel>),
+    /// The access type (VRML97's field/exposedField/eventIn/eventOut where X3D differs).
+    Access(AccessType),
     /// The field's enumerated values are the only ones allowed (the clause's table is a
     /// closed list) although the UOM marks them as suggestions.
     Strict,
@@ -89,7 +91,7 @@ const V3: &[Version] = &[Version::V3_0, Version::V3_1, Version::V3_2, Version::V
 const V4: &[Version] = &[Version::V4_0, Version::V4_1];
 const V4_0: &[Version] = &[Version::V4_0];
 const V4_1: &[Version] = &[Version::V4_1];
-const ALL: &[Version] = &Version::ALL;
+const ALL: &[Version] = &Version::X3D;
 
 const fn incl(value: f64) -> Option<Bound> {
     Some(Bound {

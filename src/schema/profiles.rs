@@ -64,7 +64,8 @@ impl Profile {
 }
 
 /// The profile `name` as `version` defines it; None for a name that version does not know
-/// (CADInterchange before 3.1, MedicalInterchange before 3.3, any misspelling).
+/// (CADInterchange before 3.1, MedicalInterchange before 3.3, any misspelling), and for
+/// VRML97, which has no profiles.
 pub fn profile(version: Version, name: &str) -> Option<&'static Profile> {
     PROFILES
         .iter()
@@ -83,7 +84,7 @@ pub const PROFILE_NAMES: [&str; 8] = [
     "Full",
 ];
 
-const ALL: &[Version] = &Version::ALL;
+const ALL: &[Version] = &Version::X3D;
 const V3_1_TO_3_3: &[Version] = &[Version::V3_1, Version::V3_2, Version::V3_3];
 const V4: &[Version] = &[Version::V4_0, Version::V4_1];
 const V3_3_ON: &[Version] = &[Version::V3_3, Version::V4_0, Version::V4_1];
@@ -331,7 +332,7 @@ mod tests {
 
     #[test]
     fn one_entry_per_name_and_version() {
-        for version in Version::ALL {
+        for version in Version::X3D {
             for name in PROFILE_NAMES {
                 let count = PROFILES
                     .iter()
@@ -341,6 +342,10 @@ mod tests {
             }
         }
         assert!(profile(Version::V3_0, "CADInterchange").is_none());
+        // VRML97 has no profiles (14772-1 has no PROFILE statement).
+        assert!(PROFILE_NAMES
+            .iter()
+            .all(|name| profile(Version::Vrml97, name).is_none()));
         assert!(profile(Version::V3_2, "MedicalInterchange").is_none());
         assert!(profile(Version::V4_1, "Medical").is_none());
         assert_eq!(
@@ -370,7 +375,7 @@ mod tests {
 
     #[test]
     fn profiles_hold_the_nodes_they_are_for() {
-        for version in Version::ALL {
+        for version in Version::X3D {
             for node in [
                 "Shape",
                 "Appearance",
@@ -420,7 +425,7 @@ mod tests {
             ("CADInterchange", "Full"),
             ("MPEG4Interactive", "Full"),
         ];
-        for version in Version::ALL {
+        for version in Version::X3D {
             for (small, big) in nested {
                 let (Some(small), Some(big)) = (profile(version, small), profile(version, big))
                 else {
@@ -442,7 +447,7 @@ mod tests {
 
     #[test]
     fn full_is_every_component_at_its_highest_level() {
-        for version in Version::ALL {
+        for version in Version::X3D {
             let full = profile_of(version, "Full");
             for component in schema(version).components {
                 assert_eq!(full.level(version, component.name), component.max_level);
@@ -484,7 +489,7 @@ mod tests {
 
     #[test]
     fn every_uom_profile_name_is_covered() {
-        for version in Version::ALL {
+        for version in Version::X3D {
             for (name, _) in uom_profiles(&oracle(version)) {
                 assert!(
                     profile(version, &name).is_some(),
@@ -515,7 +520,7 @@ mod tests {
     #[test]
     fn uom_profile_node_lists_agree() {
         const MARKER: &str = "Allowed X3D nodes for this profile are:";
-        for version in Version::ALL {
+        for version in Version::X3D {
             for (name, appinfo) in uom_profiles(&oracle(version)) {
                 let Some(list) = appinfo.split(MARKER).nth(1) else {
                     continue; // Full: "All X3D nodes and statements are allowed"

@@ -1,11 +1,13 @@
-//! The shapes of the schema tables: X3D versions, field types, access types, and the
-//! node and field definitions that `generated.rs` fills in for every version.
+//! The shapes of the schema tables: X3D versions (and VRML97), field types, access types,
+//! and the node and field definitions that `generated.rs` fills in for every version.
 
 use std::fmt;
 
-/// An X3D specification version this tool knows.
+/// A specification version this tool knows: VRML97 (ISO/IEC 14772-1:1997), which X3D 3.0
+/// succeeded and so orders before it, and the X3D versions (ISO/IEC 19775-1).
 #[derive(Copy, Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Version {
+    Vrml97,
     V3_0,
     V3_1,
     V3_2,
@@ -15,7 +17,19 @@ pub enum Version {
 }
 
 impl Version {
-    pub const ALL: [Version; 6] = [
+    /// Every version with a schema table, oldest first.
+    pub const ALL: [Version; 7] = [
+        Version::Vrml97,
+        Version::V3_0,
+        Version::V3_1,
+        Version::V3_2,
+        Version::V3_3,
+        Version::V4_0,
+        Version::V4_1,
+    ];
+
+    /// The X3D versions: those an X3D document's `version` names, with a UOM and profiles.
+    pub const X3D: [Version; 6] = [
         Version::V3_0,
         Version::V3_1,
         Version::V3_2,
@@ -27,18 +41,35 @@ impl Version {
     /// The latest version: the schema used when a document's version is missing or unknown.
     pub const LATEST: Version = Version::V4_1;
 
+    /// The X3D version an X3D document's `version` text names (never VRML97, which is
+    /// known by its file header instead).
     pub fn parse(text: &str) -> Option<Version> {
-        Version::ALL.into_iter().find(|v| v.as_str() == text)
+        Version::X3D.into_iter().find(|v| v.as_str() == text)
     }
 
+    /// "3.0" … "4.1", or "VRML97".
     pub fn as_str(self) -> &'static str {
         match self {
+            Version::Vrml97 => "VRML97",
             Version::V3_0 => "3.0",
             Version::V3_1 => "3.1",
             Version::V3_2 => "3.2",
             Version::V3_3 => "3.3",
             Version::V4_0 => "4.0",
             Version::V4_1 => "4.1",
+        }
+    }
+
+    /// The name messages use: "X3D 3.3", or "VRML97".
+    pub fn name(self) -> &'static str {
+        match self {
+            Version::Vrml97 => "VRML97",
+            Version::V3_0 => "X3D 3.0",
+            Version::V3_1 => "X3D 3.1",
+            Version::V3_2 => "X3D 3.2",
+            Version::V3_3 => "X3D 3.3",
+            Version::V4_0 => "X3D 4.0",
+            Version::V4_1 => "X3D 4.1",
         }
     }
 

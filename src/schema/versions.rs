@@ -4,28 +4,29 @@
 
 use super::{schema, Version};
 
-/// The versions whose schema has node type `name`.
+/// The X3D versions whose schema has node type `name`.
 pub fn with_node(name: &str) -> Vec<Version> {
-    Version::ALL
+    Version::X3D
         .into_iter()
         .filter(|&v| schema(v).node(name).is_some())
         .collect()
 }
 
-/// The versions whose schema has `field` on node type `node`.
+/// The X3D versions whose schema has `field` on node type `node`.
 pub fn with_field(node: &str, field: &str) -> Vec<Version> {
-    Version::ALL
+    Version::X3D
         .into_iter()
         .filter(|&v| schema(v).node(node).and_then(|d| d.field(field)).is_some())
         .collect()
 }
 
 /// "X3D 3.1 and later", "X3D 3.3 only", "X3D 3.0–3.3 and 4.1": the runs of consecutive
-/// versions in `versions` (a subset of [`Version::ALL`] in its order).
+/// versions in `versions` (a subset of [`Version::X3D`] in its order); "VRML97 only" for
+/// none, since every node and field of the schema is in some version.
 pub fn describe(versions: &[Version]) -> String {
     let mut runs: Vec<(Version, Version)> = Vec::new();
     for &v in versions {
-        let position = |v: Version| Version::ALL.iter().position(|&w| w == v);
+        let position = |v: Version| Version::X3D.iter().position(|&w| w == v);
         match runs.last_mut() {
             Some((_, last)) if position(*last).map(|p| p + 1) == position(v) => *last = v,
             _ => runs.push((v, v)),
@@ -39,7 +40,7 @@ pub fn describe(versions: &[Version]) -> String {
         }
     };
     match runs.as_slice() {
-        [] => "no X3D version".to_string(),
+        [] => "VRML97 only".to_string(),
         [(first, last)] if *last == Version::LATEST && first != last => {
             format!("X3D {first} and later")
         }

@@ -39,7 +39,11 @@ fn check(ctx: &mut Ctx) {
                 Diagnostic::new(
                     &COMPONENT_UNKNOWN,
                     name.span,
-                    format!("`{}` is not a component of X3D {}", name.text, ctx.version),
+                    format!(
+                        "`{}` is not a component of {}",
+                        name.text,
+                        ctx.version.name()
+                    ),
                 )
                 .value(name.text.clone())
                 .help_opt(suggest::help(&name.text, names)),
@@ -53,8 +57,10 @@ fn check(ctx: &mut Ctx) {
                         &COMPONENT_UNKNOWN,
                         span,
                         format!(
-                            "component {} has levels 1 to {} in X3D {}, not {level}",
-                            component.name, component.max_level, ctx.version
+                            "component {} has levels 1 to {} in {}, not {level}",
+                            component.name,
+                            component.max_level,
+                            ctx.version.name()
                         ),
                     )
                     .value(level.to_string()),

@@ -95,10 +95,10 @@ fn report(
         &FIELD_OUT_OF_RANGE,
         span,
         format!(
-            "{type_name}.{}{place} = {text} is outside {} in X3D {}{more}",
+            "{type_name}.{}{place} = {text} is outside {} in {}{more}",
             def.name,
             range_text(def),
-            ctx.version
+            ctx.version.name()
         ),
     )
     .node(id)

@@ -1,18 +1,21 @@
-//! NODE_NOT_IN_VERSION: a node type of another X3D version.
+//! NODE_NOT_IN_VERSION: a node type of another X3D version (or one X3D added to VRML97).
 
 use crate::model::NodeKind;
 use crate::report::Diagnostic;
-use crate::schema::versions;
+use crate::schema::{self, versions, Version};
 use crate::validate::Ctx;
 
 crate::declare_rule! {
     /// ## What it does
     /// Reports a node type that does not exist in the document's version but does in
-    /// another, such as PhysicalMaterial or UnlitMaterial in a 3.3 scene.
+    /// another, such as PhysicalMaterial or UnlitMaterial in a 3.3 scene, or an X3D node
+    /// (TriangleSet, Switch's X3D siblings such as StaticGroup, any node X3D added) in a
+    /// VRML97 file (`#VRML V2.0 utf8`), whose 54 nodes are those of 14772-1 clause 6.
     ///
     /// ## Why it matters
     /// A browser of the declared version does not know the node and skips it.
-    /// Raising the document's version (and checking what else that changes) fixes it.
+    /// Raising the document's version (and checking what else that changes) fixes it;
+    /// a VRML97 file becomes an X3D one with a `#X3D V3.x utf8` header and a profile.
     ///
     /// ## Example
     /// ```xml
@@ -22,7 +25,8 @@ crate::declare_rule! {
     /// ```
     ///
     /// ## Clause
-    /// 19775-1 the node's clause in the version that defines it; 7.2.5.2 (version).
+    /// 19775-1 the node's clause in the version that defines it; 7.2.5.2 (version);
+    /// for VRML97 files, 14772-1 clause 6 (the node reference lists every VRML97 node).
     pub static NODE_NOT_IN_VERSION = {
         severity: Error,
         level: Fast,
@@ -36,20 +40,31 @@ fn check(ctx: &mut Ctx) {
     for (id, node) in ctx.doc.iter() {
         if let NodeKind::Known { def, version } = node.kind {
             if version != ctx.version {
-                ctx.report(
-                    Diagnostic::new(
-                        &NODE_NOT_IN_VERSION,
-                        node.name_span,
-                        format!(
-                            "{} is not in X3D {}; it is in {}",
-                            def.name,
-                            ctx.version,
-                            versions::describe(&versions::with_node(def.name))
-                        ),
+                let message = if ctx.version == Version::Vrml97 {
+                    format!(
+                        "VRML97 has no node {}; {} added it",
+                        def.name,
+                        first_with(|v| schema::schema(v).node(def.name).is_some()).name()
                     )
-                    .node(id),
-                );
+                } else {
+                    format!(
+                        "{} is not in {}; it is in {}",
+                        def.name,
+                        ctx.version.name(),
+                        versions::describe(&versions::with_node(def.name))
+                    )
+                };
+                ctx.report(Diagnostic::new(&NODE_NOT_IN_VERSION, node.name_span, message).node(id));
             }
         }
     }
+}
+
+/// The first X3D version where `has` holds: the one that added a node or field VRML97
+/// lacks. The caller found it in some version, so one exists.
+pub(crate) fn first_with(has: impl Fn(Version) -> bool) -> Version {
+    Version::X3D
+        .into_iter()
+        .find(|&v| has(v))
+        .unwrap_or(Version::LATEST)
 }

@@ -1,6 +1,7 @@
 //! PROFILE_MISSING: the root has no `profile`.
 
 use crate::report::Diagnostic;
+use crate::schema::Version;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -17,6 +18,10 @@ crate::declare_rule! {
     /// <X3D version='4.0'><Scene/></X3D>
     /// ```
     ///
+    /// Not reported for VRML97 files: VRML97 has no profiles and no PROFILE statement
+    /// (14772-1 4.2.2: the header ends at `utf8` and an optional comment), so its files are checked against the
+    /// VRML97 node set instead and the component-level rules have nothing to measure.
+    ///
     /// ## Clause
     /// 19775-1 7.2.5.3 (PROFILE statement).
     pub static PROFILE_MISSING = {
@@ -29,7 +34,7 @@ crate::declare_rule! {
 }
 
 fn check(ctx: &mut Ctx) {
-    if ctx.doc.profile.is_none() {
+    if ctx.doc.profile.is_none() && ctx.version != Version::Vrml97 {
         ctx.report(
             Diagnostic::new(
                 &PROFILE_MISSING,

@@ -1,6 +1,7 @@
 //! X3D_VERSION_MISSING: the root has no `version`.
 
 use crate::report::Diagnostic;
+use crate::schema::Version;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -28,7 +29,8 @@ crate::declare_rule! {
 }
 
 fn check(ctx: &mut Ctx) {
-    if ctx.doc.version_text.is_none() {
+    // A VRML97 file has its version from its header line, not from a `version`.
+    if ctx.doc.version_text.is_none() && ctx.doc.version != Some(Version::Vrml97) {
         ctx.report(
             Diagnostic::new(&X3D_VERSION_MISSING, ctx.doc.root_span, "the X3D root has no `version`")
                 .help("add version='4.1' (or the version the scene was written for); checking against 4.1"),

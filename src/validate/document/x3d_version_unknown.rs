@@ -35,7 +35,7 @@ fn check(ctx: &mut Ctx) {
     if ctx.doc.version.is_some() {
         return;
     }
-    let known = Version::ALL.map(Version::as_str);
+    let known = Version::X3D.map(Version::as_str);
     let help = suggest::help(text.text.trim(), known)
         .unwrap_or_else(|| format!("known versions: {}; checking against 4.1", known.join(", ")));
     ctx.report(

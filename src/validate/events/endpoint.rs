@@ -215,8 +215,19 @@ pub fn only_in_text(only_in: &[Version]) -> String {
     if only_in.is_empty() {
         return String::new();
     }
-    let versions: Vec<&str> = only_in.iter().map(|v| v.as_str()).collect();
-    format!(" (it exists only in X3D {})", versions.join(", "))
+    let x3d: Vec<&str> = only_in
+        .iter()
+        .filter(|v| **v != Version::Vrml97)
+        .map(|v| v.as_str())
+        .collect();
+    let mut parts = Vec::new();
+    if only_in.contains(&Version::Vrml97) {
+        parts.push("VRML97".to_string());
+    }
+    if !x3d.is_empty() {
+        parts.push(format!("X3D {}", x3d.join(", ")));
+    }
+    format!(" (it exists only in {})", parts.join(" and "))
 }
 
 #[cfg(test)]
