@@ -4,10 +4,10 @@
 //! It depends on nothing else of the crate, so that readers and the model can report
 //! without importing `validate` or `check`.
 
-mod diagnostic;
+mod finding;
 mod rule;
 
-pub use diagnostic::Diagnostic;
+pub use finding::Diagnostic;
 pub use rule::{Level, Rule, Severity};
 
 /// A byte range in the input. Line and column are computed only for reported diagnostics.
