@@ -19,8 +19,8 @@ use std::process::ExitCode;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use rayon::prelude::*;
 
-use x3dcheck::config::CheckConfig;
 use x3dcheck::check::STDIN_NAME;
+use x3dcheck::config::CheckConfig;
 use x3dcheck::config_file::{select_codes, Effective, Resolver, Settings};
 use x3dcheck::model::MAX_INPUT_BYTES;
 use x3dcheck::report::{concise, github, human, json, junit, sarif, statistics};
@@ -358,9 +358,8 @@ fn fail_level(fail_on: FailOn) -> Severity {
 
 /// The settings the command line gives; they win over x3dcheck.toml.
 fn settings(args: &CheckArgs) -> Result<Settings, String> {
-    let codes = |selector: &str, option: &str| {
-        select_codes(selector).map_err(|e| format!("{option}: {e}"))
-    };
+    let codes =
+        |selector: &str, option: &str| select_codes(selector).map_err(|e| format!("{option}: {e}"));
     let mut settings = Settings {
         level: args.level,
         fail_on: args.fail_on.map(fail_level),

@@ -146,7 +146,7 @@ fn every_catalogue_code_is_implemented_as_catalogued() {
 #[test]
 fn every_summary_is_a_whole_sentence() {
     let mut problems = Vec::new();
-    for rule in x3dcheck::validate::RULES {
+    for rule in x3dcheck::validate::RULES.iter() {
         let summary = rule.summary();
         let opened = summary.matches(['(', '[']).count();
         let closed = summary.matches([')', ']']).count();

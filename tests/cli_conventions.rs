@@ -136,9 +136,15 @@ fn quiet_prints_the_findings_only() {
     assert!(text.contains("error[DEF_DUPLICATE]"), "{text}");
     assert!(!text.contains("Checked"), "{text}");
     let output = run(&dir, &["-q", "--format", "concise", "valid.x3d"], &[], b"");
-    assert_eq!((output.status.code(), stdout(&output)), (Some(0), String::new()));
+    assert_eq!(
+        (output.status.code(), stdout(&output)),
+        (Some(0), String::new())
+    );
     let output = run(&dir, &["dup.x3d", "--format", "concise"], &[], b"");
-    assert!(stdout(&output).contains("Checked 1 file"), "without --quiet");
+    assert!(
+        stdout(&output).contains("Checked 1 file"),
+        "without --quiet"
+    );
 }
 
 #[test]
@@ -156,8 +162,12 @@ fn stdin_filename_names_the_document_and_places_it() {
     let dir = scratch(
         "stdin-filename",
         &[
-            ("scenes/x3dcheck.toml", "ignore = ['PROFILE_MISSING']\n[severity]\nDEF_DUPLICATE = 'warning'\n"),
+            (
+                "scenes/x3dcheck.toml",
+                "ignore = ['PROFILE_MISSING']\n[severity]\nDEF_DUPLICATE = 'warning'\n",
+            ),
             ("scenes/a.x3d", TEXTURED),
+            ("other/notes.txt", ""),
         ],
     );
     image::RgbaImage::new(2, 2)
@@ -172,18 +182,30 @@ fn stdin_filename_names_the_document_and_places_it() {
     // Named as scenes/a.x3d, tex.png is found beside it.
     let (code, text) = deep(&["--stdin-filename", "scenes/a.x3d"], TEXTURED);
     assert_eq!(code, Some(0), "{text}");
-    assert!(!text.contains("URL_UNRESOLVED") && !text.contains("VALIDATION_INCOMPLETE"), "{text}");
-    // Named elsewhere, it is not.
+    assert!(
+        !text.contains("URL_UNRESOLVED") && !text.contains("VALIDATION_INCOMPLETE"),
+        "{text}"
+    );
+    // Named in another directory, it is not.
     let (code, text) = deep(&["--stdin-filename", "other/a.x3d"], TEXTURED);
-    assert_eq!(code, Some(1), "{text}");
-    assert!(text.starts_with("other/a.x3d:3:1: error[URL_UNRESOLVED]"), "{text}");
+    assert_eq!(code, Some(0), "{text}");
+    assert!(
+        text.starts_with("other/a.x3d:3:") && text.contains("warning[URL_UNRESOLVED]"),
+        "{text}"
+    );
     // Unnamed, relative references are not followed.
     let (_, text) = deep(&[], TEXTURED);
-    assert!(text.starts_with("<stdin>:") && text.contains("VALIDATION_INCOMPLETE"), "{text}");
+    assert!(
+        text.starts_with("<stdin>:") && text.contains("VALIDATION_INCOMPLETE"),
+        "{text}"
+    );
     // The x3dcheck.toml beside the name applies: DEF_DUPLICATE is a warning there.
     let (code, text) = deep(&["--stdin-filename", "scenes/dup.x3d"], DUPLICATE);
     assert_eq!(code, Some(0), "{text}");
-    assert!(text.contains("scenes/dup.x3d:5:39: warning[DEF_DUPLICATE]"), "{text}");
+    assert!(
+        text.contains("scenes/dup.x3d:5:39: warning[DEF_DUPLICATE]"),
+        "{text}"
+    );
     let (code, _) = deep(&["--stdin-filename", "dup.x3d"], DUPLICATE);
     assert_eq!(code, Some(1), "no x3dcheck.toml above ./dup.x3d");
 }
@@ -192,9 +214,15 @@ fn stdin_filename_names_the_document_and_places_it() {
 fn help_lists_the_exit_codes() {
     let dir = scratch("help", &[]);
     let text = stdout(&run(&dir, &["--help"], &[], b""));
-    let codes = text.split("Exit codes:").nth(1).unwrap_or_else(|| panic!("{text}"));
+    let codes = text
+        .split("Exit codes:")
+        .nth(1)
+        .unwrap_or_else(|| panic!("{text}"));
     for code in ["0  ", "1  ", "2  "] {
-        assert!(codes.lines().any(|l| l.trim_start().starts_with(code)), "{text}");
+        assert!(
+            codes.lines().any(|l| l.trim_start().starts_with(code)),
+            "{text}"
+        );
     }
     assert!(codes.contains("--exit-zero"), "{text}");
 }
@@ -218,10 +246,17 @@ fn codes_are_selected_in_any_case_by_prefix_or_all() {
     assert_eq!(code(&["--select", "BACK_MATERIAL_", "dup.x3d"]).0, Some(0));
     assert_eq!(code(&["--ignore", "all", "dup.x3d"]).0, Some(0));
     assert_eq!(code(&["--severity", "DEF=warning", "dup.x3d"]).0, Some(0));
-    assert_eq!(code(&["toml/dup.x3d"]).0, Some(0), "a prefix in x3dcheck.toml");
+    assert_eq!(
+        code(&["toml/dup.x3d"]).0,
+        Some(0),
+        "a prefix in x3dcheck.toml"
+    );
     let (status, text, errors) = code(&["--select", "BACK_MATERIAL_NOTHING", "dup.x3d"]);
     assert_eq!(status, Some(2), "{text}");
-    assert!(errors.contains("`BACK_MATERIAL_NOTHING` is no rule code"), "{errors}");
+    assert!(
+        errors.contains("`BACK_MATERIAL_NOTHING` is no rule code"),
+        "{errors}"
+    );
     assert!(text.is_empty(), "{text}");
     let (status, _, errors) = code(&["--ignore", "DEF_DUPLICAT", "dup.x3d"]);
     assert_eq!(status, Some(2));
@@ -229,7 +264,10 @@ fn codes_are_selected_in_any_case_by_prefix_or_all() {
     let (status, text, _) = code(&["--show-settings", "--select", "back_material_", "dup.x3d"]);
     assert_eq!(status, Some(0));
     let select = text.lines().find(|l| l.starts_with("select = ")).unwrap();
-    assert!(select.contains("\"BACK_MATERIAL_CLASS_MISMATCH\""), "{select}");
+    assert!(
+        select.contains("\"BACK_MATERIAL_CLASS_MISMATCH\""),
+        "{select}"
+    );
     assert!(!select.contains("DEF_DUPLICATE"), "{select}");
 }
 
@@ -249,7 +287,12 @@ fn show_settings_prints_what_applies_and_where_it_comes_from() {
     );
     let output = run(
         &dir,
-        &["--show-settings", "--fail-on", "warning", "scenes/old/dup.x3d"],
+        &[
+            "--show-settings",
+            "--fail-on",
+            "warning",
+            "scenes/old/dup.x3d",
+        ],
         &[],
         b"",
     );
@@ -272,12 +315,25 @@ fn show_settings_prints_what_applies_and_where_it_comes_from() {
         assert!(text.lines().any(|l| l == line), "{line}:\n{text}");
     }
     // What it prints is TOML.
-    let body: String = text.lines().filter(|l| !l.starts_with('#')).map(|l| format!("{l}\n")).collect();
-    body.parse::<toml::Table>().unwrap_or_else(|e| panic!("{e}\n{text}"));
+    let body: String = text
+        .lines()
+        .filter(|l| !l.starts_with('#'))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    body.parse::<toml::Table>()
+        .unwrap_or_else(|e| panic!("{e}\n{text}"));
     // No x3dcheck.toml upward: said so.
-    let output = run(&dir, &["--show-settings", "-", "--stdin-filename", "a.x3d"], &[], b"");
+    let output = run(
+        &dir,
+        &["--show-settings", "-", "--stdin-filename", "a.x3d"],
+        &[],
+        b"",
+    );
     let text = stdout(&output);
-    assert!(text.contains("# Settings for a.x3d\n# no x3dcheck.toml found"), "{text}");
+    assert!(
+        text.contains("# Settings for a.x3d\n# no x3dcheck.toml found"),
+        "{text}"
+    );
 }
 
 #[test]
@@ -287,7 +343,11 @@ fn files_never_read_get_no_summary_line() {
         let output = run(&dir, &["missing.x3d", "--format", format], &[], b"");
         assert_eq!(output.status.code(), Some(2));
         assert_eq!(stdout(&output), "", "{format}");
-        assert!(stderr(&output).contains("missing.x3d"), "{}", stderr(&output));
+        assert!(
+            stderr(&output).contains("missing.x3d"),
+            "{}",
+            stderr(&output)
+        );
     }
     let output = run(&dir, &["missing.x3d", "valid.x3d"], &[], b"");
     assert_eq!(output.status.code(), Some(2));
@@ -302,10 +362,11 @@ fn the_rule_table_fits_100_columns_with_whole_summaries() {
     let text = stdout(&output);
     let widest = text.lines().map(|l| l.chars().count()).max().unwrap();
     assert!(widest <= 100, "a line of {widest} columns:\n{text}");
-    let rules = x3dcheck::validate::RULES;
-    for rule in rules {
+    let rules = &x3dcheck::validate::RULES;
+    for rule in rules.iter() {
         assert!(
-            text.lines().any(|l| l.starts_with(&format!("{} ", rule.code))),
+            text.lines()
+                .any(|l| l.starts_with(&format!("{} ", rule.code))),
             "{} missing",
             rule.code
         );
@@ -324,7 +385,10 @@ fn the_rule_table_fits_100_columns_with_whole_summaries() {
         .filter(|l| !l.starts_with(' '))
         .filter_map(|l| l.split_whitespace().next())
         .collect();
-    assert!(codes.len() > 1 && codes.iter().all(|c| c.starts_with("BACK_MATERIAL_")), "{family}");
+    assert!(
+        codes.len() > 1 && codes.iter().all(|c| c.starts_with("BACK_MATERIAL_")),
+        "{family}"
+    );
     // One code: its documentation.
     let one = stdout(&run(&dir, &["rules", "def_duplicate"], &[], b""));
     assert!(one.starts_with("DEF_DUPLICATE\nseverity: error"), "{one}");
@@ -344,9 +408,17 @@ fn rules_as_json_for_tools() {
     for key in ["severity", "level", "versions", "clause", "summary", "doc"] {
         assert!(range[key].is_string(), "{key}: {range}");
     }
-    assert!(range["summary"].as_str().unwrap().ends_with("in 4.x)."), "{range}");
+    assert!(
+        range["summary"].as_str().unwrap().ends_with("in 4.x)."),
+        "{range}"
+    );
     assert!(range["doc"].as_str().unwrap().contains("## What it does"));
-    let one = run(&dir, &["rules", "DEF_DUPLICATE", "--format", "json"], &[], b"");
+    let one = run(
+        &dir,
+        &["rules", "DEF_DUPLICATE", "--format", "json"],
+        &[],
+        b"",
+    );
     let list: Vec<serde_json::Value> = serde_json::from_slice(&one.stdout).unwrap();
     assert_eq!(list.len(), 1);
     let unknown = run(&dir, &["rules", "NO_SUCH_CODE"], &[], b"");

@@ -25,9 +25,13 @@ fn the_only_binary_is_x3dcheck() {
         .collect();
     assert_eq!(bins, ["x3dcheck"]);
     // Cargo would also find binaries in src/bin/ by itself.
-    assert!(!Path::new(env!("CARGO_MANIFEST_DIR")).join("src/bin").exists());
+    assert!(!Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("src/bin")
+        .exists());
     let examples = manifest["example"].as_array().unwrap();
-    assert!(examples.iter().any(|e| e["name"].as_str() == Some("x3dcheck-bench")));
+    assert!(examples
+        .iter()
+        .any(|e| e["name"].as_str() == Some("x3dcheck-bench")));
 }
 
 #[test]
@@ -38,7 +42,10 @@ fn release_builds_carry_no_debug_information() {
         .get("release")
         .and_then(|release| release.get("debug"));
     assert!(
-        matches!(debug, None | Some(toml::Value::Boolean(false)) | Some(toml::Value::Integer(0))),
+        matches!(
+            debug,
+            None | Some(toml::Value::Boolean(false)) | Some(toml::Value::Integer(0))
+        ),
         "{debug:?}"
     );
     let profiling = profiles["profiling"].as_table().unwrap();
@@ -64,11 +71,7 @@ fn the_licences_cargo_toml_names_are_there() {
 #[test]
 fn the_pre_commit_hook_runs_x3dcheck_on_scene_files() {
     let hooks = repository_file(".pre-commit-hooks.yaml");
-    for line in [
-        "- id: x3dcheck",
-        "  entry: x3dcheck",
-        "  language: rust",
-    ] {
+    for line in ["- id: x3dcheck", "  entry: x3dcheck", "  language: rust"] {
         assert!(hooks.lines().any(|l| l == line), "{line}:\n{hooks}");
     }
     let files = hooks

@@ -141,7 +141,9 @@ fn compare(actual: &image::RgbaImage, reference: &image::RgbaImage, case: &Path)
 
 #[test]
 fn a_far_away_tiny_box_renders_like_a_big_one_at_the_origin() {
-    if !x3dcheck::render::adapter_for_test("a_far_away_tiny_box_renders_like_a_big_one_at_the_origin") {
+    if !x3dcheck::render::adapter_for_test(
+        "a_far_away_tiny_box_renders_like_a_big_one_at_the_origin",
+    ) {
         return;
     }
     // The Viewpoint and the box share a Transform placing both at x = 1,000,000; only
@@ -185,7 +187,8 @@ fn a_far_away_tiny_box_renders_like_a_big_one_at_the_origin() {
 
 #[test]
 fn exponential_use_expansion_renders_quickly_with_a_note() {
-    if !x3dcheck::render::adapter_for_test("exponential_use_expansion_renders_quickly_with_a_note") {
+    if !x3dcheck::render::adapter_for_test("exponential_use_expansion_renders_quickly_with_a_note")
+    {
         return;
     }
     // 2^199 Group instances in 12 KB (as in tests/mutations.rs), then one Box.
@@ -227,7 +230,9 @@ fn exponential_use_expansion_renders_quickly_with_a_note() {
 
 #[test]
 fn coordinate_double_far_from_the_origin_keeps_its_precision() {
-    if !x3dcheck::render::adapter_for_test("coordinate_double_far_from_the_origin_keeps_its_precision") {
+    if !x3dcheck::render::adapter_for_test(
+        "coordinate_double_far_from_the_origin_keeps_its_precision",
+    ) {
         return;
     }
     // A 0.001-wide quad made of CoordinateDouble points at x = 10,000,000 (where f32 steps
@@ -278,7 +283,9 @@ fn coordinate_double_far_from_the_origin_keeps_its_precision() {
 
 #[test]
 fn one_open_device_draws_several_images_like_a_device_each() {
-    if !x3dcheck::render::adapter_for_test("one_open_device_draws_several_images_like_a_device_each") {
+    if !x3dcheck::render::adapter_for_test(
+        "one_open_device_draws_several_images_like_a_device_each",
+    ) {
         return;
     }
     // Two different cases in turn on one device: nothing of the first may leak into the
@@ -346,5 +353,8 @@ fn no_adapter_skips_loudly_or_fails() {
     );
     let (passed, text) = run(true);
     assert!(!passed, "{text}");
-    assert!(text.contains("X3DCHECK_REQUIRE_GPU=1 requires one"), "{text}");
+    assert!(
+        text.contains("X3DCHECK_REQUIRE_GPU=1 requires one"),
+        "{text}"
+    );
 }

@@ -105,7 +105,10 @@ mod tests {
             ..ColorEnv::default()
         };
         assert!(auto(&clicolor_1, true), "CLICOLOR=1 on a dumb terminal");
-        assert!(!auto(&clicolor_1, false), "CLICOLOR=1 does not colour a pipe");
+        assert!(
+            !auto(&clicolor_1, false),
+            "CLICOLOR=1 does not colour a pipe"
+        );
         let ci = ColorEnv {
             is_ci: true,
             ..ColorEnv::default()

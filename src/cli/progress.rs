@@ -27,9 +27,8 @@ impl Progress {
     /// The progress of a batch of `files`; `report_to_file`: the report goes to `-o FILE`;
     /// `quiet`: nothing but the findings is wanted (`--quiet`).
     pub fn start(files: usize, report_to_file: bool, quiet: bool) -> Progress {
-        let watched = !quiet
-            && io::stderr().is_terminal()
-            && (report_to_file || io::stdout().is_terminal());
+        let watched =
+            !quiet && io::stderr().is_terminal() && (report_to_file || io::stdout().is_terminal());
         let bar = (watched && files > 1).then(|| {
             let bar =
                 ProgressBar::with_draw_target(Some(files as u64), ProgressDrawTarget::hidden());

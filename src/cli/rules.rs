@@ -89,8 +89,7 @@ fn table(rules: &[&Rule]) -> String {
         .collect();
     let clause_start: usize = widths.iter().map(|w| w + 2).sum();
     let clause_width = WIDTH.saturating_sub(clause_start).max(16);
-    let mut out = String::new();
-    let mut line = |cells: &[&str], clause: &str| {
+    let line = |cells: &[&str], clause: &str| {
         let mut text = String::new();
         for (cell, width) in cells.iter().zip(&widths) {
             text.push_str(&format!("{cell:width$}  "));
@@ -102,13 +101,14 @@ fn table(rules: &[&Rule]) -> String {
             }
             text.push_str(part);
         }
-        out.push_str(text.trim_end());
-        out.push('\n');
+        let mut text = text.trim_end().to_string();
+        text.push('\n');
+        text
     };
-    line(&header[..4], header[4]);
+    let mut out = line(&header[..4], header[4]);
     for (rule, row) in rules.iter().zip(&rows) {
         let cells: Vec<&str> = row.iter().map(String::as_str).collect();
-        line(&cells, rule.clause);
+        out.push_str(&line(&cells, rule.clause));
         let options = textwrap::Options::new(WIDTH)
             .initial_indent(SUMMARY_INDENT)
             .subsequent_indent(SUMMARY_INDENT);

@@ -12,9 +12,14 @@ pub fn show(name: &str, effective: &Effective) -> String {
     let mut out = format!("# Settings for {name}\n");
     match &effective.file {
         Some(file) => {
-            let _ = writeln!(out, "# from {}, with the command line over it", file.display());
+            let _ = writeln!(
+                out,
+                "# from {}, with the command line over it",
+                file.display()
+            );
         }
-        None => out.push_str("# no x3dcheck.toml found: the defaults, with the command line over them\n"),
+        None => out
+            .push_str("# no x3dcheck.toml found: the defaults, with the command line over them\n"),
     }
     if let Some(root) = &check.root {
         let _ = writeln!(
@@ -24,7 +29,16 @@ pub fn show(name: &str, effective: &Effective) -> String {
         );
     }
     let _ = writeln!(out, "level = \"{}\"", check.level.as_str());
-    let _ = writeln!(out, "select = {}{}", list(&check.select), if check.select.is_empty() { "  # empty: every code" } else { "" });
+    let _ = writeln!(
+        out,
+        "select = {}{}",
+        list(&check.select),
+        if check.select.is_empty() {
+            "  # empty: every code"
+        } else {
+            ""
+        }
+    );
     let _ = writeln!(out, "ignore = {}", list(&check.ignore));
     let _ = writeln!(out, "fail-on = \"{}\"", effective.fail_on);
     match check.max_diagnostics {

@@ -189,7 +189,10 @@ mod tests {
             first_sentence(text),
             "Reports a value (e.g. `a. b` is [0,∞) in 4.x)."
         );
-        assert_eq!(first_sentence("Uses i.e. this, etc. too. Next."), "Uses i.e. this, etc. too.");
+        assert_eq!(
+            first_sentence("Uses i.e. this, etc. too. Next."),
+            "Uses i.e. this, etc. too."
+        );
         assert_eq!(first_sentence("Version 3.3 only."), "Version 3.3 only.");
         assert_eq!(first_sentence("No full stop"), "No full stop");
     }
