@@ -1,10 +1,14 @@
 //! The command line: arguments, finding the inputs (of one shard, `--shard`), checking them
 //! in parallel, writing the report, and the exit code — 0 nothing at or above the fail
 //! level, 1 something is, 2 usage, I/O or internal failure ("could not be checked" is never
-//! "invalid"). `merge` combines JSON reports ([`merge`]); [`progress`] draws the bar.
+//! "invalid"). `merge` combines JSON reports ([`merge`]); `rules` lists them ([`rules`]);
+//! [`progress`] draws the bar; [`color`] decides on colour; [`settings`] shows what applies.
 
+mod color;
 mod merge;
 mod progress;
+mod rules;
+mod settings;
 
 use std::borrow::Cow;
 use std::fs;
@@ -15,13 +19,16 @@ use std::process::ExitCode;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use rayon::prelude::*;
 
+use x3dcheck::check::STDIN_NAME;
 use x3dcheck::config::CheckConfig;
-use x3dcheck::config_file::{known_code, Effective, Resolver, Settings};
+use x3dcheck::config_file::{select_codes, Effective, Resolver, Settings};
 use x3dcheck::model::MAX_INPUT_BYTES;
 use x3dcheck::report::{concise, github, human, json, junit, sarif, statistics};
 use x3dcheck::report::{FileReport, Summary};
 use x3dcheck::shard::Shard;
-use x3dcheck::validate::{Level, Rule, Severity, RULES};
+use x3dcheck::validate::{Level, Severity};
+
+use color::{ColorChoice, ColorEnv};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -29,7 +36,8 @@ use x3dcheck::validate::{Level, Rule, Severity, RULES};
     version,
     about = "Checks X3D scene documents (XML and JSON encodings) like a compiler",
     args_conflicts_with_subcommands = true,
-    subcommand_negates_reqs = true
+    subcommand_negates_reqs = true,
+    after_help = EXIT_CODES
 )]
 pub struct Cli {
     #[command(subcommand)]
@@ -41,10 +49,7 @@ pub struct Cli {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// List the rules, or explain one
-    Rules {
-        /// A rule code, e.g. DEF_DUPLICATE
-        code: Option<String>,
-    },
+    Rules(rules::RulesArgs),
     /// Combine JSON reports (e.g. of `--shard K/N` runs) into the report of one run
     Merge(merge::MergeArgs),
 }
@@ -63,13 +68,14 @@ struct CheckArgs {
     /// Write the report to FILE instead of stdout
     #[arg(short, long, value_name = "FILE")]
     output: Option<PathBuf>,
-    /// Report only these codes
+    /// Report only these codes: each a code, a prefix of codes (BACK_MATERIAL_) or ALL, in
+    /// any case
     #[arg(long, value_delimiter = ',', value_name = "CODE,...")]
     select: Vec<String>,
-    /// Do not report these codes
+    /// Do not report these codes (codes, prefixes or ALL, as --select)
     #[arg(long, value_delimiter = ',', value_name = "CODE,...")]
     ignore: Vec<String>,
-    /// Change the severity of codes (error, warning, info, hint)
+    /// Change the severity of codes (error, warning, info, hint); codes as --select
     #[arg(long, value_delimiter = ',', value_name = "CODE=LEVEL,...")]
     severity: Vec<String>,
     /// Exit with 1 when a diagnostic of this severity or above is reported [default: error]
@@ -104,9 +110,28 @@ struct CheckArgs {
     /// `x3dcheck merge` combines the shards' JSON reports.
     #[arg(long, value_name = "K/N")]
     shard: Option<Shard>,
-    /// No colours in the human format
-    #[arg(long)]
+    /// When to colour the human report: `auto` colours on a terminal unless NO_COLOR,
+    /// CLICOLOR=0 or TERM=dumb says otherwise, and anywhere when CLICOLOR_FORCE or
+    /// FORCE_COLOR asks
+    #[arg(long, value_enum, value_name = "WHEN", default_value_t = ColorChoice::Auto)]
+    color: ColorChoice,
+    /// Same as --color never
+    #[arg(long, hide = true)]
     no_color: bool,
+    /// Print the findings only: no summary line and no progress bar
+    #[arg(short, long)]
+    quiet: bool,
+    /// Exit with 0 even when findings reach the fail level (2 still reports a failure)
+    #[arg(long)]
+    exit_zero: bool,
+    /// The file name standard input (`-`) is checked as: the report names it, references
+    /// (deep level) are resolved from its directory and x3dcheck.toml is looked up from there
+    #[arg(long, value_name = "NAME")]
+    stdin_filename: Option<PathBuf>,
+    /// Print the settings that apply to the first input, and the x3dcheck.toml they come
+    /// from, instead of checking
+    #[arg(long)]
+    show_settings: bool,
     #[command(flatten)]
     render: x3dcheck::render::RenderArgs,
 }
@@ -132,9 +157,17 @@ enum FailOn {
 
 const USAGE: u8 = 2;
 
+const EXIT_CODES: &str = "\
+Exit codes:
+  0  no finding at or above the fail level (--fail-on), or --exit-zero
+  1  a finding at or above the fail level
+  2  a usage or configuration error, an input that could not be read, or an internal failure";
+
 pub fn run(cli: Cli) -> ExitCode {
     let result = match cli.command {
-        Some(Command::Rules { code }) => rules(code.as_deref()),
+        Some(Command::Rules(args)) => rules::rules(&args)
+            .and_then(|text| write_output(None, &text))
+            .map(|()| ExitCode::SUCCESS),
         Some(Command::Merge(args)) => merge::merge(&args),
         None => check(&cli.check),
     };
@@ -151,10 +184,17 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
     check_statistics_format(args.statistics, args.format)?;
     let mut resolver =
         Resolver::new(args.config.as_deref(), settings(args)?).map_err(|e| e.to_string())?;
-    let color = !args.no_color
-        && args.output.is_none()
-        && io::stdout().is_terminal()
-        && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty());
+    let color_choice = if args.no_color {
+        ColorChoice::Never
+    } else {
+        args.color
+    };
+    let terminal = args.output.is_none() && io::stdout().is_terminal();
+    let color = color::use_color(color_choice, &ColorEnv::from_process(), terminal);
+    let stdin_name = args
+        .stdin_filename
+        .as_ref()
+        .map_or(STDIN_NAME.to_string(), |name| name.display().to_string());
     let (inputs, mut failed) = find_inputs(&args.paths, args.shard);
     for output in [&args.output, &args.render.render].into_iter().flatten() {
         refuse_input_as_output(&inputs, output)?;
@@ -163,7 +203,13 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
     let configs = inputs
         .iter()
         .map(|input| match input {
-            Input::Stdin(_) => resolver.for_file(None),
+            Input::Stdin(_) => match &args.stdin_filename {
+                None => resolver.for_file(None),
+                Some(name) => resolver.for_file(Some(name)).map(|mut effective| {
+                    effective.check.root = Some(file_root(name));
+                    effective
+                }),
+            },
             Input::File { path, root } => resolver.for_file(Some(path)).map(|mut effective| {
                 effective.check.root = Some(root.clone());
                 effective
@@ -171,6 +217,17 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
         })
         .collect::<Result<Vec<Effective>, _>>()
         .map_err(|e| e.to_string())?;
+    if args.show_settings {
+        let (Some(input), Some(effective)) = (inputs.first(), configs.first()) else {
+            return Err("--show-settings: no input to show the settings of".to_string());
+        };
+        let name = match input {
+            Input::Stdin(_) => stdin_name.clone(),
+            Input::File { path, .. } => path.display().to_string(),
+        };
+        write_output(None, &settings::show(&name, effective))?;
+        return Ok(ExitCode::from(if failed { USAGE } else { 0 }));
+    }
     let text_format = (!args.statistics).then_some(args.format);
     if args.render.render.is_some() && inputs.len() != 1 {
         return Err("--render takes exactly one input scene".to_string());
@@ -179,13 +236,20 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
         .num_threads(args.jobs.unwrap_or(0))
         .build()
         .map_err(|e| format!("cannot start worker threads: {e}"))?;
-    let progress = progress::Progress::start(inputs.len(), args.output.is_some());
+    let progress = progress::Progress::start(inputs.len(), args.output.is_some(), args.quiet);
     let outcomes: Vec<Outcome> = pool.install(|| {
         inputs
             .par_iter()
             .zip(&configs)
             .map(|(input, config)| {
-                let outcome = check_input(input, &config.check, text_format, color, &args.render);
+                let outcome = check_input(
+                    input,
+                    &stdin_name,
+                    &config.check,
+                    text_format,
+                    color,
+                    &args.render,
+                );
                 progress.file_done();
                 outcome
             })
@@ -216,11 +280,18 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
     let report = ReportOutput {
         format: args.format,
         statistics: args.statistics,
+        // A summary of no file at all, when the inputs could not be read, would read
+        // like a clean run.
+        summary: !args.quiet && !(failed && reports.is_empty()),
         shard: args.shard,
         output: args.output.as_deref(),
     };
     let fails = report.write(&reports, &fail_levels, text)?;
-    Ok(ExitCode::from(if failed { USAGE } else { u8::from(fails) }))
+    Ok(ExitCode::from(if failed {
+        USAGE
+    } else {
+        u8::from(fails && !args.exit_zero)
+    }))
 }
 
 fn check_statistics_format(statistics: bool, format: Format) -> Result<(), String> {
@@ -234,6 +305,8 @@ fn check_statistics_format(statistics: bool, format: Format) -> Result<(), Strin
 struct ReportOutput<'a> {
     format: Format,
     statistics: bool,
+    /// Whether the human and concise formats and statistics tables end with the summary line.
+    summary: bool,
     /// The part of a split the run checked, said in the JSON report.
     shard: Option<Shard>,
     output: Option<&'a Path>,
@@ -256,16 +329,20 @@ impl ReportOutput<'_> {
             }
             (true, _) => {
                 text = statistics::render_text(&statistics::of(reports));
-                text.push_str(&human::summary_line(&summary));
-                text.push('\n');
+                if self.summary {
+                    text.push_str(&human::summary_line(&summary));
+                    text.push('\n');
+                }
             }
             (false, Format::Json) => text = json::render(reports, self.shard),
             (false, Format::Sarif) => text = sarif::render(reports),
             (false, Format::Junit) => text = junit::render(reports, fail_levels),
             (false, Format::Github) => {}
             (false, Format::Human | Format::Concise) => {
-                text.push_str(&human::summary_line(&summary));
-                text.push('\n');
+                if self.summary {
+                    text.push_str(&human::summary_line(&summary));
+                    text.push('\n');
+                }
             }
         }
         write_output(self.output, &text)?;
@@ -285,11 +362,8 @@ fn fail_level(fail_on: FailOn) -> Severity {
 
 /// The settings the command line gives; they win over x3dcheck.toml.
 fn settings(args: &CheckArgs) -> Result<Settings, String> {
-    let code = |code: &str, option: &str| {
-        known_code(code)
-            .map(|r| r.code.to_string())
-            .map_err(|e| format!("{option}: {e}"))
-    };
+    let codes =
+        |selector: &str, option: &str| select_codes(selector).map_err(|e| format!("{option}: {e}"));
     let mut settings = Settings {
         level: args.level,
         fail_on: args.fail_on.map(fail_level),
@@ -298,21 +372,25 @@ fn settings(args: &CheckArgs) -> Result<Settings, String> {
         ..Settings::default()
     };
     if !args.select.is_empty() {
-        let select = args.select.iter().map(|c| code(c, "--select"));
-        settings.select = Some(select.collect::<Result<_, _>>()?);
+        let mut select = Vec::new();
+        for selector in &args.select {
+            select.extend(codes(selector, "--select")?);
+        }
+        settings.select = Some(select);
     }
-    for c in &args.ignore {
-        settings.ignore.push(code(c, "--ignore")?);
+    for selector in &args.ignore {
+        settings.ignore.extend(codes(selector, "--ignore")?);
     }
     for item in &args.severity {
-        let (c, level) = item
+        let (selector, level) = item
             .split_once('=')
             .ok_or_else(|| format!("--severity takes CODE=LEVEL, not `{item}`"))?;
-        let c = code(c, "--severity")?;
         let level = Severity::parse(level).ok_or_else(|| {
-            format!("unknown severity `{level}` for {c} (error, warning, info or hint)")
+            format!("unknown severity `{level}` for {selector} (error, warning, info or hint)")
         })?;
-        settings.severity.push((c, level));
+        for code in codes(selector, "--severity")? {
+            settings.severity.push((code, level));
+        }
     }
     if let Some(tolerance) = args.normal_tolerance {
         if !(tolerance.is_finite() && tolerance >= 0.0) {
@@ -323,11 +401,6 @@ fn settings(args: &CheckArgs) -> Result<Settings, String> {
         settings.normal_tolerance = Some(tolerance);
     }
     Ok(settings)
-}
-
-/// The rule of a code, or a usage error naming the nearest code.
-fn known_rule(code: &str, option: &str) -> Result<&'static Rule, String> {
-    known_code(code).map_err(|e| format!("{option}: {e}"))
 }
 
 enum Input {
@@ -471,15 +544,17 @@ struct Checked {
 }
 
 /// `format` is the format rendered per file (`None`: nothing, `--statistics`).
+/// `stdin_name`: the name standard input is checked as.
 fn check_input(
     input: &Input,
+    stdin_name: &str,
     config: &CheckConfig,
     format: Option<Format>,
     color: bool,
     render: &x3dcheck::render::RenderArgs,
 ) -> Outcome {
     let (name, bytes) = match input {
-        Input::Stdin(bytes) => ("<stdin>".to_string(), Cow::Borrowed(&bytes[..])),
+        Input::Stdin(bytes) => (stdin_name.to_string(), Cow::Borrowed(&bytes[..])),
         Input::File { path, .. } => {
             let name = path.display().to_string();
             match read_file(path) {
@@ -570,57 +645,4 @@ fn write_output(output: Option<&Path>, text: &str) -> Result<(), String> {
             .write_all(text.as_bytes())
             .map_err(|e| format!("cannot write the report: {e}")),
     }
-}
-
-fn rules(code: Option<&str>) -> Result<ExitCode, String> {
-    let text = match code {
-        None => rule_table(),
-        Some(code) => explain(known_rule(code, "rules")?),
-    };
-    write_output(None, &text)?;
-    Ok(ExitCode::SUCCESS)
-}
-
-fn rule_table() -> String {
-    let summaries: Vec<String> = RULES.iter().map(|r| r.summary()).collect();
-    let mut rows = vec![["CODE", "SEVERITY", "LEVEL", "VERSIONS", "CLAUSE", "SUMMARY"]];
-    rows.extend(RULES.iter().zip(&summaries).map(|(r, summary)| {
-        let (severity, level) = (r.severity.as_str(), r.level.as_str());
-        [
-            r.code,
-            severity,
-            level,
-            r.versions,
-            r.clause,
-            summary.as_str(),
-        ]
-    }));
-    let widths: Vec<usize> = (0..5)
-        .map(|column| rows.iter().map(|row| row[column].len()).max().unwrap_or(0))
-        .collect();
-    let mut out = String::new();
-    for row in rows {
-        for (cell, width) in row.iter().zip(&widths) {
-            out.push_str(&format!("{cell:width$}  "));
-        }
-        out.push_str(row[5]);
-        out.push('\n');
-    }
-    out
-}
-
-fn explain(rule: &Rule) -> String {
-    let mut out = format!(
-        "{}\nseverity: {}  level: {}  versions: {}  clause: {}\n\n",
-        rule.code,
-        rule.severity,
-        rule.level.as_str(),
-        rule.versions,
-        rule.clause
-    );
-    for line in rule.doc.lines() {
-        out.push_str(line.strip_prefix(' ').unwrap_or(line));
-        out.push('\n');
-    }
-    out
 }

@@ -136,3 +136,20 @@ fn every_catalogue_code_is_implemented_as_catalogued() {
         problems.join("\n")
     );
 }
+
+/// Listings show each rule's first sentence: whole, never cut inside brackets or after an
+/// abbreviation.
+#[test]
+fn every_summary_is_a_whole_sentence() {
+    let mut problems = Vec::new();
+    for rule in x3dcheck::validate::RULES.iter() {
+        let summary = rule.summary();
+        let opened = summary.matches(['(', '[']).count();
+        let closed = summary.matches([')', ']']).count();
+        let cut = summary.ends_with("e.g.") || summary.ends_with("i.e.");
+        if !summary.ends_with('.') || opened != closed || cut {
+            problems.push(format!("{}: {summary}", rule.code));
+        }
+    }
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}

@@ -151,7 +151,7 @@ fn errors_name_file_line_and_the_nearest_name() {
     let message = stderr(&output);
     assert!(
         message.contains(
-            "x3dcheck.toml:3:11: unknown rule code `DEF_DUPLICAT` (did you mean `DEF_DUPLICATE`?)"
+            "x3dcheck.toml:3:11: `DEF_DUPLICAT` is no rule code, code prefix or ALL (did you mean `DEF_DUPLICATE`?)"
         ),
         "{message}"
     );

@@ -244,8 +244,7 @@ fn render_at_fast_keeps_the_values_and_draws_what_standard_draws() {
 #[cfg(feature = "render")]
 #[test]
 fn cli_render_at_fast_draws_the_standard_image() {
-    if std::env::var_os("X3DCHECK_NO_GPU").is_some_and(|v| v == "1") {
-        eprintln!("fast-level render SKIPPED: X3DCHECK_NO_GPU=1 says no renderer is expected");
+    if !x3dcheck::render::adapter_for_test("cli_render_at_fast_draws_the_standard_image") {
         return;
     }
     let case = Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus/render/ifs_concave_face_colors");

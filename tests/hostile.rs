@@ -326,8 +326,7 @@ fn image_bombs_are_refused_before_decoding() {
 #[cfg(feature = "render")]
 #[test]
 fn image_bombs_are_not_drawn() {
-    if std::env::var_os("X3DCHECK_NO_GPU").is_some_and(|v| v == "1") {
-        eprintln!("render test SKIPPED: X3DCHECK_NO_GPU=1");
+    if !x3dcheck::render::adapter_for_test("image_bombs_are_not_drawn") {
         return;
     }
     use x3dcheck::render::{render_image, ImageSize, Quality, RenderArgs};

@@ -9,7 +9,8 @@
 //!    at exactly the radius is lit; one beyond is not; Table 17.4's spot cases; Table
 //!    17.5's fog cases).
 //!
-//! `X3DCHECK_NO_GPU=1` skips the GPU part, loudly.
+//! Without a graphics adapter the GPU part is skipped, loudly
+//! ([`x3dcheck::render::adapter_for_test`]).
 #![cfg(feature = "render")]
 
 use std::path::Path;
@@ -109,14 +110,6 @@ struct Lit {
     factor: f32,
     physical: [f32; 3],
     fog: f32,
-}
-
-fn no_gpu() -> bool {
-    let skip = std::env::var_os("X3DCHECK_NO_GPU").is_some_and(|v| v == "1");
-    if skip {
-        eprintln!("lighting kernel SKIPPED: X3DCHECK_NO_GPU=1 says no renderer is expected");
-    }
-    skip
 }
 
 /// Runs the cases through the kernel.
@@ -371,7 +364,7 @@ proptest! {
     fn the_lighting_equations_stay_finite_and_in_range(
         cases in proptest::collection::vec(prop_oneof![case(), aligned_case()], 2048)
     ) {
-        if no_gpu() {
+        if !x3dcheck::render::adapter_for_test("the_lighting_equations_stay_finite_and_in_range") {
             return Ok(());
         }
         for (c, lit) in cases.iter().zip(run(&cases)) {
@@ -414,7 +407,7 @@ fn point_light(radius: f32, location_x: f32) -> Case {
 
 #[test]
 fn decisions_at_the_bounds_are_exact() {
-    if no_gpu() {
+    if !x3dcheck::render::adapter_for_test("decisions_at_the_bounds_are_exact") {
         return;
     }
     let next_up = |v: f32| f32::from_bits(v.to_bits() + 1);

@@ -6,8 +6,10 @@
 //! On failure `actual.png` and `diff.png` are written next to the reference.
 //!
 //! `X3DCHECK_UPDATE_REFERENCES=1` rewrites the references (look at each before
-//! committing). `X3DCHECK_NO_GPU=1` says no renderer is expected: the cases are skipped,
-//! loudly. Otherwise a missing adapter is a failure.
+//! committing). On a machine without a graphics adapter each test is skipped with one line
+//! saying what to install, unless `X3DCHECK_REQUIRE_GPU=1` (set by CI) makes that a
+//! failure ([`x3dcheck::render::adapter_for_test`]); `no_adapter_skips_loudly_or_fails`
+//! runs this file's tests with no adapter to see both.
 #![cfg(feature = "render")]
 
 use std::path::{Path, PathBuf};
@@ -76,8 +78,7 @@ fn case_args(case: &Path) -> RenderArgs {
 
 #[test]
 fn render_cases_match_their_references() {
-    if std::env::var_os("X3DCHECK_NO_GPU").is_some_and(|v| v == "1") {
-        eprintln!("render cases SKIPPED: X3DCHECK_NO_GPU=1 says no renderer is expected");
+    if !x3dcheck::render::adapter_for_test("render_cases_match_their_references") {
         return;
     }
     let update = std::env::var_os("X3DCHECK_UPDATE_REFERENCES").is_some_and(|v| v == "1");
@@ -140,8 +141,9 @@ fn compare(actual: &image::RgbaImage, reference: &image::RgbaImage, case: &Path)
 
 #[test]
 fn a_far_away_tiny_box_renders_like_a_big_one_at_the_origin() {
-    if std::env::var_os("X3DCHECK_NO_GPU").is_some_and(|v| v == "1") {
-        eprintln!("precision test SKIPPED: X3DCHECK_NO_GPU=1");
+    if !x3dcheck::render::adapter_for_test(
+        "a_far_away_tiny_box_renders_like_a_big_one_at_the_origin",
+    ) {
         return;
     }
     // The Viewpoint and the box share a Transform placing both at x = 1,000,000; only
@@ -185,8 +187,8 @@ fn a_far_away_tiny_box_renders_like_a_big_one_at_the_origin() {
 
 #[test]
 fn exponential_use_expansion_renders_quickly_with_a_note() {
-    if std::env::var_os("X3DCHECK_NO_GPU").is_some_and(|v| v == "1") {
-        eprintln!("expansion test SKIPPED: X3DCHECK_NO_GPU=1");
+    if !x3dcheck::render::adapter_for_test("exponential_use_expansion_renders_quickly_with_a_note")
+    {
         return;
     }
     // 2^199 Group instances in 12 KB (as in tests/mutations.rs), then one Box.
@@ -228,8 +230,9 @@ fn exponential_use_expansion_renders_quickly_with_a_note() {
 
 #[test]
 fn coordinate_double_far_from_the_origin_keeps_its_precision() {
-    if std::env::var_os("X3DCHECK_NO_GPU").is_some_and(|v| v == "1") {
-        eprintln!("precision test SKIPPED: X3DCHECK_NO_GPU=1");
+    if !x3dcheck::render::adapter_for_test(
+        "coordinate_double_far_from_the_origin_keeps_its_precision",
+    ) {
         return;
     }
     // A 0.001-wide quad made of CoordinateDouble points at x = 10,000,000 (where f32 steps
@@ -280,8 +283,9 @@ fn coordinate_double_far_from_the_origin_keeps_its_precision() {
 
 #[test]
 fn one_open_device_draws_several_images_like_a_device_each() {
-    if std::env::var_os("X3DCHECK_NO_GPU").is_some_and(|v| v == "1") {
-        eprintln!("shared-device test SKIPPED: X3DCHECK_NO_GPU=1");
+    if !x3dcheck::render::adapter_for_test(
+        "one_open_device_draws_several_images_like_a_device_each",
+    ) {
         return;
     }
     // Two different cases in turn on one device: nothing of the first may leak into the
@@ -309,4 +313,48 @@ fn one_open_device_draws_several_images_like_a_device_each() {
             "{name}: the shared device drew another image"
         );
     }
+}
+
+/// With no adapter (Vulkan alone, and no Vulkan driver, as on a machine without Mesa), a
+/// drawing test passes with one line saying what to install; under
+/// `X3DCHECK_REQUIRE_GPU=1` it fails. Runs this test binary again on one test.
+#[test]
+fn no_adapter_skips_loudly_or_fails() {
+    let run = |require: bool| {
+        let mut command = std::process::Command::new(std::env::current_exe().unwrap());
+        command
+            .args(["--exact", "render_cases_match_their_references"])
+            .env("WGPU_BACKEND", "vulkan")
+            .env("VK_DRIVER_FILES", "/nonexistent/icd.json")
+            .env("VK_ICD_FILENAMES", "/nonexistent/icd.json")
+            .env_remove("VK_ADD_DRIVER_FILES");
+        if require {
+            command.env(x3dcheck::render::REQUIRE_GPU, "1");
+        } else {
+            command.env_remove(x3dcheck::render::REQUIRE_GPU);
+        }
+        let output = command.output().unwrap();
+        let text = format!(
+            "{}{}",
+            String::from_utf8_lossy(&output.stdout),
+            String::from_utf8_lossy(&output.stderr)
+        );
+        (output.status.success(), text)
+    };
+    let (passed, text) = run(false);
+    assert!(passed, "{text}");
+    assert!(text.contains("1 passed"), "{text}");
+    let skip_lines: Vec<&str> = text.lines().filter(|l| l.starts_with("SKIPPED")).collect();
+    assert_eq!(skip_lines.len(), 1, "{text}");
+    assert!(
+        skip_lines[0].contains("render_cases_match_their_references: no graphics adapter")
+            && skip_lines[0].contains("apt-get install mesa-vulkan-drivers"),
+        "{text}"
+    );
+    let (passed, text) = run(true);
+    assert!(!passed, "{text}");
+    assert!(
+        text.contains("X3DCHECK_REQUIRE_GPU=1 requires one"),
+        "{text}"
+    );
 }

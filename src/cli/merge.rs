@@ -77,6 +77,7 @@ pub fn merge(args: &MergeArgs) -> Result<ExitCode, String> {
     let output = ReportOutput {
         format: args.format,
         statistics: args.statistics,
+        summary: true,
         shard: None,
         output: args.output.as_deref(),
     };

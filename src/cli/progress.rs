@@ -2,8 +2,8 @@
 //! run: stderr is a terminal and the report goes to the terminal too or to `-o FILE` (not
 //! into a pipe or a redirected stdout, nor in CI logs); and only for a batch still running
 //! after [`DELAY`], so quick runs never flash a bar. It is cleared before the report is
-//! written, so it never mixes with it. It has no colours: nothing for `NO_COLOR` or
-//! `--no-color` to switch off.
+//! written, so it never mixes with it. `--quiet` leaves it out. It has no colours: nothing
+//! for `NO_COLOR` or `--color never` to switch off.
 
 use std::io::{self, IsTerminal};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -24,9 +24,11 @@ pub struct Progress {
 }
 
 impl Progress {
-    /// The progress of a batch of `files`; `report_to_file`: the report goes to `-o FILE`.
-    pub fn start(files: usize, report_to_file: bool) -> Progress {
-        let watched = io::stderr().is_terminal() && (report_to_file || io::stdout().is_terminal());
+    /// The progress of a batch of `files`; `report_to_file`: the report goes to `-o FILE`;
+    /// `quiet`: nothing but the findings is wanted (`--quiet`).
+    pub fn start(files: usize, report_to_file: bool, quiet: bool) -> Progress {
+        let watched =
+            !quiet && io::stderr().is_terminal() && (report_to_file || io::stdout().is_terminal());
         let bar = (watched && files > 1).then(|| {
             let bar =
                 ProgressBar::with_draw_target(Some(files as u64), ProgressDrawTarget::hidden());

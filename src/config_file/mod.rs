@@ -27,10 +27,13 @@
 //! The command line wins over the file: `--level`, `--fail-on`, `--max-diagnostics`,
 //! `--no-fold` and `--normal-tolerance` replace the file's value, `--select` replaces its
 //! `select`, `--ignore` adds to its `ignore`, and `--severity` overrides it code by code.
-//! Unknown keys, codes, levels and severities are configuration errors (exit 2) naming the
-//! file, line and column, with the nearest valid name.
+//! Codes may be given as selectors ([`selector`]: any case, a prefix of whole words such as
+//! `BACK_MATERIAL_`, or `ALL`). Unknown keys, levels and severities, and selectors matching
+//! no code, are configuration errors (exit 2) naming the file, line and column, with the
+//! nearest valid name.
 
 pub mod glob;
+pub mod selector;
 
 use std::collections::{BTreeMap, HashMap};
 use std::fmt;
@@ -42,8 +45,9 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use crate::config::CheckConfig;
-use crate::validate::{find_rule, suggest, Level, Rule, Severity, RULES};
+use crate::validate::{suggest, Level, Severity};
 use glob::Glob;
+pub use selector::{select, select_codes};
 
 /// The file name searched for.
 pub const FILE_NAME: &str = "x3dcheck.toml";
@@ -198,12 +202,16 @@ impl ConfigFile {
             let span = e.span().unwrap_or(0..0);
             error(span, toml_message(e.message()))
         })?;
-        let code = |code: &Spanned<String>| -> Result<String, ConfigError> {
-            known_code(code.get_ref())
-                .map(|r| r.code.to_string())
-                .map_err(|m| error(code.span(), m))
+        let codes_of = |selector: &Spanned<String>| -> Result<Vec<String>, ConfigError> {
+            select_codes(selector.get_ref()).map_err(|m| error(selector.span(), m))
         };
-        let codes = |list: &[Spanned<String>]| list.iter().map(code).collect::<Result<Vec<_>, _>>();
+        let codes = |list: &[Spanned<String>]| -> Result<Vec<String>, ConfigError> {
+            let mut codes = Vec::new();
+            for selector in list {
+                codes.extend(codes_of(selector)?);
+            }
+            Ok(codes)
+        };
         let mut settings = Settings::default();
         if let Some(level) = &raw.level {
             settings.level = Some(parse_level(level.get_ref()).ok_or_else(|| {
@@ -225,7 +233,9 @@ impl ConfigFile {
                 let choices = ["error", "warning", "info", "hint"];
                 error(value.span(), choice("severity", value.get_ref(), &choices))
             })?;
-            settings.severity.push((code(key)?, level));
+            for code in codes_of(key)? {
+                settings.severity.push((code, level));
+            }
         }
         if let Some(fail_on) = &raw.fail_on {
             settings.fail_on = Some(match fail_on.get_ref().as_str() {
@@ -360,26 +370,6 @@ impl Resolver {
     }
 }
 
-/// The rule of a code, or why not, naming the nearest code.
-pub fn known_code(code: &str) -> Result<&'static Rule, String> {
-    if let Some(rule) = find_rule(code) {
-        return Ok(rule);
-    }
-    let wanted = code.to_ascii_uppercase();
-    let nearest = find_rule(&wanted).map(|r| r.code).or_else(|| {
-        RULES
-            .iter()
-            .map(|r| (strsim::jaro_winkler(&wanted, r.code), r.code))
-            .filter(|(score, _)| *score > 0.8)
-            .max_by(|a, b| a.0.total_cmp(&b.0))
-            .map(|(_, c)| c)
-    });
-    let hint = nearest.map_or(String::new(), |c| format!(" (did you mean `{c}`?)"));
-    Err(format!(
-        "unknown rule code `{code}`{hint}; `x3dcheck rules` lists the codes"
-    ))
-}
-
 fn parse_level(text: &str) -> Option<Level> {
     Some(match text {
         "fast" => Level::Fast,
@@ -482,7 +472,7 @@ mod tests {
         let e = parse("level = 'deep'\nlevl = 'fast'\n").unwrap_err();
         assert_eq!((e.line, e.column), (2, 1), "{e}");
         assert!(e.message.contains("did you mean `level`?"), "{e}");
-        let e = parse("ignore = [\n  'DEF_DUPLICAT',\n]\n").unwrap_err();
+        let e = parse("ignore = [\n  'DEF_DUPLCATE',\n]\n").unwrap_err();
         assert_eq!((e.line, e.column), (2, 3), "{e}");
         assert!(e.message.contains("did you mean `DEF_DUPLICATE`?"), "{e}");
         let e = parse("[severity]\nDEF_DUPLICATE = 'warn'\n").unwrap_err();
@@ -499,6 +489,22 @@ mod tests {
         }
         assert!(parse("max-diagnostics = -1").is_err());
         assert!(parse("level = ").is_err());
+    }
+
+    #[test]
+    fn codes_are_selectors() {
+        let file = parse(
+            "select = ['back_material_']\nignore = ['Def_Duplicate']\n\
+             [severity]\nALL = 'hint'\n",
+        )
+        .unwrap();
+        let s = &file.settings;
+        let select = s.select.as_deref().unwrap();
+        assert!(select.len() > 1 && select.iter().all(|c| c.starts_with("BACK_MATERIAL_")));
+        assert_eq!(s.ignore, ["DEF_DUPLICATE"]);
+        assert_eq!(s.severity.len(), crate::validate::RULES.len());
+        let e = parse("\nselect = ['BACK_MATERIAL_X']\n").unwrap_err();
+        assert_eq!((e.line, e.column), (2, 11), "{e}");
     }
 
     #[test]

@@ -90,11 +90,34 @@ impl Rule {
             .take_while(|l| !l.is_empty())
             .collect();
         let text = paragraph.join(" ");
-        match text.find(". ") {
-            Some(end) => text[..=end].to_string(),
-            None => text,
+        first_sentence(&text).to_string()
+    }
+}
+
+/// Abbreviations whose full stop ends no sentence (compared without case).
+const ABBREVIATIONS: &[&str] = &["e.g", "i.e", "etc", "cf", "vs", "approx", "resp"];
+
+/// `text` up to the full stop that ends its first sentence: one followed by a space or the
+/// end, outside brackets and `code`, and not closing an abbreviation such as "e.g.".
+fn first_sentence(text: &str) -> &str {
+    let (mut depth, mut in_code) = (0usize, false);
+    for (i, c) in text.char_indices() {
+        match c {
+            '`' => in_code = !in_code,
+            '(' | '[' if !in_code => depth += 1,
+            ')' | ']' if !in_code => depth = depth.saturating_sub(1),
+            '.' if depth == 0 && !in_code => {
+                let ends_word = text[i + 1..].chars().next().is_none_or(char::is_whitespace);
+                let word = text[..i].rsplit([' ', '(']).next().unwrap_or_default();
+                let abbreviation = ABBREVIATIONS.iter().any(|a| a.eq_ignore_ascii_case(word));
+                if ends_word && !abbreviation {
+                    return &text[..=i];
+                }
+            }
+            _ => {}
         }
     }
+    text
 }
 
 impl fmt::Debug for Rule {
@@ -153,4 +176,24 @@ macro_rules! declare_rule {
             run: Some($check),
         };
     };
+}
+
+#[cfg(test)]
+mod tests {
+    use super::first_sentence;
+
+    #[test]
+    fn sentences_end_at_full_stops_outside_brackets_code_and_abbreviations() {
+        let text = "Reports a value (e.g. `a. b` is [0,∞) in 4.x). Then more.";
+        assert_eq!(
+            first_sentence(text),
+            "Reports a value (e.g. `a. b` is [0,∞) in 4.x)."
+        );
+        assert_eq!(
+            first_sentence("Uses i.e. this, etc. too. Next."),
+            "Uses i.e. this, etc. too."
+        );
+        assert_eq!(first_sentence("Version 3.3 only."), "Version 3.3 only.");
+        assert_eq!(first_sentence("No full stop"), "No full stop");
+    }
 }

@@ -26,6 +26,8 @@ mod polygons;
 #[cfg(feature = "render")]
 mod tangents;
 #[cfg(feature = "render")]
+mod test_adapter;
+#[cfg(feature = "render")]
 mod texgen;
 #[cfg(feature = "render")]
 mod textures;
@@ -42,6 +44,8 @@ pub const LIGHTING_WGSL: &str = include_str!("lighting.wgsl");
 const SHADER_WGSL: &str = concat!(include_str!("lighting.wgsl"), include_str!("shader.wgsl"));
 #[cfg(feature = "render")]
 pub use gpu::{open_device, Gpu, GpuError, Settings, Shading};
+#[cfg(feature = "render")]
+pub use test_adapter::{adapter_for_test, REQUIRE_GPU};
 
 #[cfg(feature = "render")]
 use crate::model::rules::LIMIT_EXCEEDED;

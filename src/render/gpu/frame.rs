@@ -434,8 +434,7 @@ mod tests {
 
     #[test]
     fn a_frame_cut_into_passes_is_the_frame_drawn_in_one() {
-        if std::env::var_os("X3DCHECK_NO_GPU").is_some_and(|v| v == "1") {
-            eprintln!("pass test SKIPPED: X3DCHECK_NO_GPU=1");
+        if !crate::render::adapter_for_test("a_frame_cut_into_passes_is_the_frame_drawn_in_one") {
             return;
         }
         // Opaque triangles over a background gradient, a blended shape, lines and points.

@@ -160,7 +160,7 @@ pub async fn open_device() -> Result<(wgpu::Device, wgpu::Queue), GpuError> {
 /// Any adapter, software ones included. Vulkan first (lavapipe is the most complete
 /// software driver, and probing GL/EGL without a display prints warnings), then the
 /// others; `WGPU_BACKEND` overrides the choice.
-async fn find_adapter() -> Option<wgpu::Adapter> {
+pub(super) async fn find_adapter() -> Option<wgpu::Adapter> {
     let from_env = wgpu::Backends::from_env();
     let attempts = match from_env {
         Some(backends) => vec![backends],

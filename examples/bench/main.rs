@@ -7,18 +7,15 @@
 //! the DESIGN.md targets with ✓/✗. `--corpus DIR` times a directory per level instead.
 //!
 //! ```text
-//! cargo run --release --bin x3dcheck-bench [-- --runs N --size-scale F --corpus DIR …]
+//! cargo run --release --example x3dcheck-bench [-- --runs N --size-scale F --corpus DIR …]
 //! ```
 //!
 //! Progress goes to stderr, the report to stdout. Peak memory needs GNU time
 //! (`/usr/bin/time`, Debian package `time`); without it the column says so.
 
-#[path = "bench/measure.rs"]
 mod measure;
 #[cfg(feature = "render")]
-#[path = "bench/render.rs"]
 mod render;
-#[path = "bench/scene.rs"]
 mod scene;
 
 use std::ffi::{OsStr, OsString};
@@ -337,8 +334,8 @@ fn render_bench(
     Ok(())
 }
 
-/// The x3dcheck binary: `--x3dcheck`, else the one beside this program. Under `cargo run`
-/// it is built first (same profile), since `cargo run --bin x3dcheck-bench` builds only
+/// The x3dcheck binary: `--x3dcheck`, else the one of this example's profile. Under `cargo run`
+/// it is built first (same profile), since `cargo run --example x3dcheck-bench` builds only
 /// the bench.
 fn find_x3dcheck(args: &Args) -> Result<PathBuf, String> {
     if let Some(path) = &args.x3dcheck {
@@ -349,7 +346,12 @@ fn find_x3dcheck(args: &Args) -> Result<PathBuf, String> {
         };
     }
     let exe = std::env::current_exe().map_err(|e| format!("cannot find this program: {e}"))?;
-    let dir = exe.parent().unwrap_or(Path::new(".")).to_path_buf();
+    // Cargo puts an example in `target/PROFILE/examples/`, the binary in `target/PROFILE/`.
+    let dir = exe
+        .parent()
+        .and_then(Path::parent)
+        .unwrap_or(Path::new("."))
+        .to_path_buf();
     let binary = dir.join(format!("x3dcheck{}", std::env::consts::EXE_SUFFIX));
     let profile = dir.file_name().and_then(|n| n.to_str()).unwrap_or("");
     if let Some(cargo) = std::env::var_os("CARGO") {
@@ -381,14 +383,14 @@ fn find_x3dcheck(args: &Args) -> Result<PathBuf, String> {
     }
     if !binary.is_file() {
         return Err(format!(
-            "{} not found: run `cargo run --release --bin x3dcheck-bench` (which builds it), \
+            "{} not found: run `cargo run --release --example x3dcheck-bench` (which builds it), \
              or `cargo build --release` first, or pass --x3dcheck PATH",
             binary.display()
         ));
     }
     if profile == "debug" {
         eprintln!(
-            "x3dcheck-bench: WARNING: timing a debug build; use `cargo run --release --bin x3dcheck-bench`"
+            "x3dcheck-bench: WARNING: timing a debug build; use `cargo run --release --example x3dcheck-bench`"
         );
     }
     Ok(binary)
