@@ -16,6 +16,7 @@ pub mod field_out_of_range;
 pub mod field_unknown;
 pub mod field_value_nonfinite;
 pub mod field_value_syntax;
+pub mod gzip_corrupt;
 pub mod json_malformed;
 pub mod limit_exceeded;
 pub mod node_deprecated;
@@ -33,6 +34,7 @@ pub mod use_with_fields;
 pub mod validation_incomplete;
 pub mod x3d_version_missing;
 pub mod x3d_version_unknown;
+pub mod xml_encoding_unsupported;
 pub mod xml_malformed;
 
 /// This group's rules, in catalogue order.
@@ -69,6 +71,8 @@ pub static RULES: &[&Rule] = &[
     &field_deprecated::FIELD_DEPRECATED,
     &component_level_insufficient::COMPONENT_LEVEL_INSUFFICIENT,
     &validation_incomplete::VALIDATION_INCOMPLETE,
+    &gzip_corrupt::GZIP_CORRUPT,
+    &xml_encoding_unsupported::XML_ENCODING_UNSUPPORTED,
 ];
 
 /// The index of the first element that fails a test and how many fail, for rules that
