@@ -12,7 +12,8 @@ struct Entry {
     level: Level,
 }
 
-/// The table rows of RULES.md: `| CODE | sev | …`. §1 is the fast level; the others are
+/// The table rows of RULES.md: `| CODE | sev | …`. Sections "(all levels)" (§1, §7) are
+/// the fast level; the others are
 /// standard unless the severity says "(deep)". For a severity that depends on version or
 /// value ("error in 4.0, warning in 4.1", "info (7–19), warning (>19)") the first is the
 /// rule's default.
@@ -23,7 +24,8 @@ fn catalogue() -> Vec<Entry> {
     let mut fast_section = false;
     for line in text.lines() {
         if line.starts_with("## ") {
-            fast_section = line.starts_with("## 1.");
+            // §1 and §7 (encodings and inputs) apply at every level: fast.
+            fast_section = line.contains("(all levels)");
         }
         let cells: Vec<&str> = line.split('|').map(str::trim).collect();
         let (Some(code), Some(severity)) = (cells.get(1), cells.get(2)) else {

@@ -108,31 +108,41 @@ pub fn kind(file_type: &fs::FileType) -> &'static str {
 
 static STDOUT_CLOSED: OnceLock<bool> = OnceLock::new();
 
-/// Run first: when standard output is closed (`>&-`), puts /dev/null on its descriptor, so
-/// that no file opened later gets it (and a report written to it vanishes without an
-/// error: Rust's stdout ignores a closed descriptor), and remembers it for
-/// [`stdout_closed`].
+/// Run first: remembers whether standard output was closed when the program started
+/// (`>&-`), for [`stdout_closed`]. Rust's runtime puts /dev/null, opened for reading and
+/// writing, on a closed standard descriptor before `main` (so that no file opened later
+/// gets it), and a report written there would vanish: that is what is looked for. A shell
+/// redirection to /dev/null (`>/dev/null`) opens it for writing only, and stays allowed.
 pub fn guard_stdout() {
-    #[cfg(unix)]
-    {
-        // SAFETY: fcntl and dup2 on descriptor 1 with no pointers; run before any thread.
-        let closed = unsafe { libc::fcntl(1, libc::F_GETFD) } == -1;
-        if closed {
-            if let Ok(null) = fs::OpenOptions::new().write(true).open("/dev/null") {
-                use std::os::fd::IntoRawFd;
-                // Opening takes the lowest free descriptor: 1 itself when 0 is open.
-                let fd = null.into_raw_fd();
-                if fd != 1 {
-                    // SAFETY: both descriptors are open and `fd` is owned here.
-                    unsafe {
-                        libc::dup2(fd, 1);
-                        libc::close(fd);
-                    }
-                }
-            }
+    let _ = STDOUT_CLOSED.set(stdout_is_runtime_null());
+}
+
+#[cfg(unix)]
+fn stdout_is_runtime_null() -> bool {
+    use std::os::unix::fs::MetadataExt;
+    // SAFETY: fcntl and fstat on descriptor 1 with a zeroed stat buffer owned here.
+    let (flags, stat) = unsafe {
+        let mut stat: libc::stat = std::mem::zeroed();
+        (
+            libc::fcntl(1, libc::F_GETFL),
+            libc::fstat(1, &mut stat).eq(&0).then_some(stat),
+        )
+    };
+    let read_write = flags != -1 && flags & libc::O_ACCMODE == libc::O_RDWR;
+    let null = fs::metadata("/dev/null").ok();
+    match (stat, null) {
+        (Some(stat), Some(null)) => {
+            read_write
+                && stat.st_mode & libc::S_IFMT == libc::S_IFCHR
+                && stat.st_rdev as u64 == null.rdev()
         }
-        let _ = STDOUT_CLOSED.set(closed);
+        _ => false,
     }
+}
+
+#[cfg(not(unix))]
+fn stdout_is_runtime_null() -> bool {
+    false
 }
 
 /// Whether standard output was closed when the program started.
