@@ -5,8 +5,9 @@ use std::borrow::Cow;
 use std::path::Path;
 
 use crate::config::CheckConfig;
-use crate::model::{Document, Encoding};
+use crate::model::Document;
 use crate::parse;
+pub use crate::parse::Parsed;
 use crate::report::{resolve, FileReport, Stats};
 use crate::validate;
 
@@ -89,11 +90,4 @@ fn check_decoded<'a>(path: &str, decoded: parse::Decoded<'a>, config: &CheckConf
         document: parsed.document,
         text,
     }
-}
-
-/// The result of reading an input, whatever its encoding.
-pub struct Parsed {
-    pub encoding: Option<Encoding>,
-    pub document: Option<Document>,
-    pub diagnostics: Vec<crate::report::Diagnostic>,
 }

@@ -17,13 +17,11 @@ use std::io::Read;
 use encoding_rs::{DecoderResult, Encoding as Charset, UTF_16BE, UTF_16LE, UTF_8};
 use flate2::read::MultiGzDecoder;
 
+use super::rules::{GZIP_CORRUPT, XML_ENCODING_UNSUPPORTED, XML_MALFORMED};
+use crate::diagnostic::Diagnostic;
 use crate::limits::MAX_INPUT_BYTES;
+use crate::model::rules::LIMIT_EXCEEDED;
 use crate::model::Span;
-use crate::report::Diagnostic;
-use crate::validate::document::{
-    gzip_corrupt::GZIP_CORRUPT, limit_exceeded::LIMIT_EXCEEDED,
-    xml_encoding_unsupported::XML_ENCODING_UNSUPPORTED, xml_malformed::XML_MALFORMED,
-};
 
 /// The first bytes of every gzip stream (RFC 1952 §2.3.1).
 pub const GZIP_MAGIC: [u8; 2] = [0x1f, 0x8b];
