@@ -568,7 +568,7 @@ fn special_files_named_directly_are_refused_without_reading() {
     mkfifo(&dir.join("pipe.x3d"));
     std::os::unix::fs::symlink("/dev/zero", dir.join("zero.x3d")).unwrap();
     for (name, kind) in [
-        ("pipe.x3d", "a FIFO"),
+        ("pipe.x3d", "a FIFO (named pipe)"),
         ("zero.x3d", "a character device"),
         ("/dev/zero", "a character device"),
     ] {
@@ -599,7 +599,8 @@ fn a_walk_reports_every_entry_it_cannot_read() {
     for expected in [
         "t/pipe.x3d: it is a FIFO (named pipe), not a regular file",
         "t/socket.x3d: it is a socket, not a regular file",
-        "t/zero.x3d: it is a character device, not a regular file",
+        // A link to a device is a link out of the tree.
+        "not checked: t/zero.x3d is a symbolic link to /dev/zero",
         "t/dangling.x3d: a symbolic link that leads nowhere readable",
         "t/loop.x3d: a symbolic link that leads nowhere readable",
     ] {
