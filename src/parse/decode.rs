@@ -61,7 +61,7 @@ pub fn decode_within(source: &[u8], limit: usize) -> Decoded<'_> {
     let text = if compressed {
         match inflate(source, limit) {
             Ok(text) => Cow::Owned(text),
-            Err(failure) => return failed(Cow::Borrowed(&[]), true, failure),
+            Err(failure) => return failed(Cow::Borrowed(&[]), true, *failure),
         }
     } else {
         Cow::Borrowed(source)
@@ -72,7 +72,7 @@ pub fn decode_within(source: &[u8], limit: usize) -> Decoded<'_> {
             compressed,
             failure: None,
         },
-        Err((text, failure)) => failed(text, compressed, failure),
+        Err((text, failure)) => failed(text, compressed, *failure),
     }
 }
 
@@ -96,19 +96,21 @@ fn too_large(what: &str, limit: usize) -> Diagnostic {
 
 /// Inflates a gzip stream (all its members, as gunzip does), reading at most one byte past
 /// `limit`: a bomb stops there, never holding more.
-fn inflate(source: &[u8], limit: usize) -> Result<Vec<u8>, Diagnostic> {
+fn inflate(source: &[u8], limit: usize) -> Result<Vec<u8>, Box<Diagnostic>> {
     let mut text = Vec::with_capacity(source.len().saturating_mul(4).min(limit) + 1);
     let read = MultiGzDecoder::new(source)
         .take(limit as u64 + 1)
         .read_to_end(&mut text);
     match read {
-        Err(error) => Err(Diagnostic::new(
-            &GZIP_CORRUPT,
-            Span::new(0, 0),
-            format!("the gzip-compressed input does not decompress: {error}"),
-        )
-        .help("the file is damaged or cut short; `gzip -t FILE` tests it")),
-        Ok(_) if text.len() > limit => Err(too_large("the decompressed input", limit)),
+        Err(error) => Err(Box::new(
+            Diagnostic::new(
+                &GZIP_CORRUPT,
+                Span::new(0, 0),
+                format!("the gzip-compressed input does not decompress: {error}"),
+            )
+            .help("the file is damaged or cut short; `gzip -t FILE` tests it"),
+        )),
+        Ok(_) if text.len() > limit => Err(Box::new(too_large("the decompressed input", limit))),
         Ok(_) => Ok(text),
     }
 }
@@ -128,18 +130,18 @@ enum Plan {
     Refuse(Diagnostic),
 }
 
-type Failed<'a> = (Cow<'a, [u8]>, Diagnostic);
+type Failed<'a> = (Cow<'a, [u8]>, Box<Diagnostic>);
 
 fn to_utf8(text: Cow<'_, [u8]>, limit: usize) -> Result<Cow<'_, [u8]>, Failed<'_>> {
     match plan(&text) {
-        Plan::Refuse(failure) => Err((text, failure)),
+        Plan::Refuse(failure) => Err((text, Box::new(failure))),
         Plan::Utf8 { bom, check } => {
             let text = drop_prefix(text, bom);
             match std::str::from_utf8(&text) {
                 Err(error) if check => {
                     let at = error.valid_up_to();
                     let failure = not_utf8(&text[at..at + error.error_len().unwrap_or(1)], at);
-                    Err((text, failure))
+                    Err((text, Box::new(failure)))
                 }
                 _ => Ok(text),
             }
@@ -147,7 +149,7 @@ fn to_utf8(text: Cow<'_, [u8]>, limit: usize) -> Result<Cow<'_, [u8]>, Failed<'_
         Plan::Decode { charset, bom } => match decode_strict(charset, &text[bom..]) {
             Ok(decoded) if decoded.len() > limit => Err((
                 Cow::Borrowed(&[]),
-                too_large("the input decoded to UTF-8", limit),
+                Box::new(too_large("the input decoded to UTF-8", limit)),
             )),
             Ok(decoded) => Ok(Cow::Owned(decoded.into_bytes())),
             Err((decoded, bad)) => {
@@ -163,7 +165,7 @@ fn to_utf8(text: Cow<'_, [u8]>, limit: usize) -> Result<Cow<'_, [u8]>, Failed<'_
                     ),
                 )
                 .help("save the file in the encoding its XML declaration names, or as UTF-8");
-                Err((Cow::Owned(decoded.into_bytes()), failure))
+                Err((Cow::Owned(decoded.into_bytes()), Box::new(failure)))
             }
         },
     }
