@@ -1,6 +1,7 @@
-//! Checking one input: detect the encoding, read it into the model, run the rules, and
+//! Checking one input: decode it (gzip, character encodings), detect the encoding, read it into the model, run the rules, and
 //! resolve what is reported (line, column, path) while the source is at hand.
 
+use std::borrow::Cow;
 use std::path::Path;
 
 use crate::config::CheckConfig;
@@ -16,26 +17,51 @@ pub const STDIN_NAME: &str = "<stdin>";
 /// Checks one input. `path` names the file in the report, and its directory is where the
 /// deep level resolves relative URLs (none for [`STDIN_NAME`]).
 pub fn check_source(path: &str, source: &[u8], config: &CheckConfig) -> FileReport {
-    check_document(path, source, config).0
+    check_document(path, source, config).report
 }
 
-/// [`check_source`], also handing back the document it read (None when the input is not
-/// a document), so that a caller such as the renderer need not parse it again. At the
-/// fast level its numeric MF values are [`Summary`](crate::model::Summary)s unless
-/// `config.render` is set ([`CheckConfig::keep_values`]).
-pub fn check_document(
-    path: &str,
-    source: &[u8],
-    config: &CheckConfig,
-) -> (FileReport, Option<Document>) {
-    let parsed = parse::read_with(source, config.keep_values());
+/// What [`check_document`] hands back.
+pub struct Checked<'a> {
+    pub report: FileReport,
+    /// The document read (None when the input is not a document). At the fast level its
+    /// numeric MF values are [`Summary`](crate::model::Summary)s unless `config.render` is
+    /// set ([`CheckConfig::keep_values`]).
+    pub document: Option<Document>,
+    /// The decoded text (decompressed, UTF-8: see [`parse::decode`]) that the report's
+    /// positions and the document's spans are offsets into; what to show as the source.
+    pub text: Cow<'a, [u8]>,
+}
+
+/// [`check_source`], also handing back the document it read, so that a caller such as the
+/// renderer need not parse it again, and the text it read.
+pub fn check_document<'a>(path: &str, source: &'a [u8], config: &CheckConfig) -> Checked<'a> {
+    check_decoded(path, parse::decode(source), config)
+}
+
+/// The report of an input not read because it is larger than
+/// [`MAX_INPUT_BYTES`](crate::limits::MAX_INPUT_BYTES): LIMIT_EXCEEDED. For callers that
+/// stop reading at the limit, as the command line does, rather than hold more.
+pub fn check_too_large(path: &str, config: &CheckConfig) -> FileReport {
+    check_decoded(path, parse::decode::too_large_input(), config).report
+}
+
+fn check_decoded<'a>(path: &str, decoded: parse::Decoded<'a>, config: &CheckConfig) -> Checked<'a> {
+    let text = decoded.text;
+    let parsed = match decoded.failure {
+        Some(failure) => Parsed {
+            encoding: None,
+            document: None,
+            diagnostics: vec![failure],
+        },
+        None => parse::read_with(&text, config.keep_values()),
+    };
     let mut diagnostics = parsed.diagnostics;
     let base = (path != STDIN_NAME).then(|| match Path::new(path).parent() {
         Some(dir) if !dir.as_os_str().is_empty() => dir,
         _ => Path::new("."),
     });
     if let Some(doc) = &parsed.document {
-        diagnostics.extend(validate::check(doc, source, base, config));
+        diagnostics.extend(validate::check(doc, &text, base, config));
     }
     diagnostics.retain(|d| config.enabled(d.rule.code) && d.rule.level <= config.level);
     for d in &mut diagnostics {
@@ -52,11 +78,16 @@ pub fn check_document(
     let report = FileReport {
         path: path.to_string(),
         encoding: parsed.encoding,
+        compressed: decoded.compressed,
         x3d_version: doc.and_then(|d| d.version_text.as_ref().map(|v| v.text.clone())),
         profile: doc.and_then(|d| d.profile.as_ref().map(|p| p.text.clone())),
-        diagnostics: resolve(&diagnostics, source, doc),
+        diagnostics: resolve(&diagnostics, &text, doc),
         truncated,
         stats: doc.map(Stats::of).unwrap_or_default(),
     };
-    (report, parsed.document)
+    Checked {
+        report,
+        document: parsed.document,
+        text,
+    }
 }

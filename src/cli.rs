@@ -5,14 +5,16 @@
 //! [`progress`] draws the bar; [`color`] decides on colour; [`settings`] shows what applies.
 
 mod color;
+mod discover;
 mod merge;
 mod progress;
+mod read;
 mod rules;
 mod settings;
 
 use std::borrow::Cow;
 use std::fs;
-use std::io::{self, IsTerminal, Read, Write};
+use std::io::{self, IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -56,9 +58,18 @@ enum Command {
 
 #[derive(Args, Debug)]
 struct CheckArgs {
-    /// Files, or directories searched recursively for .x3d, .x3dj and .json files; `-` reads stdin
+    /// Files, or directories searched for scenes (.x3d .x3dv .x3dj .wrl, compressed .x3dz
+    /// .x3dvz .x3djz .wrz and *.gz, and .json files holding an X3D object), honouring
+    /// .gitignore and skipping hidden folders; `-` reads stdin
     #[arg(value_name = "PATH", required = true)]
     paths: Vec<PathBuf>,
+    /// Do not search paths matching GLOB in directories (repeatable; also `exclude` in
+    /// x3dcheck.toml)
+    #[arg(long, value_name = "GLOB")]
+    exclude: Vec<String>,
+    /// List the files that would be checked, and check none
+    #[arg(long)]
+    show_files: bool,
     /// What to check [default: standard]
     #[arg(long, value_enum)]
     level: Option<Level>,
@@ -164,6 +175,7 @@ Exit codes:
   2  a usage or configuration error, an input that could not be read, or an internal failure";
 
 pub fn run(cli: Cli) -> ExitCode {
+    read::guard_stdout();
     let result = match cli.command {
         Some(Command::Rules(args)) => rules::rules(&args)
             .and_then(|text| write_output(None, &text))
@@ -195,7 +207,16 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
         .stdin_filename
         .as_ref()
         .map_or(STDIN_NAME.to_string(), |name| name.display().to_string());
-    let (inputs, mut failed) = find_inputs(&args.paths, args.shard);
+    let discover::Found { inputs, mut failed } =
+        discover::find_inputs(&args.paths, args.shard, &args.exclude, &mut resolver)?;
+    if args.show_files {
+        let list: String = inputs
+            .iter()
+            .map(|i| format!("{}\n", input_name(i)))
+            .collect();
+        write_output(args.output.as_deref(), &list)?;
+        return Ok(ExitCode::from(if failed { USAGE } else { 0 }));
+    }
     for output in [&args.output, &args.render.render].into_iter().flatten() {
         refuse_input_as_output(&inputs, output)?;
     }
@@ -203,10 +224,10 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
     let configs = inputs
         .iter()
         .map(|input| match input {
-            Input::Stdin(_) => match &args.stdin_filename {
+            Input::Stdin => match &args.stdin_filename {
                 None => resolver.for_file(None),
                 Some(name) => resolver.for_file(Some(name)).map(|mut effective| {
-                    effective.check.root = Some(file_root(name));
+                    effective.check.root = Some(discover::file_root(name));
                     effective
                 }),
             },
@@ -222,7 +243,7 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
             return Err("--show-settings: no input to show the settings of".to_string());
         };
         let name = match input {
-            Input::Stdin(_) => stdin_name.clone(),
+            Input::Stdin => stdin_name.clone(),
             Input::File { path, .. } => path.display().to_string(),
         };
         write_output(None, &settings::show(&name, effective))?;
@@ -403,134 +424,24 @@ fn settings(args: &CheckArgs) -> Result<Settings, String> {
     Ok(settings)
 }
 
-enum Input {
-    Stdin(Vec<u8>),
-    /// A file, with the directory tree its references (textures, Inlines) may be read from.
-    File {
-        path: PathBuf,
-        root: PathBuf,
-    },
-}
+use discover::Input;
 
-/// The inputs in argument order, each directory's files sorted by path; with a shard, only
-/// those in it. Unreadable paths are reported here (and make the exit code 2); the rest are
-/// still checked.
-fn find_inputs(paths: &[PathBuf], shard: Option<Shard>) -> (Vec<Input>, bool) {
-    let mut inputs = Vec::new();
-    let mut failed = false;
-    let mut fail = |path: &Path, error: io::Error| {
-        eprintln!("x3dcheck: cannot read {}: {error}", path.display());
-        failed = true;
-    };
-    for path in paths {
-        if path.as_os_str() == "-" {
-            if shard.is_some_and(|s| !s.holds_stdin()) {
-                continue;
-            }
-            match read_stdin() {
-                Ok(bytes) => inputs.push(Input::Stdin(bytes)),
-                Err(e) => fail(Path::new("<stdin>"), e),
-            }
-            continue;
-        }
-        match fs::metadata(path) {
-            Ok(meta) if meta.is_dir() => {
-                let mut files = Vec::new();
-                walk(path, &mut files, &mut fail);
-                if let Some(shard) = shard {
-                    files.retain(|file| shard.holds(file.strip_prefix(path).unwrap_or(file)));
-                }
-                files.sort();
-                inputs.extend(files.into_iter().map(|file| Input::File {
-                    path: file,
-                    root: path.clone(),
-                }));
-            }
-            Ok(_) if shard.is_some_and(|s| !s.holds(path)) => {}
-            Ok(_) => inputs.push(Input::File {
-                path: path.clone(),
-                root: file_root(path),
-            }),
-            Err(e) => fail(path, e),
-        }
-    }
-    (inputs, failed)
-}
-
-/// The tree a file named on the command line may read references from: the current
-/// directory when the file lies in it (textures in a sibling `../textures` folder are
-/// common), else the file's own directory. A directory argument is its own root.
-fn file_root(file: &Path) -> PathBuf {
-    let directory = file
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    match (std::env::current_dir(), directory.canonicalize()) {
-        (Ok(current), Ok(directory)) if directory.starts_with(&current) => current,
-        _ => directory.to_path_buf(),
+fn input_name(input: &Input) -> String {
+    match input {
+        Input::Stdin => STDIN_NAME.to_string(),
+        Input::File { path, .. } => path.display().to_string(),
     }
 }
 
-/// Collects X3D files under `dir`. Symlinked directories are not followed (no loops);
-/// symlinked files are taken.
-fn walk(dir: &Path, files: &mut Vec<PathBuf>, fail: &mut impl FnMut(&Path, io::Error)) {
-    let entries = match fs::read_dir(dir) {
-        Ok(entries) => entries,
-        Err(e) => return fail(dir, e),
-    };
-    for entry in entries {
-        let entry = match entry {
-            Ok(entry) => entry,
-            Err(e) => {
-                fail(dir, e);
-                continue;
-            }
-        };
-        let path = entry.path();
-        match entry.file_type() {
-            Ok(t) if t.is_dir() => walk(&path, files, fail),
-            Ok(t) if t.is_file() || (t.is_symlink() && path.is_file()) => {
-                if is_x3d_name(&path) {
-                    files.push(path);
-                }
-            }
-            Ok(_) => {}
-            Err(e) => fail(&path, e),
-        }
+/// The bytes of a file (a report to merge) within the input limit, or why not.
+fn read_file(path: &Path) -> Result<Vec<u8>, String> {
+    match read::read_path(path, MAX_INPUT_BYTES)? {
+        read::Contents::Bytes(bytes) => Ok(bytes),
+        read::Contents::TooLarge => Err(format!(
+            "cannot read {}: larger than {MAX_INPUT_BYTES} bytes, the most x3dcheck reads",
+            path.display()
+        )),
     }
-}
-
-fn is_x3d_name(path: &Path) -> bool {
-    path.extension().and_then(|e| e.to_str()).is_some_and(|e| {
-        ["x3d", "x3dj", "json"]
-            .iter()
-            .any(|x| e.eq_ignore_ascii_case(x))
-    })
-}
-
-fn read_stdin() -> io::Result<Vec<u8>> {
-    let mut bytes = Vec::new();
-    io::stdin()
-        .lock()
-        .take(MAX_INPUT_BYTES as u64 + 1)
-        .read_to_end(&mut bytes)?;
-    if bytes.len() > MAX_INPUT_BYTES {
-        return Err(too_large());
-    }
-    Ok(bytes)
-}
-
-fn read_file(path: &Path) -> io::Result<Vec<u8>> {
-    if fs::metadata(path)?.len() > MAX_INPUT_BYTES as u64 {
-        return Err(too_large());
-    }
-    fs::read(path)
-}
-
-fn too_large() -> io::Error {
-    io::Error::other(format!(
-        "larger than {MAX_INPUT_BYTES} bytes, the most x3dcheck reads"
-    ))
 }
 
 /// A checked file with its rendered text, or why it could not be checked.
@@ -553,14 +464,24 @@ fn check_input(
     color: bool,
     render: &x3dcheck::render::RenderArgs,
 ) -> Outcome {
-    let (name, bytes) = match input {
-        Input::Stdin(bytes) => (stdin_name.to_string(), Cow::Borrowed(&bytes[..])),
-        Input::File { path, .. } => {
-            let name = path.display().to_string();
-            match read_file(path) {
-                Ok(bytes) => (name, Cow::Owned(bytes)),
-                Err(e) => return Err(format!("cannot read {name}: {e}")),
-            }
+    let name = match input {
+        Input::Stdin => stdin_name.to_string(),
+        Input::File { path, .. } => path.display().to_string(),
+    };
+    let contents = match input {
+        Input::Stdin => read::read_stdin(MAX_INPUT_BYTES)?,
+        Input::File { path, .. } => read::read_path(path, MAX_INPUT_BYTES)?,
+    };
+    let bytes = match contents {
+        read::Contents::Bytes(bytes) => bytes,
+        read::Contents::TooLarge => {
+            let report = x3dcheck::check::check_too_large(&name, config);
+            let text = render_text(&report, &[], format, color);
+            return Ok(Checked {
+                report,
+                text,
+                render_failure: None,
+            });
         }
     };
     // A panic in a rule is an internal failure of this file, not of the run.
@@ -575,18 +496,23 @@ fn check_input(
         Cow::Borrowed(config)
     };
     std::panic::catch_unwind(move || {
-        let (mut report, doc) = x3dcheck::check::check_document(&name, &bytes, &config);
+        let x3dcheck::check::Checked {
+            mut report,
+            document,
+            text: source,
+        } = x3dcheck::check::check_document(&name, &bytes, &config);
         // A file that cannot be drawn keeps its report: the findings say why.
-        let preview =
-            x3dcheck::render::prepare(render, Path::new(&name), &bytes, doc.as_ref(), &mut report);
-        drop(doc);
-        let text = match format {
-            Some(Format::Human) => human::render(&report, &bytes, color),
-            Some(Format::Concise) => concise::render(&report),
-            Some(Format::Github) => github::render(&report),
-            Some(Format::Json | Format::Sarif | Format::Junit) | None => String::new(),
-        };
+        let preview = x3dcheck::render::prepare(
+            render,
+            Path::new(&name),
+            &source,
+            document.as_ref(),
+            &mut report,
+        );
+        drop(document);
+        let text = render_text(&report, &source, format, color);
         // The preview no longer needs the document or its source.
+        drop(source);
         drop(bytes);
         let render_failure = match preview {
             Ok(Some(preview)) => preview.save().err(),
@@ -600,6 +526,17 @@ fn check_input(
         })
     })
     .map_err(|_| failure)?
+}
+
+/// The text of one file's report in the formats written per file (`source`: the decoded
+/// text the report's positions are in).
+fn render_text(report: &FileReport, source: &[u8], format: Option<Format>, color: bool) -> String {
+    match format {
+        Some(Format::Human) => human::render(report, source, color),
+        Some(Format::Concise) => concise::render(report),
+        Some(Format::Github) => github::render(report),
+        Some(Format::Json | Format::Sarif | Format::Junit) | None => String::new(),
+    }
 }
 
 /// Inputs are only read: an output file (`-o`, `--render`) that is one of them, by any
@@ -624,14 +561,19 @@ fn refuse_input_as_output(inputs: &[Input], output: &Path) -> Result<(), String>
 /// What makes two paths one file: device and inode on Unix (symlinks, `..` and hard links
 /// all lead to one), the canonical path elsewhere.
 #[cfg(unix)]
-fn file_id(path: &Path) -> io::Result<(u64, u64)> {
+type FileId = (u64, u64);
+#[cfg(not(unix))]
+type FileId = PathBuf;
+
+#[cfg(unix)]
+fn file_id(path: &Path) -> io::Result<FileId> {
     use std::os::unix::fs::MetadataExt;
     let meta = fs::metadata(path)?;
     Ok((meta.dev(), meta.ino()))
 }
 
 #[cfg(not(unix))]
-fn file_id(path: &Path) -> io::Result<PathBuf> {
+fn file_id(path: &Path) -> io::Result<FileId> {
     path.canonicalize()
 }
 
@@ -639,6 +581,9 @@ fn write_output(output: Option<&Path>, text: &str) -> Result<(), String> {
     match output {
         Some(path) => {
             fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))
+        }
+        None if read::stdout_closed() => {
+            Err("cannot write the report: standard output is closed".to_string())
         }
         None => io::stdout()
             .lock()

@@ -195,11 +195,11 @@ fn rules() {
 }
 
 #[test]
-fn empty_directory_checks_nothing() {
+fn a_directory_without_scenes_is_an_error() {
     let dir = scratch("empty", &[("notes.txt", "not a scene")]);
     let output = x3dcheck(&dir, &["."]);
-    assert_eq!(output.status.code(), Some(0));
-    assert!(stdout(&output).contains("Checked 0 files"));
+    assert_eq!(output.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&output.stderr).contains("no X3D files found in ."));
 }
 
 #[cfg(unix)]

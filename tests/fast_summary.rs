@@ -8,7 +8,7 @@ mod common;
 
 use std::path::Path;
 
-use x3dcheck::check::check_document;
+use x3dcheck::check::{check_document, Checked};
 use x3dcheck::config::CheckConfig;
 use x3dcheck::model::{Document, Value};
 use x3dcheck::report::{FileReport, Stats};
@@ -66,8 +66,16 @@ fn every_scene_reports_the_same_at_fast_with_summaries() {
     for path in &files {
         let source = std::fs::read(path).unwrap();
         let name = path.display().to_string();
-        let (summarized, doc) = check_document(&name, &source, &fast());
-        let (kept, kept_doc) = check_document(&name, &source, &fast_kept());
+        let Checked {
+            report: summarized,
+            document: doc,
+            ..
+        } = check_document(&name, &source, &fast());
+        let Checked {
+            report: kept,
+            document: kept_doc,
+            ..
+        } = check_document(&name, &source, &fast_kept());
         if json(&summarized) != json(&kept) {
             differing.push(name.clone());
         }
@@ -118,8 +126,12 @@ fn finding(
 /// Checks `source` at fast with summaries and with values kept; the reports must agree,
 /// and the summaries must have been made. Returns the summarized report.
 fn check_both(name: &str, source: &str) -> FileReport {
-    let (report, doc) = check_document(name, source.as_bytes(), &fast());
-    let (kept, _) = check_document(name, source.as_bytes(), &fast_kept());
+    let Checked {
+        report,
+        document: doc,
+        ..
+    } = check_document(name, source.as_bytes(), &fast());
+    let Checked { report: kept, .. } = check_document(name, source.as_bytes(), &fast_kept());
     assert_eq!(json(&report), json(&kept), "{name}");
     let (whole, summarized) = kept_and_summarized(&doc.expect("a document"));
     assert_eq!(whole, 0);
@@ -218,7 +230,11 @@ fn render_at_fast_keeps_the_values_and_draws_what_standard_draws() {
     let source = std::fs::read(&scene).unwrap();
     let name = scene.display().to_string();
     let draw = |config: &CheckConfig| {
-        let (mut report, doc) = check_document(&name, &source, config);
+        let Checked {
+            mut report,
+            document: doc,
+            ..
+        } = check_document(&name, &source, config);
         let args = x3dcheck::render::RenderArgs {
             render: Some(std::env::temp_dir().join("never-written.png")),
             size: x3dcheck::render::ImageSize {

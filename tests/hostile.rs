@@ -335,7 +335,11 @@ fn image_bombs_are_not_drawn() {
     let path = dir.join("scene.x3d");
     let source =
         scene("<Shape><Appearance><ImageTexture url='\"bomb.png\"'/></Appearance><Box/></Shape>");
-    let (mut report, doc) = x3dcheck::check::check_document(
+    let x3dcheck::check::Checked {
+        mut report,
+        document: doc,
+        ..
+    } = x3dcheck::check::check_document(
         path.to_str().unwrap(),
         source.as_bytes(),
         &CheckConfig::default(),
@@ -674,5 +678,142 @@ fn render_keeps_the_findings_of_a_file_it_cannot_draw() {
         let stderr = String::from_utf8_lossy(&output.stderr);
         assert!(stderr.contains("no scene to render"), "{file}: {stderr}");
         assert!(!dir.join("out.png").exists());
+    }
+}
+
+/// Runs x3dcheck in `dir` (through `sh -c` when `shell` is given, with `$0` the binary),
+/// killing it after [`QUICK`]: a hang fails the test instead of stalling it.
+#[cfg(unix)]
+fn x3dcheck_within(dir: &Path, args: &[&str], shell: Option<&str>) -> std::process::Output {
+    use std::process::{Command, Stdio};
+    let binary = env!("CARGO_BIN_EXE_x3dcheck");
+    let mut command = match shell {
+        Some(script) => {
+            let mut c = Command::new("sh");
+            c.arg("-c").arg(script).arg(binary);
+            c
+        }
+        None => Command::new(binary),
+    };
+    let mut child = command
+        .current_dir(dir)
+        .args(args)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let started = Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if started.elapsed() > QUICK {
+            child.kill().unwrap();
+            panic!("x3dcheck {args:?} did not finish within {QUICK:?}");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    child.wait_with_output().unwrap()
+}
+
+#[cfg(unix)]
+fn stderr_of(output: &std::process::Output) -> String {
+    String::from_utf8_lossy(&output.stderr).into_owned()
+}
+
+#[cfg(unix)]
+fn mkfifo(path: &Path) {
+    let status = std::process::Command::new("mkfifo")
+        .arg(path)
+        .status()
+        .unwrap();
+    assert!(status.success());
+}
+
+#[test]
+#[cfg(unix)]
+fn special_files_named_directly_are_refused_without_reading() {
+    let dir = scratch("special-named", &[]);
+    mkfifo(&dir.join("pipe.x3d"));
+    std::os::unix::fs::symlink("/dev/zero", dir.join("zero.x3d")).unwrap();
+    for (name, kind) in [
+        ("pipe.x3d", "a FIFO (named pipe)"),
+        ("zero.x3d", "a character device"),
+        ("/dev/zero", "a character device"),
+    ] {
+        let output = x3dcheck_within(&dir, &[name], None);
+        assert_eq!(output.status.code(), Some(2), "{name}");
+        let stderr = stderr_of(&output);
+        assert!(
+            stderr.contains(&format!("it is {kind}, not a regular file")),
+            "{stderr}"
+        );
+    }
+}
+
+#[test]
+#[cfg(unix)]
+fn a_walk_reports_every_entry_it_cannot_read() {
+    let scene = "<X3D profile='Interchange' version='4.0'><Scene/></X3D>";
+    let dir = scratch("special-walk", &[("t/good.x3d", scene)]);
+    let tree = dir.join("t");
+    mkfifo(&tree.join("pipe.x3d"));
+    let _socket = std::os::unix::net::UnixListener::bind(tree.join("socket.x3d")).unwrap();
+    std::os::unix::fs::symlink("/dev/zero", tree.join("zero.x3d")).unwrap();
+    std::os::unix::fs::symlink("missing.x3d", tree.join("dangling.x3d")).unwrap();
+    std::os::unix::fs::symlink("loop.x3d", tree.join("loop.x3d")).unwrap();
+    let output = x3dcheck_within(&dir, &["--format", "json", "t"], None);
+    assert_eq!(output.status.code(), Some(2));
+    let stderr = stderr_of(&output);
+    for expected in [
+        "t/pipe.x3d: it is a FIFO (named pipe), not a regular file",
+        "t/socket.x3d: it is a socket, not a regular file",
+        // A link to a device is a link out of the tree.
+        "not checked: t/zero.x3d is a symbolic link to /dev/zero",
+        "t/dangling.x3d: a symbolic link that leads nowhere readable",
+        "t/loop.x3d: a symbolic link that leads nowhere readable",
+    ] {
+        assert!(stderr.contains(expected), "no `{expected}` in:\n{stderr}");
+    }
+    // The readable file is still checked and reported.
+    let report: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(report["files"][0]["path"], "t/good.x3d");
+}
+
+#[test]
+#[cfg(unix)]
+fn a_walk_does_not_follow_a_file_link_out_of_the_tree() {
+    let scene = "<X3D profile='Interchange' version='4.0'><Scene/></X3D>";
+    let dir = scratch("link-out", &[("t/in.x3d", scene), ("outside/x.x3d", scene)]);
+    std::os::unix::fs::symlink("../outside/x.x3d", dir.join("t/out.x3d")).unwrap();
+    std::os::unix::fs::symlink("in.x3d", dir.join("t/same.x3d")).unwrap();
+    let output = x3dcheck_within(&dir, &["--format", "json", "t"], None);
+    assert_eq!(output.status.code(), Some(2));
+    let stderr = stderr_of(&output);
+    assert!(
+        stderr.contains("not checked: t/out.x3d is a symbolic link to"),
+        "{stderr}"
+    );
+    let report: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+    // The link inside the tree leads to a file already taken.
+    assert_eq!(report["summary"]["files"], 1);
+    // Named on the command line, the link is checked.
+    let named = x3dcheck_within(&dir, &["t/out.x3d"], None);
+    assert_eq!(named.status.code(), Some(0), "{}", stderr_of(&named));
+}
+
+#[test]
+#[cfg(unix)]
+fn a_closed_stdout_is_an_error() {
+    let dir = scratch(
+        "closed-stdout",
+        &[(
+            "a.x3d",
+            "<X3D profile='Interchange' version='4.0'><Scene/></X3D>",
+        )],
+    );
+    for format in ["human", "json"] {
+        let script = format!("exec \"$0\" --format {format} a.x3d >&-");
+        let output = x3dcheck_within(&dir, &[], Some(&script));
+        assert_eq!(output.status.code(), Some(2), "{format}");
+        assert!(stderr_of(&output).contains("standard output is closed"));
     }
 }

@@ -468,8 +468,11 @@ fn flattened_lights(fields: &str) -> Vec<Light> {
          <Transform scale='3e38 -0 1e-40'><SpotLight {fields}/><PointLight {fields}/>\
          <DirectionalLight {fields}/></Transform><Shape><Box/></Shape></Scene></X3D>"
     );
-    let (mut report, doc) =
-        x3dcheck::check::check_document("lights.x3d", source.as_bytes(), &CheckConfig::default());
+    let x3dcheck::check::Checked {
+        mut report,
+        document: doc,
+        ..
+    } = x3dcheck::check::check_document("lights.x3d", source.as_bytes(), &CheckConfig::default());
     let args = RenderArgs {
         render: None,
         size: ImageSize {

@@ -49,7 +49,11 @@ fn args() -> RenderArgs {
 fn checked_case(case: &Path) -> (PathBuf, Vec<u8>, FileReport, Option<Document>) {
     let scene = case.join("scene.x3d");
     let source = std::fs::read(&scene).unwrap();
-    let (report, doc) = x3dcheck::check::check_document(
+    let x3dcheck::check::Checked {
+        report,
+        document: doc,
+        ..
+    } = x3dcheck::check::check_document(
         &scene.display().to_string(),
         &source,
         &CheckConfig::default(),
@@ -157,7 +161,11 @@ fn a_far_away_tiny_box_renders_like_a_big_one_at_the_origin() {
         )
     };
     let render = |source: String| {
-        let (mut report, doc) = x3dcheck::check::check_document(
+        let x3dcheck::check::Checked {
+            mut report,
+            document: doc,
+            ..
+        } = x3dcheck::check::check_document(
             "scene.x3d",
             source.as_bytes(),
             &CheckConfig::default(),
@@ -203,8 +211,11 @@ fn exponential_use_expansion_renders_quickly_with_a_note() {
     }
     scene.push_str("<Shape><Box/></Shape></Scene></X3D>");
     let started = std::time::Instant::now();
-    let (mut report, doc) =
-        x3dcheck::check::check_document("laughs.x3d", scene.as_bytes(), &CheckConfig::default());
+    let x3dcheck::check::Checked {
+        mut report,
+        document: doc,
+        ..
+    } = x3dcheck::check::check_document("laughs.x3d", scene.as_bytes(), &CheckConfig::default());
     render_image(
         &args(),
         Path::new("laughs.x3d"),
@@ -256,7 +267,11 @@ fn coordinate_double_far_from_the_origin_keeps_its_precision() {
         )
     };
     let render = |source: String| {
-        let (mut report, doc) = x3dcheck::check::check_document(
+        let x3dcheck::check::Checked {
+            mut report,
+            document: doc,
+            ..
+        } = x3dcheck::check::check_document(
             "scene.x3d",
             source.as_bytes(),
             &CheckConfig::default(),

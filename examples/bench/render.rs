@@ -342,7 +342,11 @@ struct Loaded {
 impl Loaded {
     fn read(name: String, path: PathBuf, camera: String) -> Result<Loaded, String> {
         let source = fs::read(&path).map_err(|e| format!("{}: {e}", path.display()))?;
-        let (report, doc) = x3dcheck::check::check_document(
+        let x3dcheck::check::Checked {
+            report,
+            document: doc,
+            ..
+        } = x3dcheck::check::check_document(
             &path.display().to_string(),
             &source,
             &CheckConfig::default(),

@@ -59,7 +59,7 @@ pub fn merge(args: &MergeArgs) -> Result<ExitCode, String> {
     }
     let mut inputs = Vec::with_capacity(args.reports.len());
     for path in &args.reports {
-        let bytes = read_file(path).map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+        let bytes = read_file(path)?;
         let text = std::str::from_utf8(&bytes)
             .map_err(|e| format!("{}: not UTF-8 text: {e}", path.display()))?;
         let report = json::read(text).map_err(|e| format!("{}: {e}", path.display()))?;

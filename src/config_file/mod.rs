@@ -15,12 +15,19 @@
 //! [severity]                        # error | warning | info | hint
 //! BACK_MATERIAL_NO_EFFECT = "warning"
 //!
+//! exclude = ["legacy/**", "build"]  # not searched in directory walks
+//!
 //! [[per-path-ignores]]              # like ruff's per-file-ignores
 //! path = "legacy/**/*.x3d"
 //! ignore = ["NODE_DEPRECATED", "FIELD_DEPRECATED"]
 //! ```
 //!
-//! Per-path patterns are matched against the checked file's path relative to the
+//! `exclude` is read from the file that applies to a directory argument (the closest
+//! upward from it, or `--config`): entries of the walk whose path matches one of its
+//! patterns (files, or directories with all they hold) are not searched; a file named on
+//! the command line is checked anyway.
+//!
+//! Per-path and exclude patterns are matched against the checked file's path relative to the
 //! directory of the configuration file ([`glob`] says how); a pattern without `/` matches
 //! the file name in any directory.
 //!
@@ -130,6 +137,8 @@ pub struct ConfigFile {
     pub dir: PathBuf,
     pub settings: Settings,
     pub per_path_ignores: Vec<PerPathIgnore>,
+    /// `exclude`: paths directory walks do not search.
+    pub exclude: Vec<Glob>,
 }
 
 /// What applies to one checked file.
@@ -154,6 +163,7 @@ struct RawFile {
     fold: Option<bool>,
     normal_tolerance: Option<Spanned<f64>>,
     per_path_ignores: Option<Vec<RawPerPath>>,
+    exclude: Option<Vec<Spanned<String>>>,
 }
 
 #[derive(Deserialize)]
@@ -173,6 +183,7 @@ const KEYS: &[&str] = &[
     "fold",
     "normal-tolerance",
     "per-path-ignores",
+    "exclude",
     "path",
 ];
 
@@ -273,6 +284,13 @@ impl ConfigFile {
                 ignore: codes(&entry.ignore)?,
             });
         }
+        let mut exclude = Vec::new();
+        for pattern in raw.exclude.iter().flatten() {
+            if pattern.get_ref().trim().is_empty() {
+                return Err(error(pattern.span(), "exclude: empty pattern".to_string()));
+            }
+            exclude.push(Glob::new(pattern.get_ref()));
+        }
         let dir = std::path::absolute(path)
             .ok()
             .and_then(|p| p.parent().map(Path::to_path_buf))
@@ -282,7 +300,14 @@ impl ConfigFile {
             dir,
             settings,
             per_path_ignores,
+            exclude,
         })
+    }
+
+    /// Whether `exclude` names `path` (absolute), relative to this file's directory.
+    pub fn excludes(&self, path: &Path) -> bool {
+        let relative = relative_path(&self.dir, path);
+        self.exclude.iter().any(|glob| glob.matches(&relative))
     }
 
     /// The codes the per-path ignores turn off for `file`.
@@ -343,6 +368,18 @@ impl Resolver {
             fail_on,
             file: found.map(|f| f.path.clone()),
         })
+    }
+
+    /// The configuration file that applies to the directory `dir`: `--config`, else the
+    /// closest upward from it.
+    pub fn file_for_dir(&mut self, dir: &Path) -> Result<Option<Arc<ConfigFile>>, ConfigError> {
+        match &self.explicit {
+            Some(explicit) => Ok(Some(explicit.clone())),
+            None => match std::path::absolute(dir) {
+                Ok(dir) => self.discover(&dir),
+                Err(_) => Ok(None),
+            },
+        }
     }
 
     /// The closest `x3dcheck.toml` in `dir` or an ancestor.
@@ -407,7 +444,10 @@ fn toml_message(message: &str) -> String {
     let key = rest.split('`').next().unwrap_or_default();
     match suggest::help(key, KEYS.iter().copied()) {
         Some(help) => format!("unknown key `{key}` ({help})"),
-        None => format!("unknown key `{key}`; the keys are {}", KEYS[..9].join(", ")),
+        None => format!(
+            "unknown key `{key}`; the keys are {}",
+            KEYS[..10].join(", ")
+        ),
     }
 }
 

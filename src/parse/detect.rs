@@ -1,5 +1,5 @@
 //! Tells the encoding from the first bytes: XML, JSON, or something x3dcheck does not read
-//! (ClassicVRML, VRML97, gzip, UTF-16, binary), with a diagnostic that says which.
+//! (ClassicVRML, VRML97, UTF-32, binary; gzip and UTF-16 when not decoded first), with a diagnostic that says which.
 
 use super::rules::ENCODING_UNSUPPORTED;
 use crate::diagnostic::Diagnostic;
@@ -22,12 +22,20 @@ pub fn detect(source: &[u8]) -> Detected {
             .help(help.to_string()),
         )
     };
+    // A gzip stream inside a gzip stream (`decode` inflates one), or undecoded input.
     if source.starts_with(&[0x1f, 0x8b]) {
         return unsupported(
             "gzip-compressed data",
             "decompress it first (gunzip -c file.x3dz > file.x3d)",
         );
     }
+    if source.starts_with(b"\xFF\xFE\0\0") || source.starts_with(b"\0\0\xFE\xFF") {
+        return unsupported(
+            "UTF-32 text",
+            "x3dcheck reads UTF-8 and UTF-16; convert it (iconv -f UTF-32 -t UTF-8)",
+        );
+    }
+    // What `decode` did not decode (callers of the readers that skip it).
     if source.starts_with(&[0xff, 0xfe]) || source.starts_with(&[0xfe, 0xff]) {
         return unsupported(
             "UTF-16 text",

@@ -1,6 +1,8 @@
-//! Readers: detect the encoding from the content (not the file name) and read XML or JSON
-//! into the one scene model.
+//! Readers: decode the input ([`decode`]: gzip, character encodings), detect the encoding
+//! from the content (not the file name) and read XML or JSON into the one scene model. The
+//! readers read the decoded UTF-8 text.
 
+pub mod decode;
 mod detect;
 pub mod json;
 pub mod number;
@@ -9,6 +11,7 @@ pub mod xml;
 mod xml_entities;
 pub mod xml_value;
 
+pub use decode::{decode, Decoded};
 pub use detect::{detect, Detected};
 
 use crate::diagnostic::Diagnostic;

@@ -439,6 +439,7 @@ mod tests {
         let report = FileReport {
             path: "s.x3d".to_string(),
             encoding: None,
+            compressed: false,
             x3d_version: None,
             profile: None,
             diagnostics: resolve(&[diagnostic], source.as_bytes(), None),

@@ -36,6 +36,9 @@ struct Report<'a> {
 struct File<'a> {
     path: Cow<'a, str>,
     encoding: Option<Encoding>,
+    /// Said only when true, so that reports of uncompressed input keep their bytes.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    compressed: bool,
     x3d_version: Option<Cow<'a, str>>,
     profile: Option<Cow<'a, str>>,
     diagnostics: Vec<Diagnostic<'a>>,
@@ -127,6 +130,7 @@ pub fn render(reports: &[FileReport], shard: Option<Shard>) -> String {
             .map(|r| File {
                 path: r.path.as_str().into(),
                 encoding: r.encoding,
+                compressed: r.compressed,
                 x3d_version: r.x3d_version.as_deref().map(Cow::from),
                 profile: r.profile.as_deref().map(Cow::from),
                 diagnostics: r.diagnostics.iter().map(Diagnostic::from).collect(),
@@ -252,6 +256,7 @@ fn file_report(file: File) -> Result<FileReport, ReadError> {
     Ok(FileReport {
         path: file.path.into_owned(),
         encoding: file.encoding,
+        compressed: file.compressed,
         x3d_version: file.x3d_version.map(Cow::into_owned),
         profile: file.profile.map(Cow::into_owned),
         diagnostics,
@@ -285,6 +290,7 @@ mod tests {
         FileReport {
             path: "dir/ü scene.x3d".to_string(),
             encoding: Some(Encoding::Xml),
+            compressed: true,
             x3d_version: Some("4.0".to_string()),
             profile: None,
             diagnostics: resolve(&diagnostics, source, None),

@@ -27,6 +27,8 @@ use crate::validate::Severity;
 pub struct FileReport {
     pub path: String,
     pub encoding: Option<Encoding>,
+    /// Whether the input was gzip-compressed (positions are in the decompressed text).
+    pub compressed: bool,
     pub x3d_version: Option<String>,
     pub profile: Option<String>,
     pub diagnostics: Vec<Resolved>,

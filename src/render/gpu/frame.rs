@@ -457,8 +457,11 @@ mod tests {
             <Coordinate point='0 1 0 6 1 0 6 1 6 0 1 6'/></IndexedLineSet></Shape>\
             <Shape><PointSet><Coordinate point='1 2 1 2 2 2 3 2 3'/></PointSet></Shape>\
             </Scene></X3D>";
-        let (mut report, doc) =
-            crate::check::check_document("passes.x3d", source.as_bytes(), &CheckConfig::default());
+        let crate::check::Checked {
+            mut report,
+            document: doc,
+            ..
+        } = crate::check::check_document("passes.x3d", source.as_bytes(), &CheckConfig::default());
         let args = RenderArgs {
             render: None,
             size: ImageSize {

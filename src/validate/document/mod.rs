@@ -59,6 +59,8 @@ pub static RULES: &[&Check] = &[
     &component_level_insufficient::CHECK,
     &validation_incomplete::CHECK,
     &root_content_ignored::CHECK,
+    &Check::reported(&crate::parse::rules::GZIP_CORRUPT),
+    &Check::reported(&crate::parse::rules::XML_ENCODING_UNSUPPORTED),
 ];
 
 /// The index of the first element that fails a test and how many fail, for rules that
