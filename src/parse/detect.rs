@@ -1,5 +1,5 @@
-//! Tells the encoding from the first bytes: XML, JSON, or something x3dcheck does not read
-//! (ClassicVRML, VRML97, gzip, UTF-16, binary), with a diagnostic that says which.
+//! Tells the encoding from the first bytes: XML, JSON, ClassicVRML/VRML97, or something
+//! x3dcheck does not read (VRML 1.0, gzip, UTF-16, binary), with a diagnostic that says which.
 
 use crate::model::Span;
 use crate::report::Diagnostic;
@@ -8,6 +8,8 @@ use crate::validate::document::encoding_unsupported::ENCODING_UNSUPPORTED;
 pub enum Detected {
     Xml,
     Json,
+    /// ClassicVRML (`#X3D`) or VRML97 (`#VRML V2.0`).
+    Classic,
     Unsupported(Diagnostic),
 }
 
@@ -40,17 +42,18 @@ pub fn detect(source: &[u8]) -> Detected {
         .position(|b| !b.is_ascii_whitespace())
         .unwrap_or(text.len());
     let text = &text[start..];
-    if text.starts_with(b"#X3D") {
-        return unsupported(
-            "X3D ClassicVRML encoding",
-            "convert it to XML, e.g. with Castle's tovrmlx3d or X_ITE's x3d-tidy",
+    if text.starts_with(b"#VRML V1.0") {
+        return Detected::Unsupported(
+            Diagnostic::new(
+                &ENCODING_UNSUPPORTED,
+                Span::new(0, 0),
+                "this is VRML 1.0, a different language from VRML97 and X3D (nodes such as Separator, no ROUTEs)".to_string(),
+            )
+            .help("convert it to VRML97 or X3D first, e.g. with Castle Game Engine's tovrmlx3d"),
         );
     }
-    if text.starts_with(b"#VRML") {
-        return unsupported(
-            "VRML",
-            "convert it to X3D XML, e.g. with Castle's tovrmlx3d or X_ITE's x3d-tidy",
-        );
+    if text.starts_with(b"#X3D") || text.starts_with(b"#VRML") {
+        return Detected::Classic;
     }
     match text.first() {
         Some(b'<') => Detected::Xml,

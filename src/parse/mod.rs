@@ -1,6 +1,7 @@
-//! Readers: detect the encoding from the content (not the file name) and read XML or JSON
-//! into the one scene model.
+//! Readers: detect the encoding from the content (not the file name) and read XML, JSON,
+//! ClassicVRML or VRML97 into the one scene model.
 
+pub mod classic;
 mod detect;
 pub mod json;
 pub mod number;
@@ -30,6 +31,7 @@ pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
     match detect(source) {
         Detected::Xml => xml::read_with(source, keep),
         Detected::Json => json::read_with(source, keep),
+        Detected::Classic => classic::read_with(source, keep),
         Detected::Unsupported(diagnostic) => Parsed {
             encoding: None,
             document: None,

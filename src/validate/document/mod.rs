@@ -31,6 +31,7 @@ pub mod use_type_mismatch;
 pub mod use_undefined;
 pub mod use_with_fields;
 pub mod validation_incomplete;
+pub mod vrml_malformed;
 pub mod x3d_version_missing;
 pub mod x3d_version_unknown;
 pub mod xml_malformed;
@@ -39,6 +40,7 @@ pub mod xml_malformed;
 pub static RULES: &[&Rule] = &[
     &xml_malformed::XML_MALFORMED,
     &json_malformed::JSON_MALFORMED,
+    &vrml_malformed::VRML_MALFORMED,
     &encoding_unsupported::ENCODING_UNSUPPORTED,
     &root_not_x3d::ROOT_NOT_X3D,
     &x3d_version_missing::X3D_VERSION_MISSING,

@@ -1,11 +1,14 @@
 //! PROFILE_MISSING: the root has no `profile`.
 
+use crate::model::Encoding;
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
     /// ## What it does
-    /// Reports an `X3D` root without a `profile` attribute.
+    /// Reports an `X3D` root without a `profile` attribute, or a ClassicVRML file without
+    /// a PROFILE statement. VRML97 files have no profiles (14772-1 has no such statement)
+    /// and are not reported.
     ///
     /// ## Why it matters
     /// The profile tells a browser which components the scene needs; without one the
@@ -29,7 +32,7 @@ crate::declare_rule! {
 }
 
 fn check(ctx: &mut Ctx) {
-    if ctx.doc.profile.is_none() {
+    if ctx.doc.profile.is_none() && ctx.doc.encoding != Encoding::Vrml97 {
         ctx.report(
             Diagnostic::new(
                 &PROFILE_MISSING,
