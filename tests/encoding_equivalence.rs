@@ -70,9 +70,7 @@ fn compare(name: &str, a: (&str, &Path), b: (&str, &Path)) -> Vec<String> {
             pb.diagnostics.first().map(|d| &d.message)
         )];
     };
-    if let Some(difference) =
-        first_difference((a.0, &Summary::of(da)), (b.0, &Summary::of(db)))
-    {
+    if let Some(difference) = first_difference((a.0, &Summary::of(da)), (b.0, &Summary::of(db))) {
         problems.push(format!("{name}: the models differ\n{difference}"));
     }
     let (ra, rb) = (positionless(&check(a.1)), positionless(&check(b.1)));
@@ -88,7 +86,11 @@ fn compare(name: &str, a: (&str, &Path), b: (&str, &Path)) -> Vec<String> {
 #[test]
 fn the_project_scenes_give_one_model_in_three_encodings() {
     let stems = scenes();
-    assert!(stems.len() >= 3, "corpus/encodings has {} scenes", stems.len());
+    assert!(
+        stems.len() >= 3,
+        "corpus/encodings has {} scenes",
+        stems.len()
+    );
     let mut problems = Vec::new();
     for stem in &stems {
         let name = stem.file_name().unwrap().to_string_lossy().into_owned();
@@ -121,7 +123,10 @@ fn the_project_scenes_have_no_reader_findings() {
 fn the_real_pairs_give_one_model() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus");
     let fox = "animation/gltf_skinned_animation/fox_from_khronos/Fox";
-    let xml = root.join("castle-demo-models").join(fox).with_extension("x3d");
+    let xml = root
+        .join("castle-demo-models")
+        .join(fox)
+        .with_extension("x3d");
     let classic = root
         .join("castle-demo-models-classic")
         .join(fox)

@@ -114,7 +114,10 @@ fn xml_and_json_give_the_same_model() {
             ));
             continue;
         };
-        let difference = first_difference(("xml", &Summary::of(xml_doc)), ("json", &Summary::of(json_doc)));
+        let difference = first_difference(
+            ("xml", &Summary::of(xml_doc)),
+            ("json", &Summary::of(json_doc)),
+        );
         match (difference, known) {
             (None, None) => equal += 1,
             (None, Some(_)) => mismatches.push(format!(

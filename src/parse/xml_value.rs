@@ -375,9 +375,13 @@ fn parse_bools(syntax: Syntax, ty: FieldType, s: &[u8]) -> Result<Vec<bool>, Syn
                 } else if other.eq_ignore_ascii_case(b"false") {
                     format!("`{token}` is not a boolean: {case}: `{no}`")
                 } else if other == b"1" {
-                    format!("`{token}` is not a boolean: {ty} takes `{yes}` or `{no}`; write `{yes}`")
+                    format!(
+                        "`{token}` is not a boolean: {ty} takes `{yes}` or `{no}`; write `{yes}`"
+                    )
                 } else if other == b"0" {
-                    format!("`{token}` is not a boolean: {ty} takes `{yes}` or `{no}`; write `{no}`")
+                    format!(
+                        "`{token}` is not a boolean: {ty} takes `{yes}` or `{no}`; write `{no}`"
+                    )
                 } else {
                     format!("`{token}` is not a boolean: {ty} takes `{yes}` or `{no}`")
                 };

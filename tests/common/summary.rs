@@ -300,4 +300,3 @@ pub fn first_difference(a: (&str, &[Line]), b: (&str, &[Line])) -> Option<String
     let _ = write!(out, "      {:<6} {}", format!("{b_name}:"), show(b.get(at)));
     Some(out)
 }
-

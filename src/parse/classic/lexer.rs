@@ -72,7 +72,10 @@ pub fn is_space(b: u8) -> bool {
 #[inline(always)]
 fn ends_word(b: u8, colon: bool) -> bool {
     is_space(b)
-        || matches!(b, b'"' | b'#' | b'\'' | b'[' | b']' | b'{' | b'}' | b'\\' | b'.')
+        || matches!(
+            b,
+            b'"' | b'#' | b'\'' | b'[' | b']' | b'{' | b'}' | b'\\' | b'.'
+        )
         || (b == b':' && !colon)
         || b < 0x20
         || b == 0x7f
@@ -183,7 +186,11 @@ impl<'s> Lexer<'s> {
     /// The closing `]` of a bracket whose content starts at `from`, with the comments in
     /// between (so that the caller can blank them), skipping strings. None when the
     /// input ends first.
-    pub fn bracket_end(&mut self, from: usize, comments: &mut Vec<(usize, usize)>) -> Option<usize> {
+    pub fn bracket_end(
+        &mut self,
+        from: usize,
+        comments: &mut Vec<(usize, usize)>,
+    ) -> Option<usize> {
         let b = self.bytes;
         let mut i = from;
         loop {
@@ -288,7 +295,13 @@ mod tests {
         assert_eq!(lexer.bracket_end(0, &mut comments), Some(16));
         assert_eq!(comments, vec![(4, 8)]);
         assert_eq!(lexer.bracket_end(0, &mut Vec::new()).map(|_| ()), Some(()));
-        assert_eq!(Lexer::new("1 2", 0, true, false).bracket_end(0, &mut comments), None);
-        assert_eq!(Lexer::new("\"a]", 0, true, false).bracket_end(0, &mut comments), None);
+        assert_eq!(
+            Lexer::new("1 2", 0, true, false).bracket_end(0, &mut comments),
+            None
+        );
+        assert_eq!(
+            Lexer::new("\"a]", 0, true, false).bracket_end(0, &mut comments),
+            None
+        );
     }
 }

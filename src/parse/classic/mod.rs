@@ -50,7 +50,11 @@ pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
         document: None,
         diagnostics: vec![Diagnostic::new(&VRML_MALFORMED, Span::new(at, at), message)],
     };
-    let bom = if source.starts_with(b"\xEF\xBB\xBF") { 3 } else { 0 };
+    let bom = if source.starts_with(b"\xEF\xBB\xBF") {
+        3
+    } else {
+        0
+    };
     let start = bom
         + source[bom..]
             .iter()
@@ -91,7 +95,10 @@ pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
     reader.header(start);
     reader.statements(None);
     if let Some(at) = reader.lexer.unterminated_comment {
-        reader.malformed(Span::new(at, at + 3), "a block comment `#/*` that never ends with `*/#`");
+        reader.malformed(
+            Span::new(at, at + 3),
+            "a block comment `#/*` that never ends with `*/#`",
+        );
     }
     let (document, diagnostics) = reader.builder.finish();
     Parsed {
@@ -191,13 +198,22 @@ impl<'s> Reader<'s> {
                         doc.version = Some(vrml97_schema_version());
                         if number != "2.0" {
                             let span = named.span;
-                            self.malformed(span, format!("`#VRML V{number}`: VRML97 files start with `#VRML V2.0 utf8`"));
+                            self.malformed(
+                                span,
+                                format!(
+                                    "`#VRML V{number}`: VRML97 files start with `#VRML V2.0 utf8`"
+                                ),
+                            );
                         }
                     }
                 }
                 // Block comments came with X3D 3.3 (19776-2 A.1.2).
                 self.lexer.block_comments = self.dialect == Dialect::X3d
-                    && self.builder.doc().version.is_none_or(|v| v >= Version::V3_3);
+                    && self
+                        .builder
+                        .doc()
+                        .version
+                        .is_none_or(|v| v >= Version::V3_3);
                 self.builder.doc_mut().version_text = Some(named);
             }
             None => self.malformed(
@@ -232,7 +248,10 @@ impl<'s> Reader<'s> {
                 Kind::Id => self.statement(token, proto.is_none()),
                 _ => {
                     let what = describe(&token);
-                    self.malformed(token.span(), format!("{what} where a node or statement belongs"));
+                    self.malformed(
+                        token.span(),
+                        format!("{what} where a node or statement belongs"),
+                    );
                     self.lexer.next();
                     self.recover(proto.is_some());
                 }
@@ -271,7 +290,10 @@ impl<'s> Reader<'s> {
             "PROFILE" | "COMPONENT" | "UNIT" | "META" | "IMPORT" | "EXPORT" => {
                 self.malformed(
                     token.span(),
-                    format!("VRML97 has no {} statement (X3D's ClassicVRML encoding has)", token.text),
+                    format!(
+                        "VRML97 has no {} statement (X3D's ClassicVRML encoding has)",
+                        token.text
+                    ),
                 );
                 self.lexer.next();
                 self.recover_statement();
@@ -305,14 +327,21 @@ impl<'s> Reader<'s> {
                         }
                         _ => self.malformed(
                             token.span(),
-                            format!("{} where the component level belongs (`COMPONENT {}:1`)", describe(&token), name.text),
+                            format!(
+                                "{} where the component level belongs (`COMPONENT {}:1`)",
+                                describe(&token),
+                                name.text
+                            ),
                         ),
                     }
                 } else {
                     let at = self.lexer.pos;
                     self.malformed(
                         Span::new(at, at),
-                        format!("COMPONENT {} has no level: write `COMPONENT {}:1`", name.text, name.text),
+                        format!(
+                            "COMPONENT {} has no level: write `COMPONENT {}:1`",
+                            name.text, name.text
+                        ),
                     );
                 }
                 let span = Span::new(keyword.start, end);
@@ -354,7 +383,10 @@ impl<'s> Reader<'s> {
             self.lexer.next();
             return Some(named(&token));
         }
-        self.malformed(token.span(), format!("{} where {what} belongs", describe(&token)));
+        self.malformed(
+            token.span(),
+            format!("{} where {what} belongs", describe(&token)),
+        );
         None
     }
 
@@ -364,7 +396,10 @@ impl<'s> Reader<'s> {
             let (from_node, from_field) = self.dotted("ROUTE")?;
             let to = self.lexer.peek();
             if !to.is_id("TO") {
-                self.malformed(to.span(), format!("{} where `TO` belongs in `ROUTE a.b TO c.d`", describe(&to)));
+                self.malformed(
+                    to.span(),
+                    format!("{} where `TO` belongs in `ROUTE a.b TO c.d`", describe(&to)),
+                );
                 return None;
             }
             self.lexer.next();
@@ -393,7 +428,10 @@ impl<'s> Reader<'s> {
         let dot = self.lexer.peek();
         // A name may not hold a `.`, so `a.b` is three tokens with nothing between.
         if !dot.is(Kind::Period) {
-            self.malformed(dot.span(), format!("{} where `.` belongs after `{}`", describe(&dot), node.text));
+            self.malformed(
+                dot.span(),
+                format!("{} where `.` belongs after `{}`", describe(&dot), node.text),
+            );
             return None;
         }
         self.lexer.next();
@@ -406,7 +444,8 @@ impl<'s> Reader<'s> {
         let end = if keyword.text == "IMPORT" {
             self.dotted("IMPORT").map(|(_, field)| field.span.end)
         } else {
-            self.expect_name("a node name after EXPORT").map(|n| n.span.end)
+            self.expect_name("a node name after EXPORT")
+                .map(|n| n.span.end)
         };
         let Some(mut end) = end else {
             self.recover_statement();
@@ -427,7 +466,8 @@ impl<'s> Reader<'s> {
     /// (19776-2 4.3.2.9, 4.3.2.11), keyword consumed.
     fn proto(&mut self, keyword: Token<'s>) {
         let external = keyword.text == "EXTERNPROTO";
-        let Some(name) = self.expect_name(&format!("the prototype's name after {}", keyword.text)) else {
+        let Some(name) = self.expect_name(&format!("the prototype's name after {}", keyword.text))
+        else {
             self.recover_statement();
             return;
         };
@@ -447,7 +487,10 @@ impl<'s> Reader<'s> {
             self.lexer.next();
             self.declarations(Owner::Proto { proto, external });
         } else {
-            self.malformed(open.span(), format!("{} where the interface `[ … ]` belongs", describe(&open)));
+            self.malformed(
+                open.span(),
+                format!("{} where the interface `[ … ]` belongs", describe(&open)),
+            );
         }
         let end = if external {
             self.extern_url(proto)
@@ -468,7 +511,10 @@ impl<'s> Reader<'s> {
                     return;
                 }
                 Kind::End => {
-                    self.malformed(token.span(), "the file ends inside a PROTO interface `[`: `]` is missing");
+                    self.malformed(
+                        token.span(),
+                        "the file ends inside a PROTO interface `[`: `]` is missing",
+                    );
                     return;
                 }
                 Kind::Id if access_type(token.text).is_some() => {
@@ -478,10 +524,16 @@ impl<'s> Reader<'s> {
                 _ => {
                     self.malformed(
                         token.span(),
-                        format!("{} where a field declaration (`inputOutput SFFloat name 1`) belongs", describe(&token)),
+                        format!(
+                            "{} where a field declaration (`inputOutput SFFloat name 1`) belongs",
+                            describe(&token)
+                        ),
                     );
                     self.lexer.next();
-                    while !matches!(self.lexer.peek().kind, Kind::Id | Kind::CloseBracket | Kind::End) {
+                    while !matches!(
+                        self.lexer.peek().kind,
+                        Kind::Id | Kind::CloseBracket | Kind::End
+                    ) {
                         self.skip_one();
                     }
                 }
@@ -498,11 +550,20 @@ impl<'s> Reader<'s> {
             self.lexer.next();
             let ty = FieldType::parse(ty_token.text);
             if ty.is_none() {
-                self.malformed(ty_token.span(), format!("`{}` is not a field type", ty_token.text));
+                self.malformed(
+                    ty_token.span(),
+                    format!("`{}` is not a field type", ty_token.text),
+                );
             }
             ty
         } else {
-            self.malformed(ty_token.span(), format!("{} where a field type (SFFloat, MFNode, …) belongs", describe(&ty_token)));
+            self.malformed(
+                ty_token.span(),
+                format!(
+                    "{} where a field type (SFFloat, MFNode, …) belongs",
+                    describe(&ty_token)
+                ),
+            );
             None
         };
         let Some(name) = self.expect_name("the field's name") else {
@@ -566,8 +627,12 @@ impl<'s> Reader<'s> {
         };
         if let Some(value) = value {
             let decl = match owner {
-                Owner::Node(node) => &mut self.builder.doc_mut().nodes[node.index()].declared[index],
-                Owner::Proto { proto, .. } => &mut self.builder.doc_mut().protos[proto].interface[index],
+                Owner::Node(node) => {
+                    &mut self.builder.doc_mut().nodes[node.index()].declared[index]
+                }
+                Owner::Proto { proto, .. } => {
+                    &mut self.builder.doc_mut().protos[proto].interface[index]
+                }
             };
             decl.span.end = value.1.end;
             decl.value = Some(value);
@@ -578,7 +643,10 @@ impl<'s> Reader<'s> {
     fn proto_body(&mut self, proto: usize) -> usize {
         let open = self.lexer.peek();
         if !open.is(Kind::OpenBrace) {
-            self.malformed(open.span(), format!("{} where the PROTO body `{{ … }}` belongs", describe(&open)));
+            self.malformed(
+                open.span(),
+                format!("{} where the PROTO body `{{ … }}` belongs", describe(&open)),
+            );
             self.recover_statement();
             return self.lexer.pos;
         }
@@ -597,7 +665,13 @@ impl<'s> Reader<'s> {
     fn extern_url(&mut self, proto: usize) -> usize {
         let token = self.lexer.peek();
         if !matches!(token.kind, Kind::String | Kind::OpenBracket) {
-            self.malformed(token.span(), format!("{} where the EXTERNPROTO's url (`\"file.x3dv#Name\"`) belongs", describe(&token)));
+            self.malformed(
+                token.span(),
+                format!(
+                    "{} where the EXTERNPROTO's url (`\"file.x3dv#Name\"`) belongs",
+                    describe(&token)
+                ),
+            );
             return self.lexer.pos;
         }
         let url = Token {
@@ -605,7 +679,9 @@ impl<'s> Reader<'s> {
             text: "url",
             start: token.start,
         };
-        if let Some((Value::Strings(urls), span)) = self.typed_value(FieldType::MFString, None, &url) {
+        if let Some((Value::Strings(urls), span)) =
+            self.typed_value(FieldType::MFString, None, &url)
+        {
             self.builder.doc_mut().protos[proto].url = urls;
             return span.end as usize;
         }
@@ -724,7 +800,14 @@ impl<'s> Reader<'s> {
                 };
                 let ty = self.lexer.peek();
                 if !ty.is(Kind::Id) {
-                    self.malformed(ty.span(), format!("{} where the node type after `DEF {}` belongs", describe(&ty), name.text));
+                    self.malformed(
+                        ty.span(),
+                        format!(
+                            "{} where the node type after `DEF {}` belongs",
+                            describe(&ty),
+                            name.text
+                        ),
+                    );
                     self.recover_statement();
                     return;
                 }
@@ -740,7 +823,14 @@ impl<'s> Reader<'s> {
         let start = def.as_ref().map_or(ty.start, |(_, at)| *at);
         let open = self.lexer.peek();
         if !open.is(Kind::OpenBrace) {
-            self.malformed(open.span(), format!("{} where `{{` belongs after the node type `{}`", describe(&open), ty.text));
+            self.malformed(
+                open.span(),
+                format!(
+                    "{} where `{{` belongs after the node type `{}`",
+                    describe(&open),
+                    ty.text
+                ),
+            );
             self.recover_statement();
             return;
         }
@@ -766,7 +856,11 @@ impl<'s> Reader<'s> {
         if let Some((name, _)) = def {
             self.builder.define(id, name);
         }
-        let origin = if instance { Origin::FieldValue } else { Origin::Member };
+        let origin = if instance {
+            Origin::FieldValue
+        } else {
+            Origin::Member
+        };
         let end = self.node_body(id, origin, ty);
         self.builder.end_node(id, Span::new(start, end));
         self.depth -= 1;
@@ -784,7 +878,13 @@ impl<'s> Reader<'s> {
                 Kind::End => {
                     if !self.end_reported {
                         self.end_reported = true;
-                        self.malformed(ty.span(), format!("the file ends inside this `{}`: its `}}` is missing", ty.text));
+                        self.malformed(
+                            ty.span(),
+                            format!(
+                                "the file ends inside this `{}`: its `}}` is missing",
+                                ty.text
+                            ),
+                        );
                     }
                     return token.start;
                 }
@@ -793,12 +893,21 @@ impl<'s> Reader<'s> {
                     match token.text {
                         "ROUTE" => self.route(token),
                         "PROTO" | "EXTERNPROTO" => self.proto(token),
-                        text if access_type(text).is_some() => self.declaration(Owner::Node(id), token),
+                        text if access_type(text).is_some() => {
+                            self.declaration(Owner::Node(id), token)
+                        }
                         _ => self.field(id, origin, token),
                     }
                 }
                 _ => {
-                    self.malformed(token.span(), format!("{} where a field name of `{}` belongs", describe(&token), ty.text));
+                    self.malformed(
+                        token.span(),
+                        format!(
+                            "{} where a field name of `{}` belongs",
+                            describe(&token),
+                            ty.text
+                        ),
+                    );
                     self.lexer.next();
                     self.recover(true);
                 }
@@ -863,7 +972,9 @@ impl<'s> Reader<'s> {
             proto_field,
             span,
         };
-        self.builder.doc_mut().nodes[node.index()].connects.push(connect);
+        self.builder.doc_mut().nodes[node.index()]
+            .connects
+            .push(connect);
     }
 
     /// An SFNode or MFNode value: `NULL`, one node statement, or `[ node statements ]`.
@@ -880,19 +991,40 @@ impl<'s> Reader<'s> {
                 self.builder.report(Diagnostic::new(
                     &FIELD_VALUE_SYNTAX,
                     token.span(),
-                    format!("`{}` is an {ty} field: it takes nodes, not values", field.text),
+                    format!(
+                        "`{}` is an {ty} field: it takes nodes, not values",
+                        field.text
+                    ),
                 ));
                 self.skip_one();
             }
             Kind::OpenBracket => {
                 if !ty.is_mf() {
-                    self.malformed(token.span(), format!("`{}` is an SFNode field: its value is one node or NULL, not a list", field.text));
+                    self.malformed(
+                        token.span(),
+                        format!(
+                            "`{}` is an SFNode field: its value is one node or NULL, not a list",
+                            field.text
+                        ),
+                    );
                 }
                 self.lexer.next();
                 self.node_list(hint);
             }
             _ => {
-                self.malformed(token.span(), format!("{} where the value of `{}` (a node{}) belongs", describe(&token), field.text, if ty.is_mf() { " or `[ … ]`" } else { " or NULL" }));
+                self.malformed(
+                    token.span(),
+                    format!(
+                        "{} where the value of `{}` (a node{}) belongs",
+                        describe(&token),
+                        field.text,
+                        if ty.is_mf() {
+                            " or `[ … ]`"
+                        } else {
+                            " or NULL"
+                        }
+                    ),
+                );
                 self.recover(true);
             }
         }
@@ -908,27 +1040,45 @@ impl<'s> Reader<'s> {
                     return;
                 }
                 Kind::End => {
-                    self.malformed(token.span(), "the file ends inside a node list: `]` is missing");
+                    self.malformed(
+                        token.span(),
+                        "the file ends inside a node list: `]` is missing",
+                    );
                     return;
                 }
                 Kind::CloseBrace => {
                     // Left for the node it closes.
-                    self.malformed(token.span(), "the node list's `]` is missing before this `}`");
+                    self.malformed(
+                        token.span(),
+                        "the node list's `]` is missing before this `}`",
+                    );
                     return;
                 }
                 Kind::Id if !matches!(token.text, "PROTO" | "EXTERNPROTO" | "ROUTE" | "NULL") => {
                     // A name followed by a name is a field of the enclosing node: the
                     // list's `]` is missing.
                     if !matches!(token.text, "DEF" | "USE") && !self.followed_by_brace(token) {
-                        self.malformed(token.span(), format!("`{}` where a node belongs: is the node list's `]` missing?", token.text));
+                        self.malformed(
+                            token.span(),
+                            format!(
+                                "`{}` where a node belongs: is the node list's `]` missing?",
+                                token.text
+                            ),
+                        );
                         return;
                     }
                     self.node_statement(hint);
                 }
                 _ => {
-                    self.malformed(token.span(), format!("{} where a node belongs in a node list", describe(&token)));
+                    self.malformed(
+                        token.span(),
+                        format!("{} where a node belongs in a node list", describe(&token)),
+                    );
                     self.lexer.next();
-                    while !matches!(self.lexer.peek().kind, Kind::Id | Kind::CloseBracket | Kind::CloseBrace | Kind::End) {
+                    while !matches!(
+                        self.lexer.peek().kind,
+                        Kind::Id | Kind::CloseBracket | Kind::CloseBrace | Kind::End
+                    ) {
                         self.skip_one();
                     }
                     if self.lexer.peek().is(Kind::CloseBrace) {

@@ -55,9 +55,7 @@ impl<'s> Reader<'s> {
             }
         }
         let parsed = match summary {
-            Some((node, def)) => {
-                xml_value::parse_summary(self.builder.doc().node(node), def, text)
-            }
+            Some((node, def)) => xml_value::parse_summary(self.builder.doc().node(node), def, text),
             None => xml_value::parse_value_in(Syntax::Classic, ty, text),
         };
         match parsed {
@@ -106,7 +104,13 @@ impl<'s> Reader<'s> {
         }
         if token.is(Kind::Unterminated) {
             self.lexer.next();
-            self.malformed(token.span(), format!("the string of `{}` never ends: its closing `\"` is missing", name.text));
+            self.malformed(
+                token.span(),
+                format!(
+                    "the string of `{}` never ends: its closing `\"` is missing",
+                    name.text
+                ),
+            );
             return None;
         }
         let what = match ty.scalar() {
@@ -115,12 +119,20 @@ impl<'s> Reader<'s> {
             _ => "numbers",
         };
         let at = self.lexer.pos;
-        let span = if token.is(Kind::End) { Span::new(at, at) } else { token.span() };
+        let span = if token.is(Kind::End) {
+            Span::new(at, at)
+        } else {
+            token.span()
+        };
         let brackets = if ty.is_mf() { " or `[ … ]`" } else { "" };
         self.builder.report(Diagnostic::new(
             &FIELD_VALUE_SYNTAX,
             span,
-            format!("`{}` ({ty}) needs {what}{brackets}; found {}", name.text, describe(&token)),
+            format!(
+                "`{}` ({ty}) needs {what}{brackets}; found {}",
+                name.text,
+                describe(&token)
+            ),
         ));
         None
     }
@@ -131,7 +143,10 @@ impl<'s> Reader<'s> {
         let mut comments = Vec::new();
         let Some(close) = self.lexer.bracket_end(from, &mut comments) else {
             self.lexer.pos = self.lexer.text.len();
-            self.malformed(open.span(), format!("the `[` of `{}` is never closed", name.text));
+            self.malformed(
+                open.span(),
+                format!("the `[` of `{}` is never closed", name.text),
+            );
             return None;
         };
         self.lexer.pos = close + 1;
@@ -171,7 +186,11 @@ impl<'s> Reader<'s> {
     /// The value of a field whose type is unknown (an unknown field or node type, a
     /// prototype not declared): nodes are read into the model, anything else is kept as
     /// text. None when there is no value or it was nodes.
-    pub(super) fn untyped_value(&mut self, hint: Hint<'s>, name: Token<'s>) -> Option<(Value, Span)> {
+    pub(super) fn untyped_value(
+        &mut self,
+        hint: Hint<'s>,
+        name: Token<'s>,
+    ) -> Option<(Value, Span)> {
         let token = self.lexer.peek();
         match token.kind {
             Kind::OpenBracket => {
@@ -179,7 +198,9 @@ impl<'s> Reader<'s> {
                 self.lexer.pos = token.end();
                 let inner = self.lexer.peek();
                 self.lexer.pos = saved;
-                if inner.is(Kind::Id) && (matches!(inner.text, "DEF" | "USE") || self.followed_by_brace(inner)) {
+                if inner.is(Kind::Id)
+                    && (matches!(inner.text, "DEF" | "USE") || self.followed_by_brace(inner))
+                {
                     self.lexer.next();
                     self.node_list(hint);
                     return None;
