@@ -13,15 +13,13 @@ mod value;
 
 use lexer::{Kind, Lexer, Token};
 
-use crate::check::Parsed;
+use crate::diagnostic::Diagnostic;
 use crate::limits::{MAX_DEPTH, MAX_INPUT_BYTES};
 use crate::model::builder::{Limit, Parent};
 use crate::model::*;
-use crate::parse::KeepValues;
-use crate::report::Diagnostic;
+use crate::parse::rules::{FIELD_VALUE_SYNTAX, VRML_MALFORMED};
+use crate::parse::{KeepValues, Parsed};
 use crate::schema::{AccessType, FieldType, Scalar, Version};
-use crate::validate::document::field_value_syntax::FIELD_VALUE_SYNTAX;
-use crate::validate::document::vrml_malformed::VRML_MALFORMED;
 
 /// Reads a ClassicVRML or VRML97 document.
 pub fn read(source: &[u8]) -> Parsed {

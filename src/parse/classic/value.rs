@@ -6,11 +6,11 @@
 
 use super::lexer::{Kind, Token};
 use super::{describe, Hint, Reader};
+use crate::diagnostic::Diagnostic;
 use crate::model::{NodeId, Span, Value};
+use crate::parse::rules::FIELD_VALUE_SYNTAX;
 use crate::parse::xml_value::{self, Syntax};
-use crate::report::Diagnostic;
 use crate::schema::{FieldDef, FieldType, Scalar};
-use crate::validate::document::field_value_syntax::FIELD_VALUE_SYNTAX;
 
 /// A field value's text: where it is, and the comments inside it.
 struct Extent {
