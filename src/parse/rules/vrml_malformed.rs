@@ -34,6 +34,5 @@ crate::declare_rule! {
         level: Fast,
         clause: "19776-2 A",
         versions: "all",
-        check: None,
     }
 }
