@@ -12,7 +12,8 @@ use x3dcheck::validate::Level;
 /// Generous: the largest corpus file takes milliseconds; this only catches hangs.
 const MAX_SECONDS_PER_FILE: u64 = 20;
 
-fn check_all(extensions: &[&str]) {
+/// Checks every corpus file with one of `extensions`; how many there were.
+fn check_all(extensions: &[&str]) -> usize {
     let files = corpus_files(extensions);
     assert!(!files.is_empty());
     let config = CheckConfig {
@@ -57,6 +58,7 @@ fn check_all(extensions: &[&str]) {
         files.len(),
         problems.join("\n")
     );
+    files.len()
 }
 
 #[test]
@@ -67,4 +69,12 @@ fn every_xml_scene_is_checked_cleanly() {
 #[test]
 fn every_json_scene_is_checked_cleanly() {
     check_all(&["json", "x3dj"]);
+}
+
+/// Castle Game Engine's demo models in ClassicVRML and VRML97 (and gzip: ENCODING_UNSUPPORTED
+/// until the gzip reader lands, a diagnostic with a place like any other).
+#[test]
+fn every_classic_and_vrml97_scene_is_checked_cleanly() {
+    let scenes = check_all(&["x3dv", "wrl", "gz", "x3dvz", "wrz"]);
+    assert_eq!(scenes, 357, "castle-demo-models-classic holds 357 scenes");
 }

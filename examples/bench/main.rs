@@ -144,6 +144,7 @@ fn bench(args: &Args, runs: usize, dir: &Path, scratch: &Path) -> Result<(), Str
         .map_err(|e| format!("cannot write the scene in {}: {e}", dir.display()))?;
     let xml_bytes = file_size(&scene.xml)?;
     let json_bytes = file_size(&scene.json)?;
+    let classic_bytes = file_size(&scene.classic)?;
     eprintln!(
         "x3dcheck-bench: {} scene ({:.1} s)",
         if scene.generated {
@@ -158,7 +159,8 @@ fn bench(args: &Args, runs: usize, dir: &Path, scratch: &Path) -> Result<(), Str
         "Scene: {} Shapes × IndexedTriangleSet of {} vertices and {} triangles (Coordinate, \
          Normal, TextureCoordinate, index), generator v{}\n\
          - XML:  {} ({} bytes, {:.1} MB)\n\
-         - JSON: {} ({} bytes, {:.1} MB)\n",
+         - JSON: {} ({} bytes, {:.1} MB)\n\
+         - ClassicVRML: {} ({} bytes, {:.1} MB)\n",
         scene::SHAPES,
         thousands(scene.vertices as u64),
         thousands(scene.triangles as u64),
@@ -169,6 +171,9 @@ fn bench(args: &Args, runs: usize, dir: &Path, scratch: &Path) -> Result<(), Str
         scene.json.display(),
         thousands(json_bytes),
         mb(json_bytes),
+        scene.classic.display(),
+        thousands(classic_bytes),
+        mb(classic_bytes),
     );
 
     let mut rows: Vec<Row> = Vec::new();
@@ -193,43 +198,51 @@ fn bench(args: &Args, runs: usize, dir: &Path, scratch: &Path) -> Result<(), Str
         rows.push(Row::x3dcheck(level, "XML", xml_bytes, case));
     }
 
-    // x3dcheck on JSON, when its reader accepts the file.
-    eprintln!("x3dcheck-bench: trying the JSON scene");
-    match time_x3dcheck(&timer, &x3dcheck, "standard", &scene.json, 1, scratch) {
-        Ok(probe)
-            if probe.encoding.as_deref() == Some("json")
-                && probe.shapes == Some(scene::SHAPES as u64) =>
-        {
-            for level in LEVELS {
-                eprintln!("x3dcheck-bench: x3dcheck --level {level} (JSON) ×{runs}");
-                let case = time_x3dcheck(&timer, &x3dcheck, level, &scene.json, runs, scratch)
-                    .map_err(|e| {
-                        format!("x3dcheck --level {level} failed on the JSON scene: {e}")
-                    })?;
-                if level == "standard" {
-                    check_stats(
-                        &case,
-                        scene::SHAPES as u64,
-                        (scene.triangles * scene::SHAPES) as u64,
-                        "JSON",
-                        &mut notes,
-                    );
-                    let same = xml_stats.is_some() && xml_stats == case.stats;
-                    notes.push(format!(
-                        "XML and JSON `stats` in the report: {}",
-                        if same { "equal" } else { "DIFFERENT" }
-                    ));
+    // x3dcheck on JSON and on ClassicVRML, when its reader accepts the file.
+    let others = [
+        ("JSON", "json", &scene.json, json_bytes),
+        ("ClassicVRML", "classicvrml", &scene.classic, classic_bytes),
+    ];
+    for (name, encoding, path, bytes) in others {
+        eprintln!("x3dcheck-bench: trying the {name} scene");
+        match time_x3dcheck(&timer, &x3dcheck, "standard", path, 1, scratch) {
+            Ok(probe)
+                if probe.encoding.as_deref() == Some(encoding)
+                    && probe.shapes == Some(scene::SHAPES as u64) =>
+            {
+                for level in LEVELS {
+                    eprintln!("x3dcheck-bench: x3dcheck --level {level} ({name}) ×{runs}");
+                    let case = time_x3dcheck(&timer, &x3dcheck, level, path, runs, scratch)
+                        .map_err(|e| {
+                            format!("x3dcheck --level {level} failed on the {name} scene: {e}")
+                        })?;
+                    if level == "standard" {
+                        check_stats(
+                            &case,
+                            scene::SHAPES as u64,
+                            (scene.triangles * scene::SHAPES) as u64,
+                            name,
+                            &mut notes,
+                        );
+                        let same = xml_stats.is_some() && xml_stats == case.stats;
+                        notes.push(format!(
+                            "XML and {name} `stats` in the report: {}",
+                            if same { "equal" } else { "DIFFERENT" }
+                        ));
+                    }
+                    rows.push(Row::x3dcheck(level, name, bytes, case));
                 }
-                rows.push(Row::x3dcheck(level, "JSON", json_bytes, case));
             }
+            Ok(probe) => {
+                let why = probe
+                    .first_diagnostic
+                    .unwrap_or_else(|| "no shapes read".into());
+                notes.push(format!(
+                    "{name}: not measured (reader not available): {why}"
+                ));
+            }
+            Err(e) => notes.push(format!("{name}: not measured (reader not available): {e}")),
         }
-        Ok(probe) => {
-            let why = probe
-                .first_diagnostic
-                .unwrap_or_else(|| "no shapes read".into());
-            notes.push(format!("JSON: not measured (reader not available): {why}"));
-        }
-        Err(e) => notes.push(format!("JSON: not measured (reader not available): {e}")),
     }
 
     // Peers.
@@ -576,7 +589,7 @@ fn huge_note(case: &PeerCase, notes: &mut Vec<String>) {
 /// One line of the table.
 struct Row {
     what: String,
-    /// "XML", "JSON" or "" for peers.
+    /// "XML", "JSON", "ClassicVRML" or "" for peers.
     encoding: &'static str,
     level: Option<&'static str>,
     bytes: u64,
@@ -733,7 +746,7 @@ fn targets(out: &mut String, rows: &[Row], noout: Option<f64>, schema: Option<f6
     );
     let mut deep = Vec::new();
     let mut deep_ok = true;
-    for encoding in ["XML", "JSON"] {
+    for encoding in ["XML", "JSON", "ClassicVRML"] {
         if let (Some(d), Some(s)) = (find(encoding, "deep"), find(encoding, "standard")) {
             let r = d.median / s.median;
             deep_ok &= r <= 2.0;
@@ -745,9 +758,18 @@ fn targets(out: &mut String, rows: &[Row], noout: Option<f64>, schema: Option<f6
         "deep within 2× standard",
         (!deep.is_empty()).then(|| (deep_ok, deep.join(", "))),
     );
+    let classic = find("ClassicVRML", "standard").zip(find("XML", "standard"));
+    line(
+        out,
+        "ClassicVRML within 1.2× XML (standard)",
+        classic.map(|(c, x)| {
+            let r = c.median / x.median;
+            (r <= 1.2, format!("{r:.2}×"))
+        }),
+    );
     let mut memory = Vec::new();
     let mut memory_ok = true;
-    for encoding in ["XML", "JSON"] {
+    for encoding in ["XML", "JSON", "ClassicVRML"] {
         let worst = rows
             .iter()
             .filter(|r| r.peer.is_none() && r.encoding == encoding)

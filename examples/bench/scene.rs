@@ -1,7 +1,7 @@
 //! The generated benchmark scene: six Shapes, each an IndexedTriangleSet on a square grid
 //! (a smooth random height field) with Coordinate, Normal (unit vectors computed from the
 //! heights), TextureCoordinate and a triangle `index`, a Material and a PixelTexture,
-//! inside Transforms. The same scene is written as X3D XML and as X3D JSON.
+//! inside Transforms. The same scene is written as X3D XML, X3D JSON and ClassicVRML.
 //!
 //! Deterministic: a fixed-seed splitmix64 drives everything, so the same generator version
 //! and scale give byte-identical files. Numbers are written as exporters write them, with
@@ -27,6 +27,7 @@ const STEP: f64 = 0.05;
 pub struct Scene {
     pub xml: PathBuf,
     pub json: PathBuf,
+    pub classic: PathBuf,
     /// Vertices per shape (a square grid).
     pub vertices: usize,
     pub triangles: usize,
@@ -39,13 +40,15 @@ pub fn ensure(dir: &Path, scale: f64, regenerate: bool) -> io::Result<Scene> {
     let stem = format!("scene-g{GENERATOR_VERSION}-{side}x{side}x{SHAPES}");
     let xml = dir.join(format!("{stem}.x3d"));
     let json = dir.join(format!("{stem}.x3dj"));
+    let classic = dir.join(format!("{stem}.x3dv"));
     let vertices = side * side;
     let triangles = 2 * (side - 1) * (side - 1);
-    let exists = xml.is_file() && json.is_file();
+    let exists = xml.is_file() && json.is_file() && classic.is_file();
     if exists && !regenerate {
         return Ok(Scene {
             xml,
             json,
+            classic,
             vertices,
             triangles,
             generated: false,
@@ -56,13 +59,16 @@ pub fn ensure(dir: &Path, scale: f64, regenerate: bool) -> io::Result<Scene> {
     // that looks complete.
     let xml_tmp = dir.join(format!("{stem}.x3d.partial"));
     let json_tmp = dir.join(format!("{stem}.x3dj.partial"));
-    write(side, &xml_tmp, &json_tmp)?;
+    let classic_tmp = dir.join(format!("{stem}.x3dv.partial"));
+    write(side, &xml_tmp, &json_tmp, &classic_tmp)?;
     fs::rename(&xml_tmp, &xml)?;
     fs::rename(&json_tmp, &json)?;
+    fs::rename(&classic_tmp, &classic)?;
     remove_old_versions(dir);
     Ok(Scene {
         xml,
         json,
+        classic,
         vertices,
         triangles,
         generated: true,
@@ -79,7 +85,7 @@ fn remove_old_versions(dir: &Path) {
         let name = entry.file_name();
         let name = name.to_string_lossy();
         let ours = name.starts_with("scene-g")
-            && (name.ends_with(".x3d") || name.ends_with(".x3dj"))
+            && (name.ends_with(".x3d") || name.ends_with(".x3dj") || name.ends_with(".x3dv"))
             && !name.starts_with(&current);
         if ours {
             let _ = fs::remove_file(entry.path());
@@ -265,9 +271,10 @@ fn trim_zeros(s: &str) -> &str {
     }
 }
 
-fn write(side: usize, xml_path: &Path, json_path: &Path) -> io::Result<()> {
+fn write(side: usize, xml_path: &Path, json_path: &Path, classic_path: &Path) -> io::Result<()> {
     let mut xml = BufWriter::with_capacity(1 << 20, File::create(xml_path)?);
     let mut json = BufWriter::with_capacity(1 << 20, File::create(json_path)?);
+    let mut classic = BufWriter::with_capacity(1 << 20, File::create(classic_path)?);
     let schema = "https://www.web3d.org/specifications/x3d-4.0.xsd";
     let title = format!("x3dcheck benchmark scene (generator v{GENERATOR_VERSION})");
     let generator =
@@ -301,6 +308,15 @@ fn write(side: usize, xml_path: &Path, json_path: &Path) -> io::Result<()> {
          {{\"Viewpoint\": {{\"@description\":\"Overview\",\"@position\":[0,45,55],\"@orientation\":[1,0,0,-0.7]}}}}"
     )?;
 
+    write!(
+        classic,
+        "#X3D V4.0 utf8\n\
+         PROFILE Interchange\n\
+         META \"title\" \"{title}\"\n\
+         META \"generator\" \"{generator}\"\n\
+         Viewpoint {{ description \"Overview\" position 0 45 55 orientation 1 0 0 -0.7 }}\n"
+    )?;
+
     let mut rng = Rng(SEED);
     for number in 0..SHAPES {
         let s = shape(side, number, &mut rng);
@@ -325,6 +341,26 @@ fn write(side: usize, xml_path: &Path, json_path: &Path) -> io::Result<()> {
         writeln!(xml, "</IndexedTriangleSet>")?;
         writeln!(xml, "</Shape>")?;
         writeln!(xml, "</Transform>")?;
+
+        write!(
+            classic,
+            "DEF Tile{number} Transform {{\n\
+             translation {}\n\
+             children Shape {{\n\
+             appearance Appearance {{\n\
+             material Material {{ diffuseColor {} }}\n\
+             texture PixelTexture {{ image 2 2 3 0xFF0000 0x00FF00 0x0000FF 0xFFFFFF }}\n\
+             }}\n\
+             geometry IndexedTriangleSet {{\n\
+             index [ {} ]\n\
+             coord Coordinate {{ point [ {} ] }}\n\
+             normal Normal {{ vector [ {} ] }}\n\
+             texCoord TextureCoordinate {{ point [ {} ] }}\n\
+             }}\n\
+             }}\n\
+             }}\n",
+            s.translation, s.diffuse, s.index, s.point, s.vector, s.tex
+        )?;
 
         write!(
             json,
@@ -354,6 +390,7 @@ fn write(side: usize, xml_path: &Path, json_path: &Path) -> io::Result<()> {
     writeln!(json, "\n]}}\n}}}}")?;
     xml.flush()?;
     json.flush()?;
+    classic.flush()?;
     Ok(())
 }
 

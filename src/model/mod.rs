@@ -32,6 +32,10 @@ pub use crate::limits::MAX_INPUT_BYTES;
 pub enum Encoding {
     Xml,
     Json,
+    /// ISO/IEC 19776-2 (`#X3D V3.x utf8`), serialized `"classicvrml"`.
+    ClassicVrml,
+    /// ISO/IEC 14772-1 (`#VRML V2.0 utf8`), serialized `"vrml97"`.
+    Vrml97,
 }
 
 /// A name or other text as written, with its place.
@@ -158,7 +162,7 @@ pub enum Origin {
     Children,
     /// A `fieldValue` statement of a ProtoInstance.
     FieldValue,
-    /// A JSON member (`@name` or `-name`).
+    /// A JSON member (`@name` or `-name`), or a ClassicVRML field named in a node's body.
     Member,
 }
 

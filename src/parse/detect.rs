@@ -1,5 +1,6 @@
-//! Tells the encoding from the first bytes: XML, JSON, or something x3dcheck does not read
-//! (ClassicVRML, VRML97, UTF-32, binary; gzip and UTF-16 when not decoded first), with a diagnostic that says which.
+//! Tells the encoding from the first bytes of the decoded text: XML, JSON,
+//! ClassicVRML/VRML97, or something x3dcheck does not read (VRML 1.0, UTF-32, binary;
+//! gzip and UTF-16 when not decoded first), with a diagnostic that says which.
 
 use super::rules::ENCODING_UNSUPPORTED;
 use crate::diagnostic::Diagnostic;
@@ -8,6 +9,8 @@ use crate::model::Span;
 pub enum Detected {
     Xml,
     Json,
+    /// ClassicVRML (`#X3D`) or VRML97 (`#VRML V2.0`).
+    Classic,
     Unsupported(Diagnostic),
 }
 
@@ -48,17 +51,18 @@ pub fn detect(source: &[u8]) -> Detected {
         .position(|b| !b.is_ascii_whitespace())
         .unwrap_or(text.len());
     let text = &text[start..];
-    if text.starts_with(b"#X3D") {
-        return unsupported(
-            "X3D ClassicVRML encoding",
-            "convert it to XML, e.g. with Castle's tovrmlx3d or X_ITE's x3d-tidy",
+    if text.starts_with(b"#VRML V1.0") {
+        return Detected::Unsupported(
+            Diagnostic::new(
+                &ENCODING_UNSUPPORTED,
+                Span::new(0, 0),
+                "this is VRML 1.0, a different language from VRML97 and X3D (nodes such as Separator, no ROUTEs)".to_string(),
+            )
+            .help("convert it to VRML97 or X3D first, e.g. with Castle Game Engine's tovrmlx3d"),
         );
     }
-    if text.starts_with(b"#VRML") {
-        return unsupported(
-            "VRML",
-            "convert it to X3D XML, e.g. with Castle's tovrmlx3d or X_ITE's x3d-tidy",
-        );
+    if text.starts_with(b"#X3D") || text.starts_with(b"#VRML") {
+        return Detected::Classic;
     }
     match text.first() {
         Some(b'<') => Detected::Xml,

@@ -1,7 +1,8 @@
 //! Readers: decode the input ([`decode`]: gzip, character encodings), detect the encoding
-//! from the content (not the file name) and read XML or JSON into the one scene model. The
-//! readers read the decoded UTF-8 text.
+//! from the content (not the file name) and read XML, JSON, ClassicVRML or VRML97 into the
+//! one scene model. The readers read the decoded UTF-8 text.
 
+pub mod classic;
 pub mod decode;
 mod detect;
 pub mod json;
@@ -36,6 +37,7 @@ pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
     match detect(source) {
         Detected::Xml => xml::read_with(source, keep),
         Detected::Json => json::read_with(source, keep),
+        Detected::Classic => classic::read_with(source, keep),
         Detected::Unsupported(diagnostic) => Parsed {
             encoding: None,
             document: None,

@@ -49,6 +49,24 @@ impl std::error::Error for SyntaxError {}
 /// offsets into `text`. SFNode and MFNode values are child elements, not attribute text,
 /// so they are always an error here.
 pub fn parse_value(ty: FieldType, text: &str) -> Result<Value, SyntaxError> {
+    parse_value_in(Syntax::Xml, ty, text)
+}
+
+/// Where a value's text comes from: the two encodings write numbers alike (ClassicVRML
+/// numbers are separated by the same whitespace and commas, 19776-2 5.1) and differ in
+/// booleans and strings.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum Syntax {
+    /// An XML attribute (19776-1 5): `true`/`false`; an SFString is the text itself.
+    Xml,
+    /// The text between a ClassicVRML field's brackets, or its single value (19776-2 5):
+    /// `TRUE`/`FALSE`; every string, SFString too, is double-quoted with `\"` and `\\`
+    /// escapes.
+    Classic,
+}
+
+/// [`parse_value`] for text in the given [`Syntax`].
+pub fn parse_value_in(syntax: Syntax, ty: FieldType, text: &str) -> Result<Value, SyntaxError> {
     let s = text.as_bytes();
     match ty.scalar() {
         Scalar::Float => {
@@ -67,10 +85,11 @@ pub fn parse_value(ty: FieldType, text: &str) -> Result<Value, SyntaxError> {
             Ok(Value::Int32s(values))
         }
         Scalar::Bool => {
-            let values = parse_bools(ty, s)?;
+            let values = parse_bools(syntax, ty, s)?;
             check_count(ty, s, values.len())?;
             Ok(Value::Bools(values))
         }
+        Scalar::String if syntax == Syntax::Classic => parse_quoted(ty, text).map(Value::Strings),
         Scalar::String if ty.is_mf() => parse_mfstring(text).map(Value::Strings),
         Scalar::String => Ok(Value::Strings(vec![text.to_owned()])),
         Scalar::Image => parse_images(ty, s).map(Value::Images),
@@ -339,28 +358,32 @@ fn int_error(ty: FieldType, s: &[u8], start: usize, error: IntError) -> SyntaxEr
     SyntaxError::at((start, end), message)
 }
 
-fn parse_bools(ty: FieldType, s: &[u8]) -> Result<Vec<bool>, SyntaxError> {
+fn parse_bools(syntax: Syntax, ty: FieldType, s: &[u8]) -> Result<Vec<bool>, SyntaxError> {
+    let (yes, no, case) = match syntax {
+        Syntax::Xml => ("true", "false", "X3D XML booleans are lowercase"),
+        Syntax::Classic => ("TRUE", "FALSE", "ClassicVRML booleans are uppercase"),
+    };
     let mut values = Vec::new();
     for (start, end) in tokens(s) {
         match &s[start..end] {
-            b"true" => values.push(true),
-            b"false" => values.push(false),
+            t if t == yes.as_bytes() => values.push(true),
+            t if t == no.as_bytes() => values.push(false),
             other => {
                 let token = show(s, start, end);
                 let message = if other.eq_ignore_ascii_case(b"true") {
-                    format!("`{token}` is not a boolean: X3D XML booleans are lowercase: `true`")
+                    format!("`{token}` is not a boolean: {case}: `{yes}`")
                 } else if other.eq_ignore_ascii_case(b"false") {
-                    format!("`{token}` is not a boolean: X3D XML booleans are lowercase: `false`")
+                    format!("`{token}` is not a boolean: {case}: `{no}`")
                 } else if other == b"1" {
                     format!(
-                        "`{token}` is not a boolean: {ty} takes `true` or `false`; write `true`"
+                        "`{token}` is not a boolean: {ty} takes `{yes}` or `{no}`; write `{yes}`"
                     )
                 } else if other == b"0" {
                     format!(
-                        "`{token}` is not a boolean: {ty} takes `true` or `false`; write `false`"
+                        "`{token}` is not a boolean: {ty} takes `{yes}` or `{no}`; write `{no}`"
                     )
                 } else {
-                    format!("`{token}` is not a boolean: {ty} takes `true` or `false`")
+                    format!("`{token}` is not a boolean: {ty} takes `{yes}` or `{no}`")
                 };
                 return Err(SyntaxError::at((start, end), message));
             }
@@ -373,7 +396,6 @@ fn parse_bools(ty: FieldType, s: &[u8]) -> Result<Vec<bool>, SyntaxError> {
 /// `\\` as escapes (and a backslash before any other character standing for that
 /// character). Text with no double quote at all is taken as one string.
 fn parse_mfstring(text: &str) -> Result<Vec<String>, SyntaxError> {
-    let s = text.as_bytes();
     if !text.contains('"') {
         let trimmed = trim_xml_whitespace(text);
         return Ok(if trimmed.is_empty() {
@@ -382,6 +404,26 @@ fn parse_mfstring(text: &str) -> Result<Vec<String>, SyntaxError> {
             vec![trimmed.to_owned()]
         });
     }
+    quoted_strings(text)
+}
+
+/// ClassicVRML strings: every one quoted, an SFString exactly one.
+fn parse_quoted(ty: FieldType, text: &str) -> Result<Vec<String>, SyntaxError> {
+    let strings = quoted_strings(text)?;
+    if !ty.is_mf() && strings.len() != 1 {
+        let found = strings.len();
+        return Err(SyntaxError::new(
+            0,
+            text.len(),
+            format!("{ty} takes 1 quoted string, found {found}"),
+        ));
+    }
+    Ok(strings)
+}
+
+/// Double-quoted strings separated by whitespace or commas (see [`parse_mfstring`]).
+fn quoted_strings(text: &str) -> Result<Vec<String>, SyntaxError> {
+    let s = text.as_bytes();
     let mut strings = Vec::new();
     let n = s.len();
     let mut i = 0;

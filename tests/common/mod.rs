@@ -2,6 +2,8 @@
 //! the real corpus beside the repository. Each test binary uses a part of them.
 #![allow(dead_code)]
 
+pub mod summary;
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 

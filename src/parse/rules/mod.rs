@@ -8,6 +8,7 @@ pub mod gzip_corrupt;
 pub mod json_malformed;
 pub mod root_not_x3d;
 pub mod use_with_fields;
+pub mod vrml_malformed;
 pub mod xml_encoding_unsupported;
 pub mod xml_malformed;
 
@@ -17,5 +18,6 @@ pub use gzip_corrupt::GZIP_CORRUPT;
 pub use json_malformed::JSON_MALFORMED;
 pub use root_not_x3d::ROOT_NOT_X3D;
 pub use use_with_fields::USE_WITH_FIELDS;
+pub use vrml_malformed::VRML_MALFORMED;
 pub use xml_encoding_unsupported::XML_ENCODING_UNSUPPORTED;
 pub use xml_malformed::XML_MALFORMED;

@@ -28,6 +28,7 @@ pub mod x3d_version_unknown;
 pub static RULES: &[&Check] = &[
     &Check::reported(&crate::parse::rules::XML_MALFORMED),
     &Check::reported(&crate::parse::rules::JSON_MALFORMED),
+    &Check::reported(&crate::parse::rules::VRML_MALFORMED),
     &Check::reported(&crate::parse::rules::ENCODING_UNSUPPORTED),
     &Check::reported(&crate::parse::rules::ROOT_NOT_X3D),
     &x3d_version_missing::CHECK,

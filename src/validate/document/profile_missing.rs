@@ -6,7 +6,9 @@ use crate::validate::Ctx;
 
 crate::declare_rule! {
     /// ## What it does
-    /// Reports an `X3D` root without a `profile` attribute.
+    /// Reports an `X3D` root without a `profile` attribute, or a ClassicVRML file without
+    /// a PROFILE statement. VRML97 files have no profiles (14772-1 has no such statement)
+    /// and are not reported.
     ///
     /// ## Why it matters
     /// The profile tells a browser which components the scene needs; without one the

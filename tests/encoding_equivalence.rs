@@ -1,0 +1,136 @@
+//! One model, three encodings (issue 11 item 5): the scenes of `corpus/encodings/`, each
+//! written by the project in XML (`.x3d`), JSON (`.x3dj`) and ClassicVRML (`.x3dv`), read
+//! into the same model (compared through the canonical summary of tests/common/summary.rs)
+//! and give the same report apart from positions: the same diagnostics (code, severity,
+//! message, structural path, value) and the same stats. The scenes cover every field type,
+//! DEF/USE, PROTO with IS, EXTERNPROTO, ROUTE, IMPORT/EXPORT and META/UNIT/COMPONENT.
+//!
+//! The real pair of `../shared/corpus` (Castle's Fox, the same scene exported as `.x3d`
+//! and `.x3dv`) is compared the same way.
+
+mod common;
+
+use std::path::{Path, PathBuf};
+
+use common::summary::{first_difference, Summary};
+use x3dcheck::config::CheckConfig;
+use x3dcheck::model::Encoding;
+use x3dcheck::report::FileReport;
+use x3dcheck::validate::Level;
+
+fn scenes() -> Vec<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus/encodings");
+    let mut stems: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .unwrap()
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| p.extension().is_some_and(|e| e == "x3d"))
+        .map(|p| p.with_extension(""))
+        .collect();
+    stems.sort();
+    stems
+}
+
+fn check(path: &Path) -> FileReport {
+    let config = CheckConfig {
+        level: Level::Deep,
+        ..CheckConfig::default()
+    };
+    let source = std::fs::read(path).unwrap();
+    x3dcheck::check_source(&path.display().to_string(), &source, &config)
+}
+
+/// The report without positions: one line per diagnostic, sorted, and the stats.
+fn positionless(report: &FileReport) -> (Vec<String>, String) {
+    let mut lines: Vec<String> = report
+        .diagnostics
+        .iter()
+        .map(|d| {
+            format!(
+                "{} {:?} {} at {} value {:?} ×{}",
+                d.code, d.severity, d.message, d.path, d.value, d.count
+            )
+        })
+        .collect();
+    lines.sort();
+    (lines, format!("{:?}", report.stats))
+}
+
+/// The differences between two encodings of one scene: model, then report.
+fn compare(name: &str, a: (&str, &Path), b: (&str, &Path)) -> Vec<String> {
+    let mut problems = Vec::new();
+    let read = |path: &Path| x3dcheck::parse::read(&std::fs::read(path).unwrap());
+    let (pa, pb) = (read(a.1), read(b.1));
+    let (Some(da), Some(db)) = (&pa.document, &pb.document) else {
+        return vec![format!(
+            "{name}: a side did not read ({}: {:?}, {}: {:?})",
+            a.0,
+            pa.diagnostics.first().map(|d| &d.message),
+            b.0,
+            pb.diagnostics.first().map(|d| &d.message)
+        )];
+    };
+    if let Some(difference) = first_difference((a.0, &Summary::of(da)), (b.0, &Summary::of(db))) {
+        problems.push(format!("{name}: the models differ\n{difference}"));
+    }
+    let (ra, rb) = (positionless(&check(a.1)), positionless(&check(b.1)));
+    if ra != rb {
+        problems.push(format!(
+            "{name}: the reports differ\n      {}: {:#?}\n      {}: {:#?}",
+            a.0, ra, b.0, rb
+        ));
+    }
+    problems
+}
+
+#[test]
+fn the_project_scenes_give_one_model_in_three_encodings() {
+    let stems = scenes();
+    assert!(
+        stems.len() >= 3,
+        "corpus/encodings has {} scenes",
+        stems.len()
+    );
+    let mut problems = Vec::new();
+    for stem in &stems {
+        let name = stem.file_name().unwrap().to_string_lossy().into_owned();
+        let xml = stem.with_extension("x3d");
+        let json = stem.with_extension("x3dj");
+        let classic = stem.with_extension("x3dv");
+        problems.extend(compare(&name, ("xml", &xml), ("json", &json)));
+        problems.extend(compare(&name, ("xml", &xml), ("classic", &classic)));
+        let parsed = x3dcheck::parse::read(&std::fs::read(&classic).unwrap());
+        assert_eq!(parsed.encoding, Some(Encoding::ClassicVrml), "{name}");
+    }
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+/// The scenes are clean in every encoding, so that the comparison above compares models
+/// and not error recovery.
+#[test]
+fn the_project_scenes_have_no_reader_findings() {
+    for stem in scenes() {
+        for extension in ["x3d", "x3dj", "x3dv"] {
+            let path = stem.with_extension(extension);
+            let parsed = x3dcheck::parse::read(&std::fs::read(&path).unwrap());
+            let codes: Vec<_> = parsed.diagnostics.iter().map(|d| d.rule.code).collect();
+            assert!(codes.is_empty(), "{}: {codes:?}", path.display());
+        }
+    }
+}
+
+#[test]
+fn the_real_pairs_give_one_model() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/corpus");
+    let fox = "animation/gltf_skinned_animation/fox_from_khronos/Fox";
+    let xml = root
+        .join("castle-demo-models")
+        .join(fox)
+        .with_extension("x3d");
+    let classic = root
+        .join("castle-demo-models-classic")
+        .join(fox)
+        .with_extension("x3dv");
+    let problems = compare("Fox", ("xml", &xml), ("classic", &classic));
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
