@@ -4,8 +4,9 @@
 use std::path::Path;
 
 use crate::config::CheckConfig;
-use crate::model::{Document, Encoding};
+use crate::model::Document;
 use crate::parse;
+pub use crate::parse::Parsed;
 use crate::report::{resolve, FileReport, Stats};
 use crate::validate;
 
@@ -58,11 +59,4 @@ pub fn check_document(
         stats: doc.map(Stats::of).unwrap_or_default(),
     };
     (report, parsed.document)
-}
-
-/// The result of reading an input, whatever its encoding.
-pub struct Parsed {
-    pub encoding: Option<Encoding>,
-    pub document: Option<Document>,
-    pub diagnostics: Vec<crate::report::Diagnostic>,
 }

@@ -6,6 +6,7 @@
 pub mod check;
 pub mod config;
 pub mod config_file;
+pub mod diagnostic;
 pub mod limits;
 pub mod model;
 pub mod parse;

@@ -1,6 +1,6 @@
 //! The registry matches the catalogue `../shared/RULES.md`: every code there is
-//! implemented, with the catalogue's default severity and level. Codes are API, so a
-//! missing or renamed one fails here.
+//! implemented, with the catalogue's default severity and level, except the codes still
+//! [`PENDING`] on an open issue. Codes are API, so a missing or renamed one fails here.
 
 use std::path::Path;
 
@@ -12,8 +12,36 @@ struct Entry {
     level: Level,
 }
 
-/// The table rows of RULES.md: `| CODE | sev | …`. §1 is the fast level; the others are
-/// standard unless the severity says "(deep)". For a severity that depends on version or
+/// Codes the catalogue lists whose rules are not built yet, with the issue that builds
+/// them. A code leaves this list when its rule lands (the test fails until it does).
+const PENDING: &[(&str, u32)] = &[
+    ("VRML_MALFORMED", 11),
+    ("GZIP_CORRUPT", 11),
+    ("XML_ENCODING_UNSUPPORTED", 11),
+    ("INDEX_COUNT_MISMATCH", 12),
+    ("FACE_NOT_CONVEX", 12),
+    ("COLOR_IGNORED_BY_TEXTURE", 12),
+    ("MOVIE_FORMAT_UNSUPPORTED", 12),
+    ("PROTO_CYCLE", 14),
+    ("IS_FIELD_UNKNOWN", 14),
+    ("IS_TYPE_MISMATCH", 14),
+    ("IS_OUTSIDE_PROTO", 14),
+    ("EXTERNPROTO_NOT_FOUND", 14),
+    ("EXTERNPROTO_INTERFACE_MISMATCH", 14),
+    ("INLINE_CYCLE", 16),
+    ("EXPORT_UNDEFINED", 16),
+    ("IMPORT_UNRESOLVED", 16),
+    ("SCRIPT_SYNTAX_ERROR", 16),
+    ("SCRIPT_HANDLER_MISSING", 16),
+    ("SHADER_COMPILE_ERROR", 16),
+    ("SHADER_FIELD_UNDECLARED", 16),
+    ("SHADER_FIELD_TYPE_MISMATCH", 16),
+    ("SUPPRESSION_UNUSED", 17),
+];
+
+/// The table rows of RULES.md: `| CODE | sev | …`. §1 and §7 are the fast level; a
+/// table with a `lvl` column says the level in it; elsewhere a rule is standard unless
+/// the severity says "(deep)". For a severity that depends on version or
 /// value ("error in 4.0, warning in 4.1", "info (7–19), warning (>19)") the first is the
 /// rule's default.
 fn catalogue() -> Vec<Entry> {
@@ -21,11 +49,16 @@ fn catalogue() -> Vec<Entry> {
     let text = std::fs::read_to_string(&path).expect("../shared/RULES.md");
     let mut entries = Vec::new();
     let mut fast_section = false;
+    let mut level_column = None;
     for line in text.lines() {
         if line.starts_with("## ") {
-            fast_section = line.starts_with("## 1.");
+            fast_section = line.starts_with("## 1.") || line.starts_with("## 7.");
+            level_column = None;
         }
         let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+        if cells.get(1) == Some(&"code") {
+            level_column = cells.iter().position(|c| *c == "lvl");
+        }
         let (Some(code), Some(severity)) = (cells.get(1), cells.get(2)) else {
             continue;
         };
@@ -42,7 +75,14 @@ fn catalogue() -> Vec<Entry> {
             .unwrap_or("");
         let severity_value =
             Severity::parse(first_word).unwrap_or_else(|| panic!("{code}: severity `{severity}`"));
-        let level = if fast_section {
+        let level = if let Some(column) = level_column {
+            match cells[column] {
+                "fast" => Level::Fast,
+                "standard" => Level::Standard,
+                "deep" => Level::Deep,
+                other => panic!("{code}: level `{other}`"),
+            }
+        } else if fast_section {
             Level::Fast
         } else if severity.contains("deep") {
             Level::Deep
@@ -68,9 +108,15 @@ fn every_catalogue_code_is_implemented_as_catalogued() {
     );
     let mut problems = Vec::new();
     for entry in &entries {
-        match find_rule(&entry.code) {
-            None => problems.push(format!("{}: not implemented", entry.code)),
-            Some(rule) => {
+        let pending = PENDING.iter().find(|(code, _)| *code == entry.code);
+        match (find_rule(&entry.code), pending) {
+            (None, Some(_)) => {}
+            (None, None) => problems.push(format!("{}: not implemented", entry.code)),
+            (Some(_), Some((_, issue))) => problems.push(format!(
+                "{}: implemented, so no longer pending on issue {issue}: take it off PENDING",
+                entry.code
+            )),
+            (Some(rule), None) => {
                 if rule.severity != entry.severity {
                     problems.push(format!(
                         "{}: severity {} (catalogue: {})",

@@ -2,13 +2,12 @@
 //! names and their scopes, USE resolution, node-type and field lookup across versions, and
 //! the diagnostics of those steps exist once.
 
-use super::*;
-use crate::report::Diagnostic;
-use crate::schema::{self, Version};
-use crate::validate::document::{
-    def_duplicate::DEF_DUPLICATE, field_duplicate::FIELD_DUPLICATE, limit_exceeded::LIMIT_EXCEEDED,
-    use_cycle::USE_CYCLE, use_type_mismatch::USE_TYPE_MISMATCH, use_undefined::USE_UNDEFINED,
+use super::rules::{
+    DEF_DUPLICATE, FIELD_DUPLICATE, LIMIT_EXCEEDED, USE_CYCLE, USE_TYPE_MISMATCH, USE_UNDEFINED,
 };
+use super::*;
+use crate::diagnostic::Diagnostic;
+use crate::schema::{self, Version};
 
 /// Where a node being added goes.
 #[derive(Copy, Clone, Debug)]

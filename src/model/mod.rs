@@ -7,48 +7,20 @@ pub mod bounds;
 pub mod builder;
 pub mod faces;
 mod fields;
+pub mod rules;
 pub mod texture_mapping;
 mod value;
 
+pub use crate::diagnostic::{NodeId, Span};
 pub use builder::Builder;
-pub use value::{ChildRef, Image, Sink, Summarized, Summarizer, Summary, Value};
+pub use value::{range_applies, ChildRef, Image, Sink, Summarized, Summarizer, Summary, Value};
 
 use std::collections::HashMap;
 
 use crate::schema::{AccessType, FieldDef, FieldType, NodeDef, Version};
 
-/// A byte range in the input. Line and column are computed only for reported diagnostics.
-#[derive(Copy, Clone, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct Span {
-    pub start: u32,
-    pub end: u32,
-}
-
-impl Span {
-    pub fn new(start: usize, end: usize) -> Span {
-        Span {
-            start: start as u32,
-            end: end as u32,
-        }
-    }
-
-    pub fn range(self) -> std::ops::Range<usize> {
-        self.start as usize..self.end as usize
-    }
-}
-
 /// Inputs are addressed with u32 offsets; larger files are refused with a diagnostic.
 pub use crate::limits::MAX_INPUT_BYTES;
-
-/// A node's place in the arena.
-#[derive(Copy, Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct NodeId(pub u32);
-
-impl NodeId {
-    pub fn index(self) -> usize {
-        self.0 as usize
-    }
-}
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]

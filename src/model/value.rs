@@ -13,8 +13,8 @@
 
 use super::{Node, NodeId};
 use crate::model::Span;
+use crate::schema::{in_range_f32, in_range_f64};
 use crate::schema::{FieldDef, FieldType, Scalar};
-use crate::validate::document::field_out_of_range::{in_range_f32, in_range_f64, range_applies};
 
 /// The parsed value of one field as the document gave it.
 #[derive(Clone, Debug, PartialEq)]
@@ -315,4 +315,17 @@ pub struct ChildRef {
     /// itself, which for a USE is the USE element.
     pub span: Span,
     pub is_use: bool,
+}
+
+/// Whether FIELD_OUT_OF_RANGE checks the values of field `def` on `node`: the field has a range,
+/// and is not a geometry index field. The fast level's summaries
+/// ([`Summarizer`]) decide with this too.
+pub fn range_applies(node: &Node, def: &FieldDef) -> bool {
+    !(def.min.is_none() && def.max.is_none() || is_geometry_index(node, def.name))
+}
+
+/// Index fields of geometry (coordIndex, index, …) have the more specific INDEX_NEGATIVE,
+/// which knows the -1 separator; reporting them here too would say the same twice.
+fn is_geometry_index(node: &Node, field: &str) -> bool {
+    (field == "index" || field.ends_with("Index")) && node.is_a("X3DGeometryNode")
 }

@@ -1,9 +1,9 @@
 //! Tells the encoding from the first bytes: XML, JSON, or something x3dcheck does not read
 //! (ClassicVRML, VRML97, gzip, UTF-16, binary), with a diagnostic that says which.
 
+use super::rules::ENCODING_UNSUPPORTED;
+use crate::diagnostic::Diagnostic;
 use crate::model::Span;
-use crate::report::Diagnostic;
-use crate::validate::document::encoding_unsupported::ENCODING_UNSUPPORTED;
 
 pub enum Detected {
     Xml,

@@ -37,16 +37,14 @@ use std::borrow::Cow;
 
 use tree::{Elements, Kind, Members, Tree, ValueRef};
 
-use crate::check::Parsed;
+use super::rules::{FIELD_VALUE_SYNTAX, JSON_MALFORMED, ROOT_NOT_X3D, USE_WITH_FIELDS};
+use super::Parsed;
+use crate::diagnostic::Diagnostic;
 use crate::model::builder::Parent;
+use crate::model::rules::FIELD_DUPLICATE;
 use crate::model::*;
 use crate::parse::KeepValues;
-use crate::report::Diagnostic;
 use crate::schema::{AccessType, FieldType, Scalar, Version};
-use crate::validate::document::{
-    field_duplicate::FIELD_DUPLICATE, field_value_syntax::FIELD_VALUE_SYNTAX,
-    json_malformed::JSON_MALFORMED, root_not_x3d::ROOT_NOT_X3D, use_with_fields::USE_WITH_FIELDS,
-};
 
 /// Reads an X3D JSON document.
 pub fn read(source: &[u8]) -> Parsed {

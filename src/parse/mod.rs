@@ -4,12 +4,15 @@
 mod detect;
 pub mod json;
 pub mod number;
+pub mod rules;
 pub mod xml;
 mod xml_entities;
 pub mod xml_value;
 
-pub use crate::check::Parsed;
 pub use detect::{detect, Detected};
+
+use crate::diagnostic::Diagnostic;
+use crate::model::{Document, Encoding};
 
 /// What a reader keeps of the numeric MF values of schema fields.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
@@ -36,4 +39,11 @@ pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
             diagnostics: vec![diagnostic],
         },
     }
+}
+
+/// The result of reading an input, whatever its encoding.
+pub struct Parsed {
+    pub encoding: Option<Encoding>,
+    pub document: Option<Document>,
+    pub diagnostics: Vec<Diagnostic>,
 }

@@ -8,19 +8,15 @@ use quick_xml::events::attributes::Attribute;
 use quick_xml::events::{BytesStart, Event};
 use quick_xml::Reader;
 
+use super::rules::{FIELD_VALUE_SYNTAX, ROOT_NOT_X3D, USE_WITH_FIELDS, XML_MALFORMED};
 use super::xml_entities::{Entities, ExpandError};
 use super::xml_value;
-use crate::check::Parsed;
+use crate::diagnostic::Diagnostic;
 use crate::limits::{MAX_FIELDS_PER_NODE, MAX_INPUT_BYTES};
 use crate::model::builder::{Limit, Parent};
 use crate::model::*;
-use crate::parse::KeepValues;
-use crate::report::Diagnostic;
+use crate::parse::{KeepValues, Parsed};
 use crate::schema::{AccessType, FieldDef, FieldType, Scalar};
-use crate::validate::document::{
-    field_value_syntax::FIELD_VALUE_SYNTAX, root_not_x3d::ROOT_NOT_X3D,
-    use_with_fields::USE_WITH_FIELDS, xml_malformed::XML_MALFORMED,
-};
 
 /// Reads an X3D XML document.
 pub fn read(source: &[u8]) -> Parsed {

@@ -43,12 +43,12 @@ const SHADER_WGSL: &str = concat!(include_str!("lighting.wgsl"), include_str!("s
 #[cfg(feature = "render")]
 pub use gpu::{open_device, Gpu, GpuError, Settings, Shading};
 
+#[cfg(feature = "render")]
+use crate::model::rules::LIMIT_EXCEEDED;
 use crate::model::Document;
 use crate::report::FileReport;
 #[cfg(feature = "render")]
 use crate::report::{resolve, Diagnostic};
-#[cfg(feature = "render")]
-use crate::validate::document::limit_exceeded::LIMIT_EXCEEDED;
 #[cfg(feature = "render")]
 use crate::validate::document::validation_incomplete::VALIDATION_INCOMPLETE;
 

@@ -432,8 +432,8 @@ impl SourceCode for Excerpts {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::rules::DEF_DUPLICATE;
     use crate::report::{resolve, Diagnostic, Stats};
-    use crate::validate::document::def_duplicate::DEF_DUPLICATE;
 
     fn render_one(source: &str, diagnostic: Diagnostic) -> String {
         let report = FileReport {

@@ -2,7 +2,6 @@
 //! into a [`FileReport`], which each format renders: [`human`], [`concise`], [`json`].
 
 pub mod concise;
-mod diagnostic;
 pub mod github;
 pub mod human;
 pub mod json;
@@ -14,7 +13,7 @@ pub mod sarif;
 pub mod statistics;
 mod stats;
 
-pub use diagnostic::Diagnostic;
+pub use crate::diagnostic::Diagnostic;
 pub use resolve::{resolve, Related, Resolved};
 pub use stats::Stats;
 

@@ -8,22 +8,35 @@ pub mod lighting;
 pub mod numbers;
 mod registry;
 pub mod rendering;
-mod rule;
 pub mod shape;
 pub mod suggest;
 pub mod texturing;
 
-pub use registry::{find_rule, RULES};
-pub use rule::{Level, Rule, Severity};
+pub use crate::diagnostic::{Level, Rule, Severity};
+pub use registry::{find_rule, CHECKS, RULES};
 
 use crate::config::CheckConfig;
 use crate::limits::MAX_DIAGNOSTICS;
-use document::limit_exceeded::LIMIT_EXCEEDED;
+use crate::model::rules::LIMIT_EXCEEDED;
 use std::collections::HashMap;
 
+use crate::diagnostic::Diagnostic;
 use crate::model::{Document, FieldEntry, NodeId, Span};
-use crate::report::Diagnostic;
 use crate::schema::Version;
+
+/// A rule of the registry with its check function; `run` is None for the rules the
+/// readers and the model builder report while reading (they are only filtered here).
+pub struct Check {
+    pub rule: &'static Rule,
+    pub run: Option<fn(&mut Ctx)>,
+}
+
+impl Check {
+    /// A rule reported while reading, listed in its group for the catalogue order.
+    pub const fn reported(rule: &'static Rule) -> Check {
+        Check { rule, run: None }
+    }
+}
 
 /// What a rule's check sees: the document and its source, its version and where to report.
 pub struct Ctx<'a> {
@@ -176,10 +189,10 @@ pub fn check(
         folded: HashMap::new(),
         full: false,
     };
-    for rule in RULES.iter() {
-        if let Some(check) = rule.check {
-            if config.runs(rule) {
-                check(&mut ctx);
+    for check in CHECKS.iter() {
+        if let Some(run) = check.run {
+            if config.runs(check.rule) {
+                run(&mut ctx);
             }
         }
     }

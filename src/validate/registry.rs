@@ -4,9 +4,10 @@
 
 use std::sync::LazyLock;
 
-use super::{document, events, lighting, rendering, shape, texturing, Rule};
+use super::{document, events, lighting, rendering, shape, texturing, Check, Rule};
 
-pub static RULES: LazyLock<Vec<&'static Rule>> = LazyLock::new(|| {
+/// Every rule with its check function (None for those reported while reading).
+pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {
     [
         document::RULES,
         shape::RULES,
@@ -17,6 +18,10 @@ pub static RULES: LazyLock<Vec<&'static Rule>> = LazyLock::new(|| {
     ]
     .concat()
 });
+
+/// Every rule, in catalogue order.
+pub static RULES: LazyLock<Vec<&'static Rule>> =
+    LazyLock::new(|| CHECKS.iter().map(|check| check.rule).collect());
 
 pub fn find_rule(code: &str) -> Option<&'static Rule> {
     RULES.iter().copied().find(|r| r.code == code)

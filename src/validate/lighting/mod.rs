@@ -7,17 +7,17 @@ pub mod light_reaches_nothing;
 pub mod physical_ambient_intensity;
 pub mod spot_beam_exceeds_cutoff;
 
-use super::Rule;
+use super::Check;
 use crate::model::{Document, Node, NodeId, Span};
 
 /// This group's rules, in catalogue order.
-pub static RULES: &[&Rule] = &[
-    &spot_beam_exceeds_cutoff::SPOT_BEAM_EXCEEDS_CUTOFF,
-    &light_direction_zero::LIGHT_DIRECTION_ZERO,
-    &light_radius_zero::LIGHT_RADIUS_ZERO,
-    &attenuation_zero::ATTENUATION_ZERO,
-    &physical_ambient_intensity::PHYSICAL_AMBIENT_INTENSITY,
-    &light_reaches_nothing::LIGHT_REACHES_NOTHING,
+pub static RULES: &[&Check] = &[
+    &spot_beam_exceeds_cutoff::CHECK,
+    &light_direction_zero::CHECK,
+    &light_radius_zero::CHECK,
+    &attenuation_zero::CHECK,
+    &physical_ambient_intensity::CHECK,
+    &light_reaches_nothing::CHECK,
 ];
 
 /// PointLight and SpotLight: the lights with a location and a radius.

@@ -1,8 +1,8 @@
 //! IMAGE_UNREADABLE: a texture file that exists but does not decode.
 
 use super::files::{url_fields, Content, Probe, Prober, Resolution, Resolver};
+use crate::model::rules::LIMIT_EXCEEDED;
 use crate::report::Diagnostic;
-use crate::validate::document::limit_exceeded::LIMIT_EXCEEDED;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -13,19 +13,19 @@ pub mod texture_repeat_ignored;
 pub mod texture_transform_singular;
 pub mod url_unresolved;
 
-use super::Rule;
+use super::Check;
 
 /// This group's rules, in catalogue order.
-pub static RULES: &[&Rule] = &[
-    &multitexture_extra_modes::MULTITEXTURE_EXTRA_MODES,
-    &multitexture_coords_short::MULTITEXTURE_COORDS_SHORT,
-    &texgen_parameter_count::TEXGEN_PARAMETER_COUNT,
-    &texture_mipmap_required::TEXTURE_MIPMAP_REQUIRED,
-    &texture_repeat_ignored::TEXTURE_REPEAT_IGNORED,
-    &texture_transform_singular::TEXTURE_TRANSFORM_SINGULAR,
-    &pixel_texture_size_mismatch::PIXEL_TEXTURE_SIZE_MISMATCH,
-    &image_url_empty::IMAGE_URL_EMPTY,
-    &url_unresolved::URL_UNRESOLVED,
-    &image_unreadable::IMAGE_UNREADABLE,
-    &image_format_unsupported::IMAGE_FORMAT_UNSUPPORTED,
+pub static RULES: &[&Check] = &[
+    &multitexture_extra_modes::CHECK,
+    &multitexture_coords_short::CHECK,
+    &texgen_parameter_count::CHECK,
+    &texture_mipmap_required::CHECK,
+    &texture_repeat_ignored::CHECK,
+    &texture_transform_singular::CHECK,
+    &pixel_texture_size_mismatch::CHECK,
+    &image_url_empty::CHECK,
+    &url_unresolved::CHECK,
+    &image_unreadable::CHECK,
+    &image_format_unsupported::CHECK,
 ];

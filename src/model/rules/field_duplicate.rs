@@ -24,6 +24,5 @@ crate::declare_rule! {
         level: Fast,
         clause: "4.4.2",
         versions: "all",
-        check: None,
     }
 }

@@ -45,6 +45,5 @@ crate::declare_rule! {
         level: Fast,
         clause: "5",
         versions: "all",
-        check: None,
     }
 }

@@ -6,8 +6,6 @@ use std::fmt;
 
 use serde::{Deserialize, Serialize};
 
-use super::Ctx;
-
 #[derive(Copy, Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Severity {
@@ -66,8 +64,9 @@ impl Level {
     }
 }
 
-/// A checking rule. Rules found while reading (syntax, DEF/USE) have no `check`: the
-/// readers and the model builder report them.
+/// A rule as the catalogue lists it. Rules found while reading (syntax, DEF/USE) are
+/// reported by the readers and the model builder; the others have a check function in
+/// [`crate::validate`] ([`crate::validate::Check`]).
 pub struct Rule {
     pub code: &'static str,
     pub severity: Severity,
@@ -78,7 +77,6 @@ pub struct Rule {
     pub versions: &'static str,
     /// The rule's documentation (Markdown: What it does / Why it matters / Example / Clause).
     pub doc: &'static str,
-    pub check: Option<fn(&mut Ctx)>,
 }
 
 impl Rule {
@@ -105,7 +103,9 @@ impl fmt::Debug for Rule {
     }
 }
 
-/// Declares a rule: `declare_rule! { /// docs… pub static CODE = { severity, level, clause, versions, check } }`.
+/// Declares a rule: `declare_rule! { /// docs… pub static CODE = { severity, level, clause,
+/// versions } }`. With `check: Some(f)` after `versions` it also declares the module's
+/// `CHECK` ([`crate::validate::Check`]), which runs `f`: one rule per module.
 #[macro_export]
 macro_rules! declare_rule {
     (
@@ -114,19 +114,43 @@ macro_rules! declare_rule {
             severity: $severity:ident,
             level: $level:ident,
             clause: $clause:literal,
-            versions: $versions:literal,
-            check: $check:expr $(,)?
+            versions: $versions:literal $(,)?
         }
     ) => {
         $(#[doc = $doc])*
-        pub static $code: $crate::validate::Rule = $crate::validate::Rule {
+        pub static $code: $crate::diagnostic::Rule = $crate::diagnostic::Rule {
             code: stringify!($code),
-            severity: $crate::validate::Severity::$severity,
-            level: $crate::validate::Level::$level,
+            severity: $crate::diagnostic::Severity::$severity,
+            level: $crate::diagnostic::Level::$level,
             clause: $clause,
             versions: $versions,
             doc: concat!($($doc, "\n"),*),
-            check: $check,
+        };
+    };
+    (
+        $(#[doc = $doc:literal])*
+        pub static $code:ident = {
+            severity: $severity:ident,
+            level: $level:ident,
+            clause: $clause:literal,
+            versions: $versions:literal,
+            check: Some($check:expr) $(,)?
+        }
+    ) => {
+        $crate::declare_rule! {
+            $(#[doc = $doc])*
+            pub static $code = {
+                severity: $severity,
+                level: $level,
+                clause: $clause,
+                versions: $versions,
+            }
+        }
+
+        /// This module's rule with its check function, for the registry.
+        pub static CHECK: $crate::validate::Check = $crate::validate::Check {
+            rule: &$code,
+            run: Some($check),
         };
     };
 }

@@ -22,6 +22,5 @@ crate::declare_rule! {
         level: Fast,
         clause: "19776",
         versions: "all",
-        check: None,
     }
 }

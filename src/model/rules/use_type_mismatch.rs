@@ -24,6 +24,5 @@ crate::declare_rule! {
         level: Fast,
         clause: "4.4.3",
         versions: "all",
-        check: None,
     }
 }

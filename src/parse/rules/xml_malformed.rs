@@ -21,6 +21,5 @@ crate::declare_rule! {
         level: Fast,
         clause: "19776-1 4.1",
         versions: "all",
-        check: None,
     }
 }

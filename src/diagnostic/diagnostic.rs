@@ -1,8 +1,7 @@
 //! One finding: which rule, where (a byte span and, when known, the node it concerns),
 //! what, and the details a tool needs (MF element index, offending value, a suggestion).
 
-use crate::model::{NodeId, Span};
-use crate::validate::{Rule, Severity};
+use super::{NodeId, Rule, Severity, Span};
 
 #[derive(Clone, Debug)]
 pub struct Diagnostic {

@@ -21,6 +21,5 @@ crate::declare_rule! {
         level: Fast,
         clause: "19776-1 4.2",
         versions: "all",
-        check: None,
     }
 }

@@ -22,6 +22,5 @@ crate::declare_rule! {
         level: Fast,
         clause: "4.4.3",
         versions: "all",
-        check: None,
     }
 }

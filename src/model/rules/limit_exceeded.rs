@@ -46,6 +46,5 @@ crate::declare_rule! {
         level: Fast,
         clause: "4.3.2",
         versions: "all",
-        check: None,
     }
 }

@@ -19,6 +19,5 @@ crate::declare_rule! {
         level: Fast,
         clause: "19776-5",
         versions: "all",
-        check: None,
     }
 }

@@ -1,0 +1,17 @@
+//! The rules the readers report while reading (RULES.md §1 and §7): an input in no
+//! encoding x3dcheck reads, text that does not parse, values that do not parse as their
+//! field's type. One rule per file, as under [`crate::validate`].
+
+pub mod encoding_unsupported;
+pub mod field_value_syntax;
+pub mod json_malformed;
+pub mod root_not_x3d;
+pub mod use_with_fields;
+pub mod xml_malformed;
+
+pub use encoding_unsupported::ENCODING_UNSUPPORTED;
+pub use field_value_syntax::FIELD_VALUE_SYNTAX;
+pub use json_malformed::JSON_MALFORMED;
+pub use root_not_x3d::ROOT_NOT_X3D;
+pub use use_with_fields::USE_WITH_FIELDS;
+pub use xml_malformed::XML_MALFORMED;
