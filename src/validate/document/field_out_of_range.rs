@@ -101,7 +101,7 @@ fn bbox_size_outside(v: &[f32]) -> Option<usize> {
     if v == [-1.0, -1.0, -1.0] {
         return None;
     }
-    v.iter().position(|&x| !(x >= 0.0))
+    v.iter().position(|&x| x.is_nan() || x < 0.0)
 }
 
 /// A `unit` statement's conversionFactor must be positive: (0,∞).
