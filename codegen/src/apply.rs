@@ -198,7 +198,10 @@ fn modify(fields: &mut Vec<Field>, position: usize, change: &Change) -> bool {
         }
         Change::Min(bound) => replace(&mut field.min, *bound),
         Change::Max(bound) => replace(&mut field.max, *bound),
-        Change::Default(default) => replace(&mut field.default, default.to_string()),
+        Change::Default(default) => {
+            let exact = exact_default(default, field.ty);
+            replace(&mut field.default, exact)
+        }
         Change::Component(level) => {
             let new = level.map(component);
             let same = match (&field.component, &new) {
@@ -416,4 +419,33 @@ mod tests {
             .collect();
         assert_eq!(names, ["attenuation", "intensity"]);
     }
+}
+
+/// A default as the interface table prints it, in XML encoding syntax. A multiple of π
+/// (`π/4`, `π`, `2π`) becomes the shortest text of the float nearest to it at the field's
+/// precision (`0.7853982` for an SFFloat, `0.7853981633974483` for an SFDouble), where the
+/// UOM prints a shortened decimal (`0.7854`) that rounds to another float.
+fn exact_default(default: &str, ty: crate::types::FieldType) -> String {
+    let Some(value) = pi_multiple(default) else {
+        return default.to_string();
+    };
+    match ty.scalar() {
+        crate::types::Scalar::Float => format!("{}", value as f32),
+        _ => format!("{value}"),
+    }
+}
+
+/// The value of `kπ/n` as written in the tables (`π`, `π/4`, `2π`, `3π/16`).
+fn pi_multiple(text: &str) -> Option<f64> {
+    let (numerator, denominator) = match text.split_once('/') {
+        Some((a, b)) => (a, b.parse::<f64>().ok()?),
+        None => (text, 1.0),
+    };
+    let k = numerator.strip_suffix('π')?;
+    let k = if k.is_empty() {
+        1.0
+    } else {
+        k.parse::<f64>().ok()?
+    };
+    Some(k * std::f64::consts::PI / denominator)
 }

@@ -262,10 +262,20 @@ pub struct ComponentStatement {
     pub span: Span,
 }
 
+/// A `unit` statement (19775-1 7.2.5.5): its attributes as written, with their places.
+#[derive(Clone, Debug)]
+pub struct UnitStatement {
+    pub category: Option<Named>,
+    pub name: Option<Named>,
+    /// The factor as read (None where it is missing or did not parse) and its place.
+    pub conversion_factor: Option<(Option<f64>, Span)>,
+    pub span: Span,
+}
+
 #[derive(Clone, Debug, Default)]
 pub struct Head {
     pub components: Vec<ComponentStatement>,
-    pub units: usize,
+    pub units: Vec<UnitStatement>,
     pub metas: usize,
     /// Attributes of head, component, unit and meta that they do not have.
     pub unknown_attributes: Vec<UnknownAttribute>,

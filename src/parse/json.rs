@@ -581,11 +581,35 @@ impl<'t, 's> JsonReader<'t, 's> {
                         self.component(object);
                     }
                 }
-                "unit" => self.builder.doc_mut().head.units += objects.len(),
+                "unit" => {
+                    for object in objects {
+                        self.unit(object);
+                    }
+                }
                 "meta" => self.builder.doc_mut().head.metas += objects.len(),
                 _ => {}
             }
         }
+    }
+
+    fn unit(&mut self, object: usize) {
+        let t = self.t;
+        self.duplicate_keys(object, |_| true);
+        let conversion_factor = t.get(object, "@conversionFactor").map(|(_, value)| {
+            let factor = match self.convert(FieldType::SFDouble, value, "`@conversionFactor`", None)
+            {
+                Value::Doubles(v) => v.first().copied(),
+                _ => None,
+            };
+            (factor, self.value_span(value))
+        });
+        let unit = UnitStatement {
+            category: self.named(object, "@category"),
+            name: self.named(object, "@name"),
+            conversion_factor,
+            span: span(t.full_span(object)),
+        };
+        self.builder.doc_mut().head.units.push(unit);
     }
 
     fn component(&mut self, object: usize) {
@@ -1412,7 +1436,7 @@ mod tests {
         assert_eq!(d.head.components.len(), 1);
         assert_eq!(d.head.components[0].name.text, "Shape");
         assert_eq!(d.head.components[0].level.map(|l| l.0), Some(4));
-        assert_eq!((d.head.units, d.head.metas), (1, 2));
+        assert_eq!((d.head.units.len(), d.head.metas), (1, 2));
         assert_eq!(d.imports_exports.len(), 2);
     }
 

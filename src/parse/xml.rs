@@ -401,7 +401,7 @@ impl<'s> XmlReader<'s> {
             }
             (Context::Head, "unit") => {
                 self.statement_attributes("unit", attrs);
-                self.builder.doc_mut().head.units += 1;
+                self.unit(attrs, element);
                 Frame::Other
             }
             (Context::Head, "meta") => {
@@ -553,6 +553,26 @@ impl<'s> XmlReader<'s> {
             .push(ComponentStatement { name, level, span });
     }
 
+    fn unit(&mut self, attrs: &[Attr], span: Span) {
+        let conversion_factor = attrs
+            .iter()
+            .find(|a| a.name == "conversionFactor")
+            .map(|attr| {
+                let factor = match self.parse_attr_value(FieldType::SFDouble, attr) {
+                    Value::Doubles(v) => v.first().copied(),
+                    _ => None,
+                };
+                (factor, attr.value_span)
+            });
+        let unit = UnitStatement {
+            category: named_attr(attrs, "category"),
+            name: named_attr(attrs, "name"),
+            conversion_factor,
+            span,
+        };
+        self.builder.doc_mut().head.units.push(unit);
+    }
+
     fn route(&mut self, attrs: &[Attr], span: Span) {
         let get = |key: &str| {
             attrs
@@ -585,7 +605,11 @@ impl<'s> XmlReader<'s> {
         let url = attrs
             .iter()
             .find(|a| a.name == "url")
-            .and_then(|a| xml_value::parse_value(FieldType::MFString, &a.value).ok())
+            .and_then(|a| {
+                xml_value::parse_value(FieldType::MFString, &a.value)
+                    .or_else(|e| e.into_recovered().ok_or(()))
+                    .ok()
+            })
             .and_then(|v| match v {
                 Value::Strings(s) => Some(s),
                 _ => None,
@@ -842,15 +866,24 @@ impl<'s> XmlReader<'s> {
                 } else {
                     attr.value_span
                 };
-                self.builder.report(
-                    Diagnostic::new(
-                        &FIELD_VALUE_SYNTAX,
-                        span,
-                        format!("`{}`: {}", attr.name, error.message),
-                    )
-                    .value(truncate(&attr.value, 80)),
-                );
-                Value::Unparsed(attr.value.to_string())
+                let mut diagnostic = Diagnostic::new(
+                    &FIELD_VALUE_SYNTAX,
+                    span,
+                    format!("`{}`: {}", attr.name, error.message),
+                )
+                .value(truncate(&attr.value, 80));
+                if let Some(fix) = &error.fix {
+                    let written = if fix.contains('\'') {
+                        format!("\"{}\"", fix.replace('"', "&quot;"))
+                    } else {
+                        format!("'{fix}'")
+                    };
+                    diagnostic = diagnostic.help(format!("write {}={written}", attr.name));
+                }
+                self.builder.report(diagnostic);
+                error
+                    .into_recovered()
+                    .unwrap_or_else(|| Value::Unparsed(attr.value.to_string()))
             }
         }
     }

@@ -1,10 +1,13 @@
 //! Field values in the XML encoding (ISO/IEC 19776-1 clause 5): the text of an attribute,
 //! already unescaped by the XML reader, turned into a typed [`Value`].
 //!
-//! Values are separated by XML whitespace and commas (commas count as whitespace). Numbers
-//! go straight into one flat vector per field, with no allocation per number. Non-finite
-//! and overflowing floats are kept as NaN and ±infinity: reporting them is a rule's job,
-//! as is comparing an image's pixel count with its size.
+//! Values are separated by XML whitespace. A comma counts as whitespace only where 19776-1
+//! 5.1.2 allows one: between the values of an MF field (after a whole SFVec3f of an
+//! MFVec3f, after any number of an MFFloat); elsewhere (`diffuseColor='1,0,0'`) it is an
+//! error that still reads as whitespace, as browsers read it. Numbers go straight into one
+//! flat vector per field, with no allocation per number. Non-finite and overflowing floats
+//! are kept as NaN and ±infinity: reporting them is a rule's job, as is comparing an
+//! image's pixel count with its size.
 
 use std::fmt;
 
@@ -14,11 +17,17 @@ use crate::schema::{FieldDef, FieldType, Scalar};
 
 /// A value that does not follow the syntax of its field type. `offset` and `len` are a
 /// byte range in the text given to [`parse_value`].
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct SyntaxError {
     pub offset: usize,
     pub len: usize,
     pub message: String,
+    /// How to write the value instead, where one rewrite fixes it (`"SANS"` for `SANS`).
+    pub fix: Option<String>,
+    /// The value browsers read despite the error, where there is no doubt about it (a
+    /// misplaced comma read as whitespace, an unquoted MFString read as one string), so
+    /// that the rules after the reader judge what is drawn rather than the default.
+    pub recovered: Option<Box<Value>>,
 }
 
 impl SyntaxError {
@@ -27,7 +36,19 @@ impl SyntaxError {
             offset,
             len,
             message: message.into(),
+            fix: None,
+            recovered: None,
         }
+    }
+
+    fn recovering(mut self, value: Value) -> SyntaxError {
+        self.recovered = Some(Box::new(value));
+        self
+    }
+
+    /// The value as browsers read it, if the error leaves no doubt about it.
+    pub fn into_recovered(self) -> Option<Value> {
+        self.recovered.map(|v| *v)
     }
 
     fn at(range: (usize, usize), message: impl Into<String>) -> SyntaxError {
@@ -68,36 +89,49 @@ pub enum Syntax {
 /// [`parse_value`] for text in the given [`Syntax`].
 pub fn parse_value_in(syntax: Syntax, ty: FieldType, text: &str) -> Result<Value, SyntaxError> {
     let s = text.as_bytes();
-    match ty.scalar() {
+    let (value, comma) = match ty.scalar() {
         Scalar::Float => {
-            let values = parse_floats::<f32>(ty, s)?;
+            let (values, comma) = parse_floats::<f32>(ty, s)?;
             check_count(ty, s, values.len())?;
-            Ok(Value::Floats(values))
+            (Value::Floats(values), comma)
         }
         Scalar::Double => {
-            let values = parse_floats::<f64>(ty, s)?;
+            let (values, comma) = parse_floats::<f64>(ty, s)?;
             check_count(ty, s, values.len())?;
-            Ok(Value::Doubles(values))
+            (Value::Doubles(values), comma)
         }
         Scalar::Int32 => {
-            let values = parse_int32s(ty, s)?;
+            let (values, comma) = parse_int32s(ty, s)?;
             check_count(ty, s, values.len())?;
-            Ok(Value::Int32s(values))
+            (Value::Int32s(values), comma)
         }
         Scalar::Bool => {
-            let values = parse_bools(syntax, ty, s)?;
+            let (values, comma) = parse_bools(syntax, ty, s)?;
             check_count(ty, s, values.len())?;
-            Ok(Value::Bools(values))
+            (Value::Bools(values), comma)
         }
-        Scalar::String if syntax == Syntax::Classic => parse_quoted(ty, text).map(Value::Strings),
-        Scalar::String if ty.is_mf() => parse_mfstring(text).map(Value::Strings),
-        Scalar::String => Ok(Value::Strings(vec![text.to_owned()])),
-        Scalar::Image => parse_images(ty, s).map(Value::Images),
-        Scalar::Node => Err(SyntaxError::new(
-            0,
-            text.len(),
-            format!("{ty} fields take child elements, not attribute text"),
-        )),
+        Scalar::String if syntax == Syntax::Classic => {
+            return parse_quoted(ty, text).map(Value::Strings)
+        }
+        Scalar::String if ty.is_mf() => return parse_mfstring(text).map(Value::Strings),
+        Scalar::String => return Ok(Value::Strings(vec![text.to_owned()])),
+        Scalar::Image => {
+            let (images, comma) = parse_images(ty, s)?;
+            (Value::Images(images), comma)
+        }
+        Scalar::Node => {
+            return Err(SyntaxError::new(
+                0,
+                text.len(),
+                format!("{ty} fields take child elements, not attribute text"),
+            ))
+        }
+    };
+    // ClassicVRML reads commas as white space (19776-2 5.1); XML allows them only
+    // between MF elements (19776-1 5.1.2).
+    match comma {
+        Some(at) if syntax == Syntax::Xml => Err(comma_error(ty, s, at).recovering(value)),
+        _ => Ok(value),
     }
 }
 
@@ -119,7 +153,7 @@ pub fn parse_summary(
 }
 
 /// [`scan_floats`] or [`scan_int32s`] into a summary.
-type Scan<T> = fn(FieldType, &[u8], &mut Summarizer<T>) -> Result<(), SyntaxError>;
+type Scan<T> = fn(FieldType, &[u8], &mut Summarizer<T>) -> Result<Option<usize>, SyntaxError>;
 
 fn summarize<T: Summarized>(
     node: &Node,
@@ -128,16 +162,12 @@ fn summarize<T: Summarized>(
     scan: Scan<T>,
 ) -> Result<Value, SyntaxError> {
     let mut summarizer = Summarizer::<T>::new(node, def);
-    scan(def.ty, s, &mut summarizer)?;
+    let comma = scan(def.ty, s, &mut summarizer)?;
     check_count(def.ty, s, summarizer.count())?;
-    Ok(summarizer.finish())
-}
-
-/// True when an MFString value was written without any double quotes (`url='a.png'`).
-/// [`parse_value`] accepts that as one string, as browsers do, though 19776-1 5.15 asks
-/// for every string of an MFString to be quoted; a rule can use this to say so.
-pub fn mfstring_is_unquoted(text: &str) -> bool {
-    !text.contains('"') && !trim_xml_whitespace(text).is_empty()
+    match comma {
+        None => Ok(summarizer.finish()),
+        Some(at) => Err(comma_error(def.ty, s, at).recovering(summarizer.finish())),
+    }
 }
 
 /// Capacity for the numbers in `s`: a guess from its length (at least two bytes per
@@ -245,29 +275,58 @@ fn check_count(ty: FieldType, s: &[u8], count: usize) -> Result<(), SyntaxError>
     ))
 }
 
-fn parse_floats<F: Float>(ty: FieldType, s: &[u8]) -> Result<Vec<F>, SyntaxError> {
+/// The numbers of `s`, with the offset of the first comma 19776-1 5.1.2 does not allow.
+type Scanned<T> = (Vec<T>, Option<usize>);
+
+fn parse_floats<F: Float>(ty: FieldType, s: &[u8]) -> Result<Scanned<F>, SyntaxError> {
     let mut values: Vec<F> = if ty.is_mf() {
         Vec::with_capacity(estimate(s))
     } else {
         Vec::with_capacity(ty.arity())
     };
-    scan_floats(ty, s, &mut values)?;
+    let comma = scan_floats(ty, s, &mut values)?;
     trim_capacity(&mut values);
-    Ok(values)
+    Ok((values, comma))
 }
 
-/// The numbers of `s` into `values`.
+/// Whether a comma may follow `count` scalars of a value of type `ty`: only between the
+/// values of an MF field, that is after a whole number of its elements (19776-1 5.1.2:
+/// "commas may only be used as whitespace between values of individual base datatypes").
+#[inline]
+fn comma_allowed(ty: FieldType, count: usize) -> bool {
+    ty.is_mf() && count > 0 && count.is_multiple_of(ty.arity())
+}
+
+/// Skips the separators from `i`; notes in `comma` the first comma that `comma_allowed`
+/// refuses after `count` scalars.
+#[inline(always)]
+fn skip_separators(
+    ty: FieldType,
+    s: &[u8],
+    mut i: usize,
+    count: usize,
+    comma: &mut Option<usize>,
+) -> usize {
+    while i < s.len() && is_separator(s[i]) {
+        if s[i] == b',' && comma.is_none() && !comma_allowed(ty, count) {
+            *comma = Some(i);
+        }
+        i += 1;
+    }
+    i
+}
+
+/// The numbers of `s` into `values`; the offset of the first misplaced comma.
 fn scan_floats<F: Float, S: Sink<F>>(
     ty: FieldType,
     s: &[u8],
     values: &mut S,
-) -> Result<(), SyntaxError> {
+) -> Result<Option<usize>, SyntaxError> {
     let n = s.len();
     let mut i = 0;
+    let mut comma = None;
     loop {
-        while i < n && is_separator(s[i]) {
-            i += 1;
-        }
+        i = skip_separators(ty, s, i, values.count(), &mut comma);
         if i >= n {
             break;
         }
@@ -279,7 +338,52 @@ fn scan_floats<F: Float, S: Sink<F>>(
             Err(end) => return Err(float_error(ty, s, i, end)),
         }
     }
-    Ok(())
+    Ok(comma)
+}
+
+/// A comma where 19776-1 5.1.2 allows none, at `at`: inside an SF value, inside one
+/// element of an MF value, or before its first value. The fix writes the value with spaces
+/// between the numbers of an element and commas between elements.
+#[cold]
+fn comma_error(ty: FieldType, s: &[u8], at: usize) -> SyntaxError {
+    let single = ty.single();
+    let arity = ty.arity();
+    let message = if !ty.is_mf() {
+        format!("a comma inside an {ty}: commas may only separate the values of an MF field")
+    } else if ty.scalar() == Scalar::Image {
+        format!("a comma inside an image of an {ty}: commas may only separate whole images")
+    } else if arity > 1 {
+        let example: Vec<String> = [1, arity + 1]
+            .iter()
+            .map(|first| {
+                let numbers: Vec<String> = (*first..first + arity).map(|k| k.to_string()).collect();
+                numbers.join(" ")
+            })
+            .collect();
+        format!(
+            "a comma inside an {single} of an {ty}: commas may only separate whole {single} values (after every {arity} numbers), as in `{}`",
+            example.join(", ")
+        )
+    } else {
+        format!("a comma before the first value: commas may only separate the values of an {ty}")
+    };
+    let mut error = SyntaxError::new(at, 1, message);
+    // A rewrite of a long value helps nobody; the message says what to change.
+    if s.len() <= 200 {
+        let spans: Vec<(usize, usize)> = tokens(s).collect();
+        let words: Vec<String> = spans
+            .iter()
+            .map(|&(a, b)| String::from_utf8_lossy(&s[a..b]).into_owned())
+            .collect();
+        let group = if ty.is_mf() && ty.scalar() != Scalar::Image {
+            arity
+        } else {
+            words.len().max(1)
+        };
+        let elements: Vec<String> = words.chunks(group).map(|c| c.join(" ")).collect();
+        error.fix = Some(elements.join(", "));
+    }
+    error
 }
 
 #[cold]
@@ -309,25 +413,28 @@ fn float_error(ty: FieldType, s: &[u8], start: usize, end: usize) -> SyntaxError
     SyntaxError::at((start, end), format!("`{token}` is not a number{hint}"))
 }
 
-fn parse_int32s(ty: FieldType, s: &[u8]) -> Result<Vec<i32>, SyntaxError> {
+fn parse_int32s(ty: FieldType, s: &[u8]) -> Result<Scanned<i32>, SyntaxError> {
     let mut values: Vec<i32> = if ty.is_mf() {
         Vec::with_capacity(estimate(s))
     } else {
         Vec::with_capacity(1)
     };
-    scan_int32s(ty, s, &mut values)?;
+    let comma = scan_int32s(ty, s, &mut values)?;
     trim_capacity(&mut values);
-    Ok(values)
+    Ok((values, comma))
 }
 
-/// The whole numbers of `s` into `values`.
-fn scan_int32s<S: Sink<i32>>(ty: FieldType, s: &[u8], values: &mut S) -> Result<(), SyntaxError> {
+/// The whole numbers of `s` into `values`; the offset of the first misplaced comma.
+fn scan_int32s<S: Sink<i32>>(
+    ty: FieldType,
+    s: &[u8],
+    values: &mut S,
+) -> Result<Option<usize>, SyntaxError> {
     let n = s.len();
     let mut i = 0;
+    let mut comma = None;
     loop {
-        while i < n && is_separator(s[i]) {
-            i += 1;
-        }
+        i = skip_separators(ty, s, i, values.count(), &mut comma);
         if i >= n {
             break;
         }
@@ -339,7 +446,7 @@ fn scan_int32s<S: Sink<i32>>(ty: FieldType, s: &[u8], values: &mut S) -> Result<
             Err((error, _)) => return Err(int_error(ty, s, i, error)),
         }
     }
-    Ok(())
+    Ok(comma)
 }
 
 #[cold]
@@ -358,13 +465,17 @@ fn int_error(ty: FieldType, s: &[u8], start: usize, error: IntError) -> SyntaxEr
     SyntaxError::at((start, end), message)
 }
 
-fn parse_bools(syntax: Syntax, ty: FieldType, s: &[u8]) -> Result<Vec<bool>, SyntaxError> {
+fn parse_bools(syntax: Syntax, ty: FieldType, s: &[u8]) -> Result<Scanned<bool>, SyntaxError> {
     let (yes, no, case) = match syntax {
         Syntax::Xml => ("true", "false", "X3D XML booleans are lowercase"),
         Syntax::Classic => ("TRUE", "FALSE", "ClassicVRML booleans are uppercase"),
     };
     let mut values = Vec::new();
+    let mut comma = None;
+    let mut after = 0;
     for (start, end) in tokens(s) {
+        skip_separators(ty, &s[..start], after, values.len(), &mut comma);
+        after = end;
         match &s[start..end] {
             t if t == yes.as_bytes() => values.push(true),
             t if t == no.as_bytes() => values.push(false),
@@ -389,20 +500,33 @@ fn parse_bools(syntax: Syntax, ty: FieldType, s: &[u8]) -> Result<Vec<bool>, Syn
             }
         }
     }
-    Ok(values)
+    skip_separators(ty, s, after, values.len(), &mut comma);
+    Ok((values, comma))
 }
 
 /// `"a" "b c"`: double-quoted strings separated by whitespace or commas, with `\"` and
 /// `\\` as escapes (and a backslash before any other character standing for that
-/// character). Text with no double quote at all is taken as one string.
+/// character). Text with no double quote at all (`family='SANS'`) is an error (19776-1
+/// 5.15: each string is enclosed in quotation marks) that browsers read as one string.
 fn parse_mfstring(text: &str) -> Result<Vec<String>, SyntaxError> {
     if !text.contains('"') {
+        let s = text.as_bytes();
         let trimmed = trim_xml_whitespace(text);
-        return Ok(if trimmed.is_empty() {
-            Vec::new()
-        } else {
-            vec![trimmed.to_owned()]
-        });
+        if trimmed.is_empty() {
+            return Ok(Vec::new());
+        }
+        let start = text.len() - text.trim_start_matches([' ', '\t', '\n', '\r']).len();
+        let mut error = SyntaxError::new(
+            start,
+            trimmed.len(),
+            format!(
+                "`{}` is not in quotes: each string of an MFString is enclosed in double quotes",
+                show(s, start, start + trimmed.len())
+            ),
+        )
+        .recovering(Value::Strings(vec![trimmed.to_owned()]));
+        error.fix = Some(format!("\"{}\"", trimmed.replace('\\', "\\\\")));
+        return Err(error);
     }
     quoted_strings(text)
 }
@@ -490,24 +614,33 @@ fn quoted_strings(text: &str) -> Result<Vec<String>, SyntaxError> {
     Ok(strings)
 }
 
-fn parse_images(ty: FieldType, s: &[u8]) -> Result<Vec<Image>, SyntaxError> {
+/// The images of `s`. A comma may separate the images of an MFImage, never the numbers of
+/// one image (19776-1 5.1.2).
+fn parse_images(ty: FieldType, s: &[u8]) -> Result<Scanned<Image>, SyntaxError> {
     let n = s.len();
     let mut images = Vec::new();
     let mut i = 0;
-    let skip = |i: &mut usize| {
+    let mut comma = None;
+    // `allowed`: whether a comma may stand here; the first one that may not is noted.
+    let skip = |i: &mut usize, allowed: bool, comma: &mut Option<usize>| {
         while *i < n && is_separator(s[*i]) {
+            if s[*i] == b',' && !allowed && comma.is_none() {
+                *comma = Some(*i);
+            }
             *i += 1;
         }
     };
     loop {
-        skip(&mut i);
+        skip(&mut i, ty.is_mf() && !images.is_empty(), &mut comma);
         if i >= n {
             break;
         }
         let header_start = i;
         let mut header = [0i32; 3];
         for (k, slot) in header.iter_mut().enumerate() {
-            skip(&mut i);
+            if k > 0 {
+                skip(&mut i, false, &mut comma);
+            }
             if i >= n {
                 let what = ["width", "height", "components"][k];
                 let message = format!(
@@ -536,7 +669,7 @@ fn parse_images(ty: FieldType, s: &[u8]) -> Result<Vec<Image>, SyntaxError> {
             pixels.reserve(declared.min(estimate(&s[i..]) as u64) as usize);
             let mut taken = 0u64;
             while taken < declared {
-                skip(&mut i);
+                skip(&mut i, false, &mut comma);
                 if i >= n {
                     break;
                 }
@@ -552,7 +685,7 @@ fn parse_images(ty: FieldType, s: &[u8]) -> Result<Vec<Image>, SyntaxError> {
         } else {
             pixels.reserve(estimate(&s[i..]));
             loop {
-                skip(&mut i);
+                skip(&mut i, false, &mut comma);
                 if i >= n {
                     break;
                 }
@@ -583,7 +716,7 @@ fn parse_images(ty: FieldType, s: &[u8]) -> Result<Vec<Image>, SyntaxError> {
             format!("{ty} takes `width height components` and then the pixels, e.g. `0 0 0`"),
         ));
     }
-    Ok(images)
+    Ok((images, comma))
 }
 
 #[cold]
@@ -636,22 +769,22 @@ mod tests {
     #[test]
     fn floats_and_separators() {
         let expected = Value::Floats(vec![1.0, 2.0, 3.0]);
-        for text in [
-            "1 2 3",
-            "1,2,3",
-            "1, 2, 3",
-            "1 2 3,",
-            " 1\t2\n3\r",
-            ",1,,2 , 3,",
-            "1.0 2e0 +3",
-        ] {
+        for text in ["1 2 3", " 1\t2\n3\r", "1.0 2e0 +3"] {
             assert_eq!(ok(MFVec3f, text), expected, "{text:?}");
             assert_eq!(ok(SFVec3f, text), expected, "{text:?}");
             assert_eq!(ok(SFColor, text), expected, "{text:?}");
         }
+        // A comma after a whole element of an MF value (19776-1 5.1.2, EXAMPLE 1).
+        assert_eq!(ok(MFVec3f, "1 2 3,"), expected);
+        assert_eq!(ok(MFColor, "1 1 1, 0 0 0, ").len(), 6);
+        assert_eq!(ok(MFVec3f, "1 2 3 ,, 4 5 6").len(), 6);
+        assert_eq!(ok(MFFloat, "1, 2,3"), expected);
+        assert_eq!(ok(MFInt32, "1,2, 3"), Value::Int32s(vec![1, 2, 3]));
         assert_eq!(ok(SFFloat, "0.5"), Value::Floats(vec![0.5]));
         assert_eq!(ok(MFFloat, ""), Value::Floats(vec![]));
-        assert_eq!(ok(MFFloat, " , "), Value::Floats(vec![]));
+        assert!(err(MFFloat, " , ")
+            .message
+            .contains("before the first value"));
         assert_eq!(ok(SFVec2f, "1 2"), Value::Floats(vec![1.0, 2.0]));
         assert_eq!(
             ok(SFRotation, "0 1 0 1.5"),
@@ -665,6 +798,51 @@ mod tests {
     }
 
     #[test]
+    fn commas_elsewhere_are_errors_read_as_whitespace() {
+        let expected = Value::Floats(vec![1.0, 2.0, 3.0]);
+        for (ty, text, at) in [
+            (SFVec3f, "1,2,3", 1),
+            (SFColor, "1, 2, 3", 1),
+            (SFVec3f, "1 2 3,", 5),
+            (MFVec3f, "1, 2, 3", 1),
+            (MFVec3f, ",1 2 3", 0),
+            (MFFloat, ", 1 2 3", 0),
+        ] {
+            let e = err(ty, text);
+            assert_eq!((e.offset, e.len), (at, 1), "{ty} {text:?}");
+            assert_eq!(e.into_recovered(), Some(expected.clone()), "{ty} {text:?}");
+        }
+        // EXAMPLE 2 of 19776-1 5.1.2.
+        let e = err(MFColor, "1, 1, 1, 0, 0, 0");
+        assert_eq!(
+            e.message,
+            "a comma inside an SFColor of an MFColor: commas may only separate whole SFColor values (after every 3 numbers), as in `1 2 3, 4 5 6`"
+        );
+        assert_eq!(e.fix.as_deref(), Some("1 1 1, 0 0 0"));
+        let e = err(SFColor, "1,0,0");
+        assert_eq!(
+            e.message,
+            "a comma inside an SFColor: commas may only separate the values of an MF field"
+        );
+        assert_eq!(e.fix.as_deref(), Some("1 0 0"));
+        // The count is judged first: one error per value.
+        let e = err(MFColor, "1 1 1, 0 0");
+        assert!(e.message.contains("multiple of 3"), "{}", e.message);
+        assert_eq!(
+            err(SFInt32, "1,").into_recovered(),
+            Some(Value::Int32s(vec![1]))
+        );
+        assert_eq!(
+            err(SFBool, "true,").into_recovered(),
+            Some(Value::Bools(vec![true]))
+        );
+        assert_eq!(ok(MFBool, "true, false"), Value::Bools(vec![true, false]));
+        assert_eq!(err(SFImage, "1 1 1, 0xFF").offset, 5);
+        assert_eq!(err(MFImage, "1 1, 1 0xFF").offset, 3);
+        assert_eq!(ok(MFImage, "1 1 1 0xFF, 0 0 0,").len(), 2);
+    }
+
+    #[test]
     fn doubles() {
         assert_eq!(ok(SFTime, "-1"), Value::Doubles(vec![-1.0]));
         assert_eq!(ok(SFDouble, "0.1"), Value::Doubles(vec![0.1]));
@@ -675,7 +853,7 @@ mod tests {
         );
         assert_eq!(ok(MFVec2d, "1 2 3 4").len(), 4);
         assert_eq!(ok(MFVec4d, "").len(), 0);
-        assert_eq!(ok(SFMatrix3d, &["1"; 9].join(",")).len(), 9);
+        assert_eq!(ok(SFMatrix3d, &["1"; 9].join(" ")).len(), 9);
         assert_eq!(ok(MFMatrix4d, &["1"; 32].join(" ")).len(), 32);
         assert_eq!(ok(MFDouble, "1").len(), 1);
         let e = err(SFVec3d, "1 2");
@@ -778,7 +956,7 @@ mod tests {
         assert_eq!(ok(SFBool, "true"), Value::Bools(vec![true]));
         assert_eq!(ok(SFBool, " false "), Value::Bools(vec![false]));
         assert_eq!(
-            ok(MFBool, "true,false true"),
+            ok(MFBool, "true, false true"),
             Value::Bools(vec![true, false, true])
         );
         assert_eq!(ok(MFBool, ""), Value::Bools(vec![]));
@@ -875,18 +1053,26 @@ mod tests {
     }
 
     #[test]
-    fn unquoted_mfstring() {
+    fn unquoted_mfstring_is_an_error_read_as_one_string() {
+        let e = err(MFString, "texture.png");
         assert_eq!(
-            ok(MFString, "texture.png"),
-            Value::Strings(vec!["texture.png".into()])
+            e.message,
+            "`texture.png` is not in quotes: each string of an MFString is enclosed in double quotes"
         );
+        assert_eq!(e.fix.as_deref(), Some("\"texture.png\""));
         assert_eq!(
-            ok(MFString, "  Hello world \n"),
-            Value::Strings(vec!["Hello world".into()])
+            e.into_recovered(),
+            Some(Value::Strings(vec!["texture.png".into()]))
         );
-        assert!(mfstring_is_unquoted(" a.png "));
-        assert!(!mfstring_is_unquoted("\"a.png\""));
-        assert!(!mfstring_is_unquoted("  "));
+        let text = "  Hello world \n";
+        let e = err(MFString, text);
+        assert_eq!(pointed(text, &e), "Hello world");
+        assert_eq!(e.fix.as_deref(), Some("\"Hello world\""));
+        assert_eq!(
+            err(MFString, r"C:\a.png").fix.as_deref(),
+            Some(r#""C:\\a.png""#)
+        );
+        assert_eq!(ok(MFString, "  "), Value::Strings(vec![]));
     }
 
     #[test]

@@ -92,6 +92,8 @@ const V4: &[Version] = &[Version::V4_0, Version::V4_1];
 const V4_0: &[Version] = &[Version::V4_0];
 const V4_1: &[Version] = &[Version::V4_1];
 const ALL: &[Version] = &Version::X3D;
+const V3_2_ON: &[Version] = &[Version::V3_2, Version::V3_3, Version::V4_0, Version::V4_1];
+const V4_1_AND_3_X: &[Version] = &[Version::V3_2, Version::V3_3, Version::V4_1];
 
 const fn incl(value: f64) -> Option<Bound> {
     Some(Bound {
@@ -236,6 +238,14 @@ pub static FIELD_OVERRIDES: &[FieldOverride] = &[
         clause: "12.5 (Table 12.4)",
         why: "level 1 supports every Material field but the ones it lists as optional, and transparency is not among them; the UOM says Shape 2",
     },
+    FieldOverride {
+        versions: V3,
+        node: "FillProperties",
+        field: "hatchStyle",
+        change: Change::Min(incl(0.0)),
+        clause: "12.4.3",
+        why: "the 3.x tables give [0,∞), as the 4.x tables and UOMs do; the 3.x UOMs leave it unbounded",
+    },
     // ---- 11 Rendering ----
     FieldOverride {
         versions: V4_0,
@@ -329,13 +339,24 @@ pub static FIELD_OVERRIDES: &[FieldOverride] = &[
         clause: "17.4.4",
         why: "(0,π/2]: the UOM's 1.570796 is below π/2, so π/2 written in full (1.570796327) would fail in f32",
     },
+    // Defaults the tables print as multiples of π and the UOMs as shortened decimals: the
+    // generator writes the float nearest to the multiple (`Change::Default("π/4")`), so a
+    // rule that compares with a default compares with what the spec means.
     FieldOverride {
-        versions: V4_0,
+        versions: ALL,
         node: "SpotLight",
         field: "beamWidth",
-        change: Change::Default("0.785398"),
+        change: Change::Default("π/4"),
         clause: "17.4.4",
-        why: "the table gives π/4 (as the 3.x UOMs do); the 4.0 UOM says 0.589049",
+        why: "the table gives π/4; the 3.x UOMs say 0.7854, the 4.x UOMs 0.589049 (3π/16)",
+    },
+    FieldOverride {
+        versions: ALL,
+        node: "SpotLight",
+        field: "cutOffAngle",
+        change: Change::Default("π/2"),
+        clause: "17.4.4",
+        why: "the table gives π/2; the UOMs say 1.570796, another f32",
     },
     // ---- 18 Texturing ----
     FieldOverride {
@@ -345,6 +366,14 @@ pub static FIELD_OVERRIDES: &[FieldOverride] = &[
         change: Change::Max(incl(1.0)),
         clause: "18.4.9",
         why: "the table gives [0,1]; the UOM says [0,∞)",
+    },
+    FieldOverride {
+        versions: V4_1_AND_3_X,
+        node: "TextureProperties",
+        field: "borderWidth",
+        change: Change::Max(incl(1.0)),
+        clause: "18.4.9",
+        why: "the table of every version with TextureProperties (3.2 on) gives [0,1], as 4.0's (004_) does; the UOMs say [0,∞)",
     },
     FieldOverride {
         versions: ALL,
@@ -369,6 +398,79 @@ pub static FIELD_OVERRIDES: &[FieldOverride] = &[
         change: Change::Strict,
         clause: "18.4.3 Table 18.5",
         why: "the table lists the valid values of function; the UOM has the same values but marks them as suggestions",
+    },
+    // ---- Defaults printed as multiples of π in other clauses ----
+    FieldOverride {
+        versions: ALL,
+        node: "Viewpoint",
+        field: "fieldOfView",
+        change: Change::Default("π/4"),
+        clause: "23.4 Viewpoint",
+        why: "the table gives π/4; the UOMs say 0.7854, another f32",
+    },
+    FieldOverride {
+        versions: ALL,
+        node: "GeoViewpoint",
+        field: "fieldOfView",
+        change: Change::Default("π/4"),
+        clause: "25.4 GeoViewpoint",
+        why: "the table gives π/4; the UOMs say 0.7854, another f32",
+    },
+    FieldOverride {
+        versions: V4,
+        node: "TextureProjector",
+        field: "fieldOfView",
+        change: Change::Default("π/4"),
+        clause: "42.4 TextureProjector",
+        why: "the table gives π/4; the UOMs say 0.7854, another f32",
+    },
+    FieldOverride {
+        versions: ALL,
+        node: "Arc2D",
+        field: "endAngle",
+        change: Change::Default("π/2"),
+        clause: "14.4 Arc2D",
+        why: "the table gives π/2; the UOMs say 1.570796, another f32",
+    },
+    FieldOverride {
+        versions: ALL,
+        node: "ArcClose2D",
+        field: "endAngle",
+        change: Change::Default("π/2"),
+        clause: "14.4 ArcClose2D",
+        why: "the table gives π/2; the UOMs say 1.570796, another f32",
+    },
+    FieldOverride {
+        versions: ALL,
+        node: "CylinderSensor",
+        field: "diskAngle",
+        change: Change::Default("π/12"),
+        clause: "20.4 CylinderSensor",
+        why: "the table gives π/12; the UOMs say 0.26179167, another f32",
+    },
+    FieldOverride {
+        versions: V3_2_ON,
+        node: "ConeEmitter",
+        field: "angle",
+        change: Change::Default("π/4"),
+        clause: "40.4 ConeEmitter",
+        why: "the table gives π/4; the UOMs say 0.7854, another f32",
+    },
+    FieldOverride {
+        versions: V3_2_ON,
+        node: "SingleAxisHingeJoint",
+        field: "maxAngle",
+        change: Change::Default("π"),
+        clause: "37.4 SingleAxisHingeJoint",
+        why: "the table gives π; the UOMs say 3.141592653 (the same f32, written exactly)",
+    },
+    FieldOverride {
+        versions: V3_2_ON,
+        node: "DoubleAxisHingeJoint",
+        field: "maxAngle1",
+        change: Change::Default("π"),
+        clause: "37.4 DoubleAxisHingeJoint",
+        why: "the table gives π; the UOMs say 3.141592653 (the same f32, written exactly)",
     },
     // ---- 26 Humanoid animation ----
     FieldOverride {

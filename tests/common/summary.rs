@@ -124,10 +124,23 @@ impl Summary<'_> {
             .iter()
             .map(|c| (c.name.text.clone(), c.level.map(|l| l.0)))
             .collect();
+        let units: Vec<_> = doc
+            .head
+            .units
+            .iter()
+            .map(|u| {
+                let text = |n: &Option<x3dcheck::model::Named>| n.as_ref().map(|n| n.text.clone());
+                (
+                    text(&u.category),
+                    text(&u.name),
+                    u.conversion_factor.map(|(factor, _)| factor),
+                )
+            })
+            .collect();
         line(
             &mut s.lines,
             0,
-            format!("components {components:?} units {}", doc.head.units),
+            format!("components {components:?} units {units:?}"),
             None,
         );
         line(

@@ -17,6 +17,7 @@ use crate::diagnostic::Diagnostic;
 use crate::limits::{MAX_DEPTH, MAX_INPUT_BYTES};
 use crate::model::builder::{Limit, Parent};
 use crate::model::*;
+use crate::parse::number::parse_f64;
 use crate::parse::rules::{FIELD_VALUE_SYNTAX, VRML_MALFORMED};
 use crate::parse::{KeepValues, Parsed};
 use crate::schema::{AccessType, FieldType, Scalar, Version};
@@ -350,7 +351,15 @@ impl<'s> Reader<'s> {
                     );
                     self.recover_statement();
                 }
-                self.builder.doc_mut().head.units += 1;
+                let unit = UnitStatement {
+                    category: category.is(Kind::Id).then(|| named(&category)),
+                    name: name.is(Kind::Id).then(|| named(&name)),
+                    conversion_factor: factor
+                        .is(Kind::Number)
+                        .then(|| (parse_f64(factor.text.as_bytes()), factor.span())),
+                    span: Span::new(keyword.start, factor.end()),
+                };
+                self.builder.doc_mut().head.units.push(unit);
             }
             _ => {
                 let key = self.lexer.next();

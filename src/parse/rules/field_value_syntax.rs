@@ -8,6 +8,23 @@ crate::declare_rule! {
     /// quoting, a JSON string where a number belongs, or an attribute given to a node
     /// field. The diagnostic points at the offending token.
     ///
+    /// XML encoding, read strictly by 19776-1:
+    /// - MFString: each string is enclosed in double quotes (5.15). `family='SANS'` is an
+    ///   error; the help says how to write it (`family='"SANS"'`), and the value is kept as
+    ///   the one string browsers read, so later rules judge what is drawn.
+    /// - Commas (5.1.2: "within MF arrays, commas may only be used as whitespace between
+    ///   values of individual base datatypes"; EXAMPLE 2 calls `color="1, 1, 1, 0, 0, 0"`
+    ///   erroneous): a comma may stand only between the values of an MF field, that is after
+    ///   a whole element. So `1 2 3, 4 5 6` and `1 2 3,` are fine in an MFVec3f and `0, 1, 2`
+    ///   in an MFInt32 or MFFloat; `1, 2, 3` inside one SFVec3f of an MFVec3f, any comma in
+    ///   an SF field (`diffuseColor='1,0,0'`, `translation='1,2,3'`), a comma before the
+    ///   first value and a comma inside one image of an MFImage are errors. The comma is
+    ///   still read as whitespace, as browsers read it, and the value kept.
+    ///
+    /// JSON gives MF values as arrays, so the question does not arise there; the ClassicVRML
+    /// encoding (19776-2 5.1) treats every comma as white space, so none of these would be
+    /// an error there (x3dcheck does not read ClassicVRML).
+    ///
     /// ## Why it matters
     /// Browsers reject or truncate such values, each differently; the field silently
     /// keeps its default or loses its last elements.
@@ -16,10 +33,13 @@ crate::declare_rule! {
     /// ```xml
     /// <Material diffuseColor='1 0'/>
     /// <Shape visible='True'/>
+    /// <FontStyle family='SANS'/>
+    /// <Material diffuseColor='1,0,0'/>
     /// ```
     ///
     /// ## Clause
-    /// 19775-1 5 Field type reference; 19776-1 5 (XML encoding of field values).
+    /// 19775-1 5 Field type reference; 19776-1 5 (XML encoding of field values: 5.1.2
+    /// commas, 5.15 SFString and MFString).
     pub static FIELD_VALUE_SYNTAX = {
         severity: Error,
         level: Fast,

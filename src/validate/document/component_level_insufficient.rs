@@ -16,7 +16,11 @@ crate::declare_rule! {
     /// Shape 4 in 4.0 and Shape 3 in 4.1. One diagnostic per node type, at its first use,
     /// with the count.
     ///
-    /// Only node types are checked, not fields: the per-field levels of the X3D Unified
+    /// Statements are checked too, at the levels the X3D Unified Object Model gives them:
+    /// ProtoDeclare and ExternProtoDeclare need Core 2, IMPORT and EXPORT Networking 3
+    /// (Interchange provides Core 1 and Networking 1).
+    ///
+    /// Only node types and statements are checked, not fields: the per-field levels of the X3D Unified
     /// Object Model describe what a browser must support at a level, not what a scene
     /// must declare. A document without a profile is checked as Full (PROFILE_MISSING
     /// says so); an unknown profile is not checked (PROFILE_UNKNOWN).
@@ -76,6 +80,7 @@ fn check(ctx: &mut Ctx) {
             short.entry(def.name).or_insert((id, 0)).1 += 1;
         }
     }
+    statements(ctx, profile);
     let mut found: Vec<_> = short.into_iter().collect();
     found.sort_by_key(|(_, (id, _))| *id);
     for (name, (id, count)) in found {
@@ -142,4 +147,92 @@ fn provided_text(ctx: &Ctx, profile: &str, from_profile: u8, component: &str) ->
         });
     }
     parts.join(" and ")
+}
+
+/// Statements that need more than Core 1, with the component level the UOM gives them
+/// (`componentInfo` of each `Statement`; the Core support levels of 7.7 put prototypes at
+/// level 2, the Networking ones of 9.5 IMPORT/EXPORT at level 3).
+const STATEMENT_LEVELS: [(&str, &str, u8); 4] = [
+    ("ProtoDeclare", "Core", 2),
+    ("ExternProtoDeclare", "Core", 2),
+    ("IMPORT", "Networking", 3),
+    ("EXPORT", "Networking", 3),
+];
+
+/// One diagnostic per statement kind that needs more than the document provides, at its
+/// first use, with the count.
+fn statements(ctx: &mut Ctx, profile: &profiles::Profile) {
+    let doc = ctx.doc;
+    let source = ctx.source;
+    let declared = |component: &str| {
+        doc.head
+            .components
+            .iter()
+            .filter(|c| c.name.text == component)
+            .filter_map(|c| c.level.map(|(level, _)| level))
+            .max()
+            .unwrap_or(0)
+    };
+    let mut uses: Vec<(&str, crate::model::Span)> = doc
+        .protos
+        .iter()
+        .map(|p| {
+            let kind = if p.external {
+                "ExternProtoDeclare"
+            } else {
+                "ProtoDeclare"
+            };
+            (kind, p.span)
+        })
+        .collect();
+    for span in &doc.imports_exports {
+        let text = source.get(span.range()).unwrap_or_default();
+        let text = text
+            .strip_prefix(b"<")
+            .or_else(|| text.strip_prefix(b"\""))
+            .unwrap_or(text);
+        uses.push((
+            if text.starts_with(b"IMPORT") {
+                "IMPORT"
+            } else {
+                "EXPORT"
+            },
+            *span,
+        ));
+    }
+    uses.sort_by_key(|(_, span)| *span);
+    for (kind, component, level) in STATEMENT_LEVELS {
+        let mut found = uses.iter().filter(|(k, _)| *k == kind);
+        let Some(&(_, span)) = found.next() else {
+            continue;
+        };
+        let profile_level = profile.level(ctx.version, component);
+        if i32::from(profile_level).max(declared(component)) >= i32::from(level) {
+            continue;
+        }
+        let count = 1 + found.count();
+        let has = if profile_level == 0 {
+            format!("profile {} has no {component}", profile.name)
+        } else {
+            format!(
+                "profile {} provides {component} level {profile_level}",
+                profile.name
+            )
+        };
+        let times = if count > 1 {
+            format!(" ({count} statements)")
+        } else {
+            String::new()
+        };
+        let mut diagnostic = Diagnostic::new(
+            &COMPONENT_LEVEL_INSUFFICIENT,
+            span,
+            format!("the {kind} statement needs {component} level {level}, but {has}{times}"),
+        )
+        .help(format!(
+            "add <component name='{component}' level='{level}'/> to the head, or use a larger profile"
+        ));
+        diagnostic.count = count;
+        ctx.report(diagnostic);
+    }
 }

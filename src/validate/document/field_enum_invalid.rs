@@ -14,7 +14,9 @@ crate::declare_rule! {
     /// mode/source/function, PointProperties.colorMode, …). Each string of an MFString
     /// is checked on its own against every string the allowed values are made of (the
     /// UOM lists MFString values whole, as combinations such as `"MIDDLE" "BEGIN"`).
-    /// Values are case-sensitive, and a case slip gets a suggestion.
+    /// Values are case-sensitive, and a case slip gets a suggestion. The `category` of a
+    /// `unit` statement is checked the same way: angle, force, length or mass (7.2.5.5,
+    /// Table 4.2; the UOM's `unitCategoryChoices`).
     ///
     /// ## Why it matters
     /// Browsers fall back to the default for an unknown value, silently.
@@ -36,6 +38,7 @@ crate::declare_rule! {
 }
 
 fn check(ctx: &mut Ctx) {
+    unit_categories(ctx);
     for (id, node) in ctx.doc.iter() {
         for entry in &node.fields {
             let Some(def) = entry.schema_def() else {
@@ -91,4 +94,33 @@ fn allowed_values(def: &FieldDef) -> Vec<&'static str> {
         }
     }
     allowed
+}
+
+/// The base unit categories a `unit` statement may rescale (19775-1 7.2.5.5 and 4.3.6,
+/// Table 4.2; `unitCategoryChoices` in the UOM, a closed list).
+const UNIT_CATEGORIES: [&str; 4] = ["angle", "force", "length", "mass"];
+
+fn unit_categories(ctx: &mut Ctx) {
+    for unit in &ctx.doc.head.units {
+        let Some(category) = &unit.category else {
+            continue;
+        };
+        if UNIT_CATEGORIES.contains(&category.text.as_str()) {
+            continue;
+        }
+        let diagnostic = Diagnostic::new(
+            &FIELD_ENUM_INVALID,
+            category.span,
+            format!(
+                "unit.category: `{}` is not one of its values",
+                category.text
+            ),
+        )
+        .value(category.text.clone())
+        .help(
+            suggest::help(&category.text, UNIT_CATEGORIES)
+                .unwrap_or_else(|| format!("allowed: {}", UNIT_CATEGORIES.join(", "))),
+        );
+        ctx.report(diagnostic);
+    }
 }

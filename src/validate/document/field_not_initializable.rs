@@ -1,13 +1,16 @@
 //! FIELD_NOT_INITIALIZABLE: a value given for an inputOnly or outputOnly field.
 
-use crate::model::FieldRef;
+use crate::model::{FieldRef, NodeKind, Origin};
 use crate::report::Diagnostic;
+use crate::schema::AccessType;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
     /// ## What it does
     /// Reports a value (or child nodes) given in the document for a field whose access
-    /// type is `inputOnly` or `outputOnly`, such as `set_index` or `duration_changed`.
+    /// type is `inputOnly` or `outputOnly`, such as `set_index` or `duration_changed`;
+    /// also a ProtoInstance `fieldValue` for a prototype field that its ProtoDeclare or
+    /// ExternProtoDeclare declares `inputOnly` or `outputOnly` (`set_startpoint`).
     ///
     /// ## Why it matters
     /// Such fields are events: they only exist at run time, through ROUTEs and scripts.
@@ -32,6 +35,35 @@ crate::declare_rule! {
 fn check(ctx: &mut Ctx) {
     for (id, node) in ctx.doc.iter() {
         for entry in &node.fields {
+            if let (
+                NodeKind::ProtoInstance {
+                    name,
+                    proto: Some(proto),
+                },
+                Origin::FieldValue,
+            ) = (&node.kind, entry.origin)
+            {
+                let declared = ctx.doc.protos[*proto]
+                    .interface
+                    .iter()
+                    .find(|d| d.name.text == entry.name())
+                    .and_then(|d| d.access);
+                if let Some(access @ (AccessType::InputOnly | AccessType::OutputOnly)) = declared {
+                    ctx.report(
+                        Diagnostic::new(
+                            &FIELD_NOT_INITIALIZABLE,
+                            entry.name_span,
+                            format!(
+                                "prototype {name} declares field {} {}: a fieldValue cannot give it a value",
+                                entry.name(),
+                                access.as_str()
+                            ),
+                        )
+                        .node(id),
+                    );
+                }
+                continue;
+            }
             let FieldRef::Schema { def, .. } = entry.field else {
                 continue;
             };

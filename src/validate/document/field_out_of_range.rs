@@ -3,7 +3,7 @@
 use super::failures;
 use crate::model::{range_applies, FieldEntry, NodeId, Value};
 use crate::report::Diagnostic;
-use crate::schema::{in_range_f32, in_range_f64, range_text, FieldDef};
+use crate::schema::{in_range_f32, in_range_f64, range_text, FieldDef, FieldType};
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -23,6 +23,15 @@ crate::declare_rule! {
     /// outside [0,∞)). Text below half the smallest subnormal rounds to a zero (`1e-46`
     /// is outside (0,∞) in an SFFloat, inside it in an SFDouble). Geometry index fields
     /// (`coordIndex`, `index`, …) are INDEX_NEGATIVE's: it knows the -1 separator.
+    ///
+    /// `bboxSize` (every X3DBoundedObject, and every field of the UOM's `bboxSizeType`) is
+    /// "[0,∞) or −1 −1 −1" (10.2.2, 12.4.8): each component at least 0, or the whole
+    /// value exactly −1 −1 −1, which says "not given". So `0 0 0` and `-1 -1 -1` pass,
+    /// `-2 -2 -2` fails, and so does `-1 2 3`: the alternative is the one value, not a
+    /// bound per component (the UOM's pattern for the type says the same).
+    ///
+    /// The `conversionFactor` of a `unit` statement is (0,∞) (7.2.5.5: a positive factor;
+    /// the UOM's minExclusive 0).
     ///
     /// ## Why it matters
     /// Browsers clamp, wrap or reject out-of-range values, each differently, so the scene
@@ -45,11 +54,21 @@ crate::declare_rule! {
 }
 
 fn check(ctx: &mut Ctx) {
+    unit_factors(ctx);
     for (id, node) in ctx.doc.iter() {
         for entry in &node.fields {
             let Some(def) = entry.schema_def() else {
                 continue;
             };
+            if is_bbox_size(def) {
+                if let Value::Floats(v) = &entry.value {
+                    if let Some(first) = bbox_size_outside(v) {
+                        let range = BBOX_SIZE_RANGE;
+                        report(ctx, id, node.type_name(), entry, def, range, first, 1);
+                    }
+                }
+                continue;
+            }
             if !range_applies(node, def) {
                 continue;
             }
@@ -61,18 +80,65 @@ fn check(ctx: &mut Ctx) {
                 _ => continue,
             };
             if let Some((first, count)) = outside {
-                report(ctx, id, node.type_name(), entry, def, first, count);
+                let range = &range_text(def);
+                report(ctx, id, node.type_name(), entry, def, range, first, count);
             }
         }
     }
 }
 
+/// The range of `bboxSize` as the interface tables print it.
+const BBOX_SIZE_RANGE: &str = "[0,∞) or -1 -1 -1";
+
+/// Whether `def` is a bounding box size, of the UOM's `bboxSizeType` (every field so named).
+fn is_bbox_size(def: &FieldDef) -> bool {
+    def.name == "bboxSize" && def.ty == FieldType::SFVec3f
+}
+
+/// The first component of a bboxSize outside "[0,∞) or −1 −1 −1": None for `-1 -1 -1`
+/// exactly or three components ≥ 0. NaN is never in range.
+fn bbox_size_outside(v: &[f32]) -> Option<usize> {
+    if v == [-1.0, -1.0, -1.0] {
+        return None;
+    }
+    v.iter().position(|&x| x.is_nan() || x < 0.0)
+}
+
+/// A `unit` statement's conversionFactor must be positive: (0,∞).
+fn unit_factors(ctx: &mut Ctx) {
+    for unit in &ctx.doc.head.units {
+        let Some((Some(factor), span)) = unit.conversion_factor else {
+            continue;
+        };
+        if factor > 0.0 {
+            continue;
+        }
+        let text =
+            String::from_utf8_lossy(ctx.source.get(span.range()).unwrap_or_default()).into_owned();
+        let category = unit.category.as_ref().map_or("", |c| c.text.as_str());
+        ctx.report(
+            Diagnostic::new(
+                &FIELD_OUT_OF_RANGE,
+                span,
+                format!(
+                    "unit.conversionFactor = {} is outside (0,∞) in X3D {}: a factor converts the {category} base unit and must be positive",
+                    text.trim(),
+                    ctx.version
+                ),
+            )
+            .value(text),
+        );
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
 fn report(
     ctx: &mut Ctx,
     id: NodeId,
     type_name: &str,
     entry: &FieldEntry,
     def: &FieldDef,
+    range: &str,
     first: usize,
     count: usize,
 ) {
@@ -95,9 +161,8 @@ fn report(
         &FIELD_OUT_OF_RANGE,
         span,
         format!(
-            "{type_name}.{}{place} = {text} is outside {} in {}{more}",
+            "{type_name}.{}{place} = {text} is outside {range} in {}{more}",
             def.name,
-            range_text(def),
             ctx.version.name()
         ),
     )
@@ -106,4 +171,20 @@ fn report(
     .value(text);
     diagnostic.count = count;
     ctx.report(diagnostic);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bbox_size_is_non_negative_or_exactly_minus_one() {
+        assert_eq!(bbox_size_outside(&[-1.0, -1.0, -1.0]), None);
+        assert_eq!(bbox_size_outside(&[0.0, 0.0, 0.0]), None);
+        assert_eq!(bbox_size_outside(&[-0.0, 2.0, 1e30]), None);
+        assert_eq!(bbox_size_outside(&[-2.0, -2.0, -2.0]), Some(0));
+        assert_eq!(bbox_size_outside(&[-1.0, 2.0, 3.0]), Some(0));
+        assert_eq!(bbox_size_outside(&[1.0, -1.0, -1.0]), Some(1));
+        assert_eq!(bbox_size_outside(&[1.0, 1.0, f32::NAN]), Some(2));
+    }
 }

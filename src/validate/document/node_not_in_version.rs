@@ -10,7 +10,8 @@ crate::declare_rule! {
     /// Reports a node type that does not exist in the document's version but does in
     /// another, such as PhysicalMaterial or UnlitMaterial in a 3.3 scene, or an X3D node
     /// (TriangleSet, Switch's X3D siblings such as StaticGroup, any node X3D added) in a
-    /// VRML97 file (`#VRML V2.0 utf8`), whose 54 nodes are those of 14772-1 clause 6.
+    /// VRML97 file (`#VRML V2.0 utf8`), whose 54 nodes are those of 14772-1 clause 6; and a
+    /// `unit` statement in a version before 3.3, which introduced it (7.2.5.5).
     ///
     /// ## Why it matters
     /// A browser of the declared version does not know the node and skips it.
@@ -37,6 +38,7 @@ crate::declare_rule! {
 }
 
 fn check(ctx: &mut Ctx) {
+    units_before_3_3(ctx);
     for (id, node) in ctx.doc.iter() {
         if let NodeKind::Known { def, version } = node.kind {
             if version != ctx.version {
@@ -67,4 +69,27 @@ pub(crate) fn first_with(has: impl Fn(Version) -> bool) -> Version {
         .into_iter()
         .find(|&v| has(v))
         .unwrap_or(Version::LATEST)
+}
+
+/// The `unit` statement came with X3D 3.3 (19775-1 7.2.5.5: "UNIT statements may only be
+/// contained in X3D worlds created for X3D version 3.3 or later"; a browser shall fail on
+/// one in an earlier version). A statement is judged like a node here: NODE_UNKNOWN
+/// covers unknown statements too.
+fn units_before_3_3(ctx: &mut Ctx) {
+    if ctx.version >= Version::V3_3 {
+        return;
+    }
+    for unit in &ctx.doc.head.units {
+        ctx.report(
+            Diagnostic::new(
+                &NODE_NOT_IN_VERSION,
+                unit.span,
+                format!(
+                    "the unit statement is not in {}; X3D 3.3 introduced it",
+                    ctx.version.name()
+                ),
+            )
+            .help("declare version='3.3' or later, or remove the unit statement"),
+        );
+    }
 }

@@ -35,7 +35,7 @@ crate::declare_rule! {
 fn check(ctx: &mut Ctx) {
     let doc = ctx.doc;
     // UNIT statements rescale angles and lengths (not modelled here): judge nothing.
-    if doc.head.units > 0 {
+    if !doc.head.units.is_empty() {
         return;
     }
     for id in doc.nodes_of_type("SpotLight") {
