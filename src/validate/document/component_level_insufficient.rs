@@ -211,14 +211,7 @@ fn statements(ctx: &mut Ctx, profile: &profiles::Profile) {
             continue;
         }
         let count = 1 + found.count();
-        let has = if profile_level == 0 {
-            format!("profile {} has no {component}", profile.name)
-        } else {
-            format!(
-                "profile {} provides {component} level {profile_level}",
-                profile.name
-            )
-        };
+        let has = provided_text(ctx, profile.name, profile_level, component);
         let times = if count > 1 {
             format!(" ({count} statements)")
         } else {
