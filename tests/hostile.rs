@@ -661,7 +661,7 @@ fn render_keeps_the_findings_of_a_file_it_cannot_draw() {
         &[
             ("broken.x3d", "<X3D><Scene><Shape></Scene></X3D>"),
             ("broken.x3dj", "{\"X3D\": {"),
-            ("vrml.x3d", "#VRML V2.0 utf8\n"),
+            ("vrml.x3d", "#VRML V1.0 ascii\n"),
         ],
     );
     for (file, code) in [

@@ -152,7 +152,12 @@ fn xml_and_json_report_the_same_reader_findings() {
         let codes = |path: &Path| {
             let parsed = x3dcheck::parse::read(&std::fs::read(path).unwrap());
             let mut codes: BTreeMap<&'static str, usize> = BTreeMap::new();
-            for d in &parsed.diagnostics {
+            // XML-only spellings (an MFString element without quotes, 19776-1 5.15; a
+            // comma inside one value, 5.1.2) have no JSON form: JSON writes arrays.
+            let xml_only = |message: &str| {
+                message.contains("is not in quotes") || message.contains("a comma ")
+            };
+            for d in parsed.diagnostics.iter().filter(|d| !xml_only(&d.message)) {
                 *codes.entry(d.rule.code).or_default() += 1;
             }
             codes

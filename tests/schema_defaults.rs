@@ -55,7 +55,7 @@ fn defaults_printed_as_multiples_of_pi_are_exact() {
     let oracle = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/oracle");
     let mut checked = 0;
     let mut wrong = Vec::new();
-    for version in Version::ALL {
+    for version in Version::X3D {
         let path = oracle.join(format!("X3dUnifiedObjectModel-{version}.xml"));
         let text = fs::read_to_string(&path).unwrap();
         for node_chunk in text.split("<ConcreteNode ").skip(1) {

@@ -555,6 +555,11 @@ pub fn triangulate(points: &[[f64; 3]], normal: [f64; 3]) -> Vec<[u32; 3]> {
     if projected.iter().flatten().any(|c| !c.is_finite()) {
         return fan();
     }
+    // A convex face is the fan from its first corner, as browsers draw one (earcut may
+    // pick the other diagonal of a quad, which shades per-vertex colours differently).
+    if turns_left_everywhere(&projected) {
+        return fan();
+    }
     let mut indices: Vec<u32> = Vec::with_capacity(3 * (n - 2));
     earcut::Earcut::new().earcut(projected.iter().copied(), &[], &mut indices);
     let mut triangles: Vec<[u32; 3]> = indices
@@ -573,6 +578,16 @@ pub fn triangulate(points: &[[f64; 3]], normal: [f64; 3]) -> Vec<[u32; 3]> {
         }
     }
     triangles
+}
+
+/// Whether every corner of a polygon turns strictly left: the polygon is convex and
+/// counterclockwise.
+fn turns_left_everywhere(points: &[[f64; 2]]) -> bool {
+    let n = points.len();
+    (0..n).all(|i| {
+        let [a, b, c] = [points[i], points[(i + 1) % n], points[(i + 2) % n]];
+        (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]) > 0.0
+    })
 }
 
 #[cfg(test)]

@@ -233,7 +233,8 @@ fn file_report(file: File) -> Result<FileReport, ReadError> {
                 end_line: d.end_line,
                 end_column: d.end_column,
                 path: d.path.into_owned(),
-                clause: rule.clause,
+                // A finding on a node cites that node type's subclause.
+                clause: crate::schema::clauses::known_subclause(&d.clause).unwrap_or(rule.clause),
                 index: d.index,
                 indices: d.indices.into_owned(),
                 value: d.value.map(Cow::into_owned),

@@ -48,6 +48,16 @@ pub fn node_subclause(version: Version, node: &str) -> Option<&'static str> {
     SUBCLAUSES.get(&version)?.get(node).map(String::as_str)
 }
 
+/// `clause` as the table holds it, for a report read back (`x3dcheck merge`): the clause
+/// a finding on some node type cited.
+pub fn known_subclause(clause: &str) -> Option<&'static str> {
+    SUBCLAUSES
+        .values()
+        .flat_map(|table| table.values())
+        .find(|known| *known == clause)
+        .map(String::as_str)
+}
+
 /// Whether `clause` is a node subclause of a component of [`CHAPTERS`] (or that
 /// component's whole node reference, "11.4"): a rule citing one states what a node
 /// type's definition requires, so its finding on another node type cites that type's.
@@ -81,7 +91,7 @@ mod tests {
                 let is_heading = number.starts_with(prefix)
                     && number[prefix.len()..].parse::<u32>().is_ok()
                     && name.chars().next().is_some_and(char::is_uppercase)
-                    && words.next().is_none();
+                    && words.next().is_none_or(|w| w == "(deprecated)");
                 is_heading.then(|| (number.to_string(), name.to_string()))
             })
             .collect();

@@ -198,7 +198,7 @@ mod tests {
         assert!(
             found.contains(&pair(
                 "FIELD_NOT_IN_VERSION",
-                "Collision.collide is not in X3D 3.3; VRML97 has it"
+                "Collision.collide is not in X3D 3.3; it is in VRML97 only"
             )),
             "{found:?}"
         );
