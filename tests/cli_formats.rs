@@ -168,7 +168,7 @@ fn github_commands_are_exact() {
     let output = x3dcheck(&dir, &["--format", "github", "a,b:c.x3d", "clean.x3d"]);
     assert_eq!(output.status.code(), Some(1));
     let expected = [
-        "::notice file=a%2Cb%3Ac.x3d,line=4,col=25,endLine=4,endColumn=29,title=VALIDATION_INCOMPLETE::ProtoDeclare Ball: the body is checked as written, without the values its instances pass through IS [/X3D]",
+        "::notice file=a%2Cb%3Ac.x3d,line=4,col=25,endLine=4,endColumn=29,title=VALIDATION_INCOMPLETE::ProtoDeclare Ball: the body is checked as written, without the values its instances pass through IS [/X3D/Scene/ProtoDeclare[@name='Ball']/ProtoBody]",
         "::error file=a%2Cb%3Ac.x3d,line=8,col=50,endLine=8,endColumn=56,title=PROTO_FIELD_UNKNOWN::fieldValue `radios`: ProtoDeclare `Ball` declares no such field [/X3D/Scene/ProtoInstance[1]]%0Ahelp: did you mean `radius`?",
         "::error file=a%2Cb%3Ac.x3d,line=11,col=40,endLine=11,endColumn=55,title=ROUTE_FIELD_UNKNOWN::ROUTE fromField `fraction_changd`: TimeSensor has no such field [/X3D/Scene/TimeSensor[@DEF='Clock']]%0Ahelp: did you mean `fraction_changed`?",
         "::error file=a%2Cb%3Ac.x3d,line=12,col=82,endLine=12,endColumn=97,title=ROUTE_TYPE_MISMATCH::ROUTE connects `Clock.fraction_changed` (TimeSensor, SFFloat) to `Mover.set_translation` (Transform, SFVec3f): both ends need the same type [/X3D/Scene/Transform[@DEF='Mover']]",

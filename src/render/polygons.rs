@@ -555,10 +555,12 @@ pub fn triangulate(points: &[[f64; 3]], normal: [f64; 3]) -> Vec<[u32; 3]> {
     if projected.iter().flatten().any(|c| !c.is_finite()) {
         return fan();
     }
-    // A convex face is the fan from its first corner, as browsers draw one (earcut may
-    // pick the other diagonal of a quad, which shades per-vertex colours differently).
+    // A convex face is a fan around its last corner, the triangles the ear clipper this
+    // replaced made (earcut may pick the other diagonal of a quad, which shades
+    // per-vertex colours differently): in O(n), and the render references stand.
     if turns_left_everywhere(&projected) {
-        return fan();
+        let last = n as u32 - 1;
+        return (0..last - 1).map(|i| [last, i, i + 1]).collect();
     }
     let mut indices: Vec<u32> = Vec::with_capacity(3 * (n - 2));
     earcut::Earcut::new().earcut(projected.iter().copied(), &[], &mut indices);
