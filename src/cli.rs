@@ -303,7 +303,7 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
         statistics: args.statistics,
         // A summary of no file at all, when the inputs could not be read, would read
         // like a clean run.
-        summary: !args.quiet && !(failed && reports.is_empty()),
+        summary: !(args.quiet || failed && reports.is_empty()),
         shard: args.shard,
         output: args.output.as_deref(),
     };

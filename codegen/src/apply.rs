@@ -274,6 +274,35 @@ fn new_field(name: &str, new: &NewField) -> Field {
     }
 }
 
+/// A default as the interface table prints it, in XML encoding syntax. A multiple of π
+/// (`π/4`, `π`, `2π`) becomes the shortest text of the float nearest to it at the field's
+/// precision (`0.7853982` for an SFFloat, `0.7853981633974483` for an SFDouble), where the
+/// UOM prints a shortened decimal (`0.7854`) that rounds to another float.
+fn exact_default(default: &str, ty: crate::types::FieldType) -> String {
+    let Some(value) = pi_multiple(default) else {
+        return default.to_string();
+    };
+    match ty.scalar() {
+        crate::types::Scalar::Float => format!("{}", value as f32),
+        _ => format!("{value}"),
+    }
+}
+
+/// The value of `kπ/n` as written in the tables (`π`, `π/4`, `2π`, `3π/16`).
+fn pi_multiple(text: &str) -> Option<f64> {
+    let (numerator, denominator) = match text.split_once('/') {
+        Some((a, b)) => (a, b.parse::<f64>().ok()?),
+        None => (text, 1.0),
+    };
+    let k = numerator.strip_suffix('π')?;
+    let k = if k.is_empty() {
+        1.0
+    } else {
+        k.parse::<f64>().ok()?
+    };
+    Some(k * std::f64::consts::PI / denominator)
+}
+
 #[cfg(test)]
 mod tests {
     use std::collections::BTreeMap;
@@ -419,33 +448,4 @@ mod tests {
             .collect();
         assert_eq!(names, ["attenuation", "intensity"]);
     }
-}
-
-/// A default as the interface table prints it, in XML encoding syntax. A multiple of π
-/// (`π/4`, `π`, `2π`) becomes the shortest text of the float nearest to it at the field's
-/// precision (`0.7853982` for an SFFloat, `0.7853981633974483` for an SFDouble), where the
-/// UOM prints a shortened decimal (`0.7854`) that rounds to another float.
-fn exact_default(default: &str, ty: crate::types::FieldType) -> String {
-    let Some(value) = pi_multiple(default) else {
-        return default.to_string();
-    };
-    match ty.scalar() {
-        crate::types::Scalar::Float => format!("{}", value as f32),
-        _ => format!("{value}"),
-    }
-}
-
-/// The value of `kπ/n` as written in the tables (`π`, `π/4`, `2π`, `3π/16`).
-fn pi_multiple(text: &str) -> Option<f64> {
-    let (numerator, denominator) = match text.split_once('/') {
-        Some((a, b)) => (a, b.parse::<f64>().ok()?),
-        None => (text, 1.0),
-    };
-    let k = numerator.strip_suffix('π')?;
-    let k = if k.is_empty() {
-        1.0
-    } else {
-        k.parse::<f64>().ok()?
-    };
-    Some(k * std::f64::consts::PI / denominator)
 }

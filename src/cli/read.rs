@@ -131,6 +131,8 @@ fn stdout_is_runtime_null() -> bool {
     let read_write = flags != -1 && flags & libc::O_ACCMODE == libc::O_RDWR;
     let null = fs::metadata("/dev/null").ok();
     match (stat, null) {
+        // st_rdev is u64 on Linux but narrower on some other unixes.
+        #[allow(clippy::unnecessary_cast)]
         (Some(stat), Some(null)) => {
             read_write
                 && stat.st_mode & libc::S_IFMT == libc::S_IFCHR
