@@ -20,6 +20,7 @@ pub mod profile_missing;
 pub mod profile_unknown;
 pub mod root_content_ignored;
 pub mod sfnode_multiple;
+pub mod unit_category_duplicate;
 pub mod validation_incomplete;
 pub mod x3d_version_missing;
 pub mod x3d_version_unknown;
@@ -60,6 +61,7 @@ pub static RULES: &[&Check] = &[
     &component_level_insufficient::CHECK,
     &validation_incomplete::CHECK,
     &root_content_ignored::CHECK,
+    &unit_category_duplicate::CHECK,
     &Check::reported(&crate::parse::rules::GZIP_CORRUPT),
     &Check::reported(&crate::parse::rules::XML_ENCODING_UNSUPPORTED),
 ];

@@ -1,9 +1,11 @@
 //! Events and prototypes, RULES.md §6: ROUTE ends (node, field, access type, field type)
-//! and the names prototype statements use. All at the standard level.
+//! and the names prototype statements use, at the standard level; empty prototype bodies,
+//! at the fast level.
 
 use super::Check;
 
 mod endpoint;
+pub mod proto_body_empty;
 pub mod proto_field_unknown;
 pub mod route_field_unknown;
 pub mod route_node_undefined;
@@ -15,4 +17,5 @@ pub static RULES: &[&Check] = &[
     &route_field_unknown::CHECK,
     &route_type_mismatch::CHECK,
     &proto_field_unknown::CHECK,
+    &proto_body_empty::CHECK,
 ];
