@@ -26,6 +26,22 @@ pub const MAX_JSON_NESTING: usize = 10_000;
 /// bytes of model, and rules walk them all.
 pub const MAX_NODES: usize = 1_000_000;
 
+/// Nodes that instantiating prototypes may add to a document. An instance copies only
+/// the body nodes that take a value through IS and the nodes above them (the rest is
+/// shared), and instances with identical values share one copy, so real scenes need
+/// few: the most in the shared corpus is in the README ("Prototypes"). A prototype
+/// "billion laughs" (bodies of ten instances of the previous prototype, each passing its
+/// own values) stops here, reported, in a fraction of a second.
+pub const MAX_INSTANCE_NODES: usize = 100_000;
+
+/// Field values (numbers, strings, nodes) those copies may hold: a copied node keeps its
+/// own fields, so a body IndexedFaceSet of a million indices with one IS field would
+/// otherwise cost 4 MB per distinct instance.
+pub const MAX_INSTANCE_VALUES: usize = 1 << 24;
+
+/// Prototype instances nested in prototype bodies that are instantiated, outermost 1.
+pub const MAX_PROTO_NESTING: usize = 32;
+
 /// Fields and attributes on one node or element (60 times the most a real scene sets).
 /// Field lookups and XML's duplicate-attribute check are linear per element, so this
 /// also bounds the time a single element can take.

@@ -50,6 +50,8 @@ pub enum Limit {
     Diagnostics,
     /// Found by the XML reader: entities declared in the DOCTYPE expand too far.
     EntityExpansion,
+    /// Instantiating prototypes copies too much or nests too deep.
+    Instances,
 }
 
 impl Builder {
@@ -221,6 +223,8 @@ impl Builder {
             source_code: None,
             height: 0,
             instances: 1,
+            copy_of: None,
+            instantiation: None,
         });
         self.open.push(id);
         Some(id)
@@ -281,6 +285,8 @@ impl Builder {
                     _ => &mut [],
                 }
             }
+            // Only instantiation makes such nodes, after every node is closed.
+            Place::Instance { .. } => &mut [],
         };
         if let Some(child) = siblings
             .iter_mut()
@@ -552,7 +558,9 @@ impl Builder {
         &self.open
     }
 
-    pub fn finish(self) -> (Document, Vec<Diagnostic>) {
+    /// The document, with its prototype instances instantiated, and the findings.
+    pub fn finish(mut self) -> (Document, Vec<Diagnostic>) {
+        super::instantiate::instantiate_all(&mut self);
         (self.doc, self.diagnostics)
     }
 }

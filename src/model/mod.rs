@@ -8,6 +8,7 @@ pub mod builder;
 pub mod faces;
 mod fields;
 mod header;
+mod instantiate;
 pub mod rules;
 pub mod texture_mapping;
 mod value;
@@ -68,6 +69,9 @@ pub enum Place {
     ProtoBody { proto: usize },
     ProtoField { proto: usize, field: u32 },
     Field { parent: NodeId, entry: u32 },
+    /// A top-level node of a ProtoBody as one ProtoInstance builds it (a copy that holds
+    /// the instance's values).
+    Instance { instance: NodeId },
 }
 
 /// The DEF name scope a node lives in: the scene, or one ProtoBody (19775-1 4.4.7).
@@ -101,6 +105,34 @@ pub struct Node {
     /// included (saturating). DEF/USE can make this exponential in the file size, so
     /// whatever visits instances (bounds, the renderer) checks it first.
     pub instances: u64,
+    /// For a node made by instantiating a prototype: which body node it copies, for which
+    /// ProtoInstance (see [`Instantiation`]).
+    pub copy_of: Option<Copied>,
+    /// For a ProtoInstance of a ProtoDeclare: its index in [`Document::instantiations`].
+    pub instantiation: Option<u32>,
+}
+
+/// A ProtoBody node copied for an instance, so that its fields hold the instance's values.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct Copied {
+    pub original: NodeId,
+    /// The first ProtoInstance built with these values.
+    pub instance: NodeId,
+}
+
+/// What the ProtoInstances of one ProtoDeclare with the same values build (19775-1
+/// 4.4.4): the body's top-level nodes, where each node that takes a value through `IS`
+/// (or holds such a node) is a copy with that value, and every other node is the body's
+/// own, shared as `USE` shares.
+#[derive(Clone, Debug)]
+pub struct Instantiation {
+    pub proto: usize,
+    /// The body's top-level nodes; the first is the node the instance stands for.
+    pub roots: Vec<ChildRef>,
+    /// The first ProtoInstance built with these values.
+    pub instance: NodeId,
+    /// How many ProtoInstance nodes share it (identical values build once).
+    pub count: u64,
 }
 
 impl Node {
@@ -164,6 +196,9 @@ pub enum Origin {
     FieldValue,
     /// A JSON member (`@name` or `-name`), or a ClassicVRML field named in a node's body.
     Member,
+    /// In a prototype's instantiation: the value an `IS` passes in (the instance's
+    /// fieldValue or the interface default). The entry's spans are the IS/connect's.
+    Is,
 }
 
 /// Which field an entry sets.
@@ -179,6 +214,17 @@ pub enum FieldRef {
     Declared { name: String, ty: Option<FieldType> },
     /// A name the node's type does not have in any version.
     Unknown { name: String },
+}
+
+impl FieldRef {
+    /// The field's type, where it is known.
+    pub fn field_type(&self) -> Option<FieldType> {
+        match self {
+            FieldRef::Schema { def, .. } => Some(def.ty),
+            FieldRef::Declared { ty, .. } => *ty,
+            FieldRef::Unknown { .. } => None,
+        }
+    }
 }
 
 #[derive(Clone, Debug)]
@@ -208,11 +254,7 @@ impl FieldEntry {
     }
 
     pub fn field_type(&self) -> Option<FieldType> {
-        match &self.field {
-            FieldRef::Schema { def, .. } => Some(def.ty),
-            FieldRef::Declared { ty, .. } => *ty,
-            FieldRef::Unknown { .. } => None,
-        }
+        self.field.field_type()
     }
 }
 
@@ -305,6 +347,11 @@ pub struct Document {
     pub ignored: Vec<IgnoredContent>,
     /// DEF names per scope, each with the first node that took it.
     pub defs: HashMap<(Scope, String), NodeId>,
+    /// The nodes the document writes: `nodes[..written]`, in the order their elements
+    /// start. The nodes after them are copies made by instantiating prototypes.
+    pub written: usize,
+    /// The prototype instantiations, shared by ProtoInstances with identical values.
+    pub instantiations: Vec<Instantiation>,
 }
 
 impl Document {
@@ -324,7 +371,34 @@ impl Document {
             imports_exports: Vec::new(),
             ignored: Vec::new(),
             defs: HashMap::new(),
+            written: 0,
+            instantiations: Vec::new(),
         }
+    }
+
+    /// The nodes the document writes, without the copies instantiation made.
+    pub fn written_nodes(&self) -> &[Node] {
+        &self.nodes[..self.written.min(self.nodes.len())]
+    }
+
+    /// The instantiation a ProtoInstance builds, if it was built.
+    pub fn instantiation_of(&self, id: NodeId) -> Option<&Instantiation> {
+        let index = self.node(id).instantiation?;
+        self.instantiations.get(index as usize)
+    }
+
+    /// The node a reference stands for: itself, or for a ProtoInstance the first node
+    /// its instantiation builds (through nested instances). None for an instance that
+    /// builds nothing (an external or unknown prototype, an empty body, a limit).
+    pub fn built(&self, id: NodeId) -> Option<NodeId> {
+        let mut current = id;
+        for _ in 0..=crate::limits::MAX_PROTO_NESTING {
+            if !matches!(self.node(current).kind, NodeKind::ProtoInstance { .. }) {
+                return Some(current);
+            }
+            current = self.instantiation_of(current)?.roots.first()?.node;
+        }
+        None
     }
 
     /// The version whose schema applies: the document's, or the latest when it names none.

@@ -71,8 +71,9 @@ pub fn rotation_of([x, y, z, angle]: [f32; 4]) -> glam::DQuat {
     }
 }
 
+/// The first node of an SFNode field; for a ProtoInstance, the node it builds.
 pub fn child(doc: &Document, node: NodeId, name: &str) -> Option<NodeId> {
-    doc.child_of(node, name)
+    doc.child_of(node, name).map(|c| doc.built(c).unwrap_or(c))
 }
 
 pub fn type_is(doc: &Document, node: NodeId, name: &str) -> bool {

@@ -8,7 +8,9 @@
 //! - nothing in an SF field.
 //!
 //! Nodes in a ProtoBody start at `/X3D/Scene/ProtoDeclare[@name='P']/ProtoBody`; initial
-//! values of a ProtoInterface field at `…/ProtoInterface/field[@name='f']`. The walk follows
+//! values of a ProtoInterface field at `…/ProtoInterface/field[@name='f']`. A body node
+//! as an instance builds it (a copy holding the instance's values) is under the instance:
+//! `/X3D/Scene/ProtoInstance[2]/Shape/Appearance/Material`. The walk follows
 //! `Node::place` upward, done only for reported diagnostics. Positions among siblings are
 //! counted for the whole document in one pass, the first time one is needed, so that many
 //! diagnostics on the nodes of one long list cost O(nodes), not O(nodes × siblings).
@@ -78,7 +80,10 @@ fn node_at(doc: &Document, span: Span) -> Option<NodeId> {
         let outer = doc.node(id).span;
         outer.start <= span.start && span.end <= outer.end
     };
-    let started = doc.nodes.partition_point(|n| n.span.start <= span.start);
+    // Only the written nodes are in document order (instantiation's copies follow them).
+    let started = doc
+        .written_nodes()
+        .partition_point(|n| n.span.start <= span.start);
     let mut current = NodeId(started.checked_sub(1)? as u32);
     // Bounded by the depth of the tree; the count guards a model that is not a tree.
     for _ in 0..=doc.nodes.len() {
@@ -105,6 +110,7 @@ fn positions(doc: &Document) -> Vec<u32> {
             let values = interface.filter_map(|f| f.value.as_ref().and_then(|(v, _)| v.as_nodes()));
             values.chain(std::iter::once(&p.body[..]))
         }))
+        .chain(doc.instantiations.iter().map(|i| &i.roots[..]))
         .chain(std::iter::once(&doc.scene[..]));
     for siblings in lists {
         let mut seen: HashMap<&str, u32> = HashMap::new();
@@ -161,6 +167,11 @@ fn node_path(doc: &Document, id: NodeId, position: impl Fn(NodeId) -> u32) -> St
                     proto_declare(doc, proto),
                     quote(name)
                 );
+            }
+            Place::Instance { instance } => {
+                let roots = doc.instantiation_of(instance).map_or(&[][..], |i| &i.roots[..]);
+                steps.push(step(doc, current, roots.len() > 1, &position));
+                current = instance;
             }
             Place::Field { parent, entry } => {
                 let entry = doc

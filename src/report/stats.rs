@@ -45,7 +45,7 @@ pub struct Stats {
 impl Stats {
     pub fn of(doc: &Document) -> Stats {
         let mut stats = Stats {
-            nodes: doc.nodes.len(),
+            nodes: doc.written_nodes().len(),
             routes: doc.routes.len(),
             uses: uses(&doc.scene),
             ..Stats::default()
@@ -58,7 +58,8 @@ impl Stats {
                 .map(|f| declared_uses(&f.value))
                 .sum::<usize>();
         }
-        for node in &doc.nodes {
+        // The nodes as written: the copies prototype instances build are not counted.
+        for node in doc.written_nodes() {
             *stats
                 .node_types
                 .entry(node.type_name().to_string())

@@ -4,6 +4,7 @@
 
 pub mod document;
 pub mod events;
+mod instances;
 pub mod lighting;
 pub mod numbers;
 mod registry;
@@ -21,7 +22,7 @@ use crate::model::rules::LIMIT_EXCEEDED;
 use std::collections::HashMap;
 
 use crate::diagnostic::Diagnostic;
-use crate::model::{Document, FieldEntry, NodeId, Span};
+use crate::model::{Document, FieldEntry, NodeId, Span, Value};
 use crate::schema::Version;
 
 /// A rule of the registry with its check function; `run` is None for the rules the
@@ -143,11 +144,33 @@ impl Ctx<'_> {
                 );
             }
         }
-        self.diagnostics
+        instances::fold(self.doc, self.diagnostics)
     }
+    /// The place of the `k`-th number of a field's value and its text as written; for a
+    /// value passed in through IS, the place of the IS/connect and the number as read.
+    pub fn scalar_text(&self, entry: &FieldEntry, k: usize) -> (Span, String) {
+        let span = self.scalar_span(entry, k);
+        if entry.origin == crate::model::Origin::Is {
+            let text = match &entry.value {
+                Value::Floats(v) => v.get(k).map(f32::to_string),
+                Value::Doubles(v) => v.get(k).map(f64::to_string),
+                Value::Int32s(v) => v.get(k).map(i32::to_string),
+                Value::Bools(v) => v.get(k).map(|b| if *b { "true" } else { "false" }.to_string()),
+                _ => None,
+            };
+            return (span, text.unwrap_or_default());
+        }
+        let text = self.source.get(span.range()).unwrap_or_default();
+        (span, String::from_utf8_lossy(text).into_owned())
+    }
+
     /// The place of the `k`-th number of a field's value (XML attribute text or JSON array),
     /// or the whole value when it cannot be told.
     pub fn scalar_span(&self, entry: &FieldEntry, k: usize) -> Span {
+        // A value passed in through IS is placed at the IS/connect, which holds no numbers.
+        if entry.origin == crate::model::Origin::Is {
+            return entry.span;
+        }
         let range = entry.span.range();
         let Some(text) = self.source.get(range.clone()) else {
             return entry.span;

@@ -213,6 +213,12 @@ impl Walker<'_> {
         depth: usize,
     ) {
         let mut scope = scope.clone();
+        // A prototype instance stands for the first node of its body, with its values.
+        let children: Vec<NodeId> = children
+            .iter()
+            .map(|&id| context.doc.built(id).unwrap_or(id))
+            .collect();
+        let children = &children[..];
         for &id in children {
             let node = context.doc.node(id);
             if node.is_a("X3DLightNode") {
@@ -277,7 +283,12 @@ impl Walker<'_> {
         let node = doc.node(id);
         let Some(def) = node.def() else {
             if matches!(node.kind, crate::model::NodeKind::ProtoInstance { .. }) {
-                self.note(context, id, "prototype instances are not drawn".into());
+                self.note(
+                    context,
+                    id,
+                    "a prototype instance whose body is not known (external or undeclared) is not drawn"
+                        .into(),
+                );
             }
             return;
         };

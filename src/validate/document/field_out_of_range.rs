@@ -142,9 +142,7 @@ fn report(
     first: usize,
     count: usize,
 ) {
-    let span = ctx.scalar_span(entry, first);
-    let text =
-        String::from_utf8_lossy(ctx.source.get(span.range()).unwrap_or_default()).into_owned();
+    let (span, text) = ctx.scalar_text(entry, first);
     let arity = def.ty.arity();
     let place = match (def.ty.is_mf(), arity) {
         (true, 1) => format!("[{first}]"),

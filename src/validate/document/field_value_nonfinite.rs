@@ -44,11 +44,7 @@ fn check(ctx: &mut Ctx) {
             let Some((first, count)) = failures else {
                 continue;
             };
-            let text = ctx
-                .source
-                .get(ctx.scalar_span(entry, first).range())
-                .unwrap_or_default();
-            let text = String::from_utf8_lossy(text).into_owned();
+            let (_, text) = ctx.scalar_text(entry, first);
             let more = if count > 1 {
                 format!(" ({count} values in all)")
             } else {

@@ -7,9 +7,19 @@ use crate::validate::Ctx;
 crate::declare_rule! {
     /// ## What it does
     /// Says which parts of a scene were not checked, so that a partial check never reads
-    /// as "valid": Script code; shader source; prototypes (ProtoDeclare bodies are
-    /// checked as written, without substituting the values passed through `IS`;
-    /// ExternProtoDeclare bodies live in other files); IMPORT/EXPORT; Inline scenes.
+    /// as "valid": Script code; shader source; prototypes the document declares but never
+    /// instantiates (their bodies are checked as written, with no values passed through
+    /// `IS`); ExternProtoDeclare bodies, which live in other files; IMPORT/EXPORT; Inline
+    /// scenes.
+    ///
+    /// Each ProtoInstance of a ProtoDeclare is instantiated (19775-1 4.4.4) and every rule
+    /// checks the nodes it builds with the values it passes, so a prototype with an
+    /// instance is checked whole and gets no note here. A prototype with no instance in
+    /// the document builds nothing in this scene (4.4.4: the body is not part of the
+    /// transformation hierarchy; only instances are); but such a document is most often
+    /// a prototype library that other scenes instantiate through ExternProtoDeclare with
+    /// values x3dcheck does not see here, so the note stays: what its IS fields hold is
+    /// not checked.
     ///
     /// ## Why it matters
     /// A clean report should mean the whole scene is right. Where x3dcheck cannot look,
@@ -34,7 +44,8 @@ crate::declare_rule! {
 
 fn check(ctx: &mut Ctx) {
     let mut found: Vec<(Span, Option<crate::model::NodeId>, String)> = Vec::new();
-    for (id, node) in ctx.doc.iter() {
+    // The nodes as written: a copy made for a prototype instance is the same Script.
+    for (id, node) in ctx.doc.iter().take(ctx.doc.written) {
         let what = if node.is_a("Script") {
             "Script code is not checked"
         } else if node.is_a("X3DShaderNode")
@@ -53,7 +64,14 @@ fn check(ctx: &mut Ctx) {
             format!("{}: {what}", node.type_name()),
         ));
     }
-    for proto in &ctx.doc.protos {
+    let mut instantiated = vec![false; ctx.doc.protos.len()];
+    for instantiation in &ctx.doc.instantiations {
+        instantiated[instantiation.proto] = true;
+    }
+    for (index, proto) in ctx.doc.protos.iter().enumerate() {
+        if instantiated[index] {
+            continue;
+        }
         let what = if proto.external {
             format!(
                 "ExternProtoDeclare {}: its body is in another file and is not checked",
@@ -61,7 +79,7 @@ fn check(ctx: &mut Ctx) {
             )
         } else {
             format!(
-                "ProtoDeclare {}: the body is checked as written, without the values its instances pass through IS",
+                "ProtoDeclare {}: no instance in this document, so the body is checked as written, without values passed through IS",
                 proto.name.text
             )
         };
