@@ -8,7 +8,7 @@
 //! are identical (same prototype, same fieldValues or defaults) share one instantiation,
 //! so 100,000 identical instances cost one copy. A body ProtoInstance that a copy holds is
 //! instantiated in turn with the values the copy gives it. The copies are appended to the
-//! arena after the written nodes (`Document::written`), each with [`Copied`] naming the
+//! arena after the written nodes (`Document::copies` counts them), each with [`Copied`] naming the
 //! body node it copies and the instance it was made for; their top-level nodes are placed
 //! in the instance ([`Place::Instance`]), so a finding in one has the instance in its path.
 //! Copies keep the body node's spans and DEF names: each instance is its own DEF name scope.
@@ -26,7 +26,6 @@ use crate::limits::{MAX_INSTANCE_NODES, MAX_INSTANCE_VALUES, MAX_PROTO_NESTING};
 /// Instantiates every ProtoInstance of a ProtoDeclare the document holds.
 pub(super) fn instantiate_all(builder: &mut Builder) {
     let written = builder.doc().nodes.len();
-    builder.doc_mut().written = written;
     let doc = builder.doc();
     let mut instanced = vec![false; doc.protos.len()];
     for node in &doc.nodes {
@@ -60,6 +59,8 @@ pub(super) fn instantiate_all(builder: &mut Builder) {
         }
         state.instantiate(builder, id, 0);
     }
+    let doc = builder.doc_mut();
+    doc.copies = doc.nodes.len() - written;
 }
 
 struct State {
@@ -284,9 +285,12 @@ impl Copier<'_> {
             .position(|f| f.name.text == connect.proto_field.text)?;
         let value = self.values[at].as_ref()?;
         let field = builder.field_ref(original, &connect.node_field.text);
+        // A field the document's version lacks is the connect's own problem (IS_FIELD_UNKNOWN),
+        // not one to report again in every instance.
         let initializable = match &field {
-            FieldRef::Schema { def, .. } => {
-                matches!(def.access, AccessType::InitializeOnly | AccessType::InputOutput)
+            FieldRef::Schema { def, version } => {
+                *version == doc.schema_version()
+                    && matches!(def.access, AccessType::InitializeOnly | AccessType::InputOutput)
             }
             FieldRef::Declared { .. } => true,
             FieldRef::Unknown { .. } => false,

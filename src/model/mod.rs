@@ -347,9 +347,9 @@ pub struct Document {
     pub ignored: Vec<IgnoredContent>,
     /// DEF names per scope, each with the first node that took it.
     pub defs: HashMap<(Scope, String), NodeId>,
-    /// The nodes the document writes: `nodes[..written]`, in the order their elements
-    /// start. The nodes after them are copies made by instantiating prototypes.
-    pub written: usize,
+    /// How many of the last nodes are copies made by instantiating prototypes; the nodes
+    /// before them are those the document writes, in the order their elements start.
+    pub copies: usize,
     /// The prototype instantiations, shared by ProtoInstances with identical values.
     pub instantiations: Vec<Instantiation>,
 }
@@ -371,14 +371,14 @@ impl Document {
             imports_exports: Vec::new(),
             ignored: Vec::new(),
             defs: HashMap::new(),
-            written: 0,
+            copies: 0,
             instantiations: Vec::new(),
         }
     }
 
     /// The nodes the document writes, without the copies instantiation made.
     pub fn written_nodes(&self) -> &[Node] {
-        &self.nodes[..self.written.min(self.nodes.len())]
+        &self.nodes[..self.nodes.len().saturating_sub(self.copies)]
     }
 
     /// The instantiation a ProtoInstance builds, if it was built.

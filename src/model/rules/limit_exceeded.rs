@@ -21,6 +21,9 @@ crate::declare_rule! {
     /// | bytes expanded from entities declared in the DOCTYPE | 1 MiB per document |
     /// | entity references nested in entities | 16 (a recursive entity ends here) |
     /// | image size (deep checks, renderer), from the header, before decoding | 16,384 pixels a side, 1 GiB decoded |
+    /// | nodes copied by instantiating prototypes (identical instances share a copy) | 1,000,000 |
+    /// | field values those copies hold | 16,777,216 (2^24) |
+    /// | prototype instances nested in instantiated bodies | 32 levels |
     ///
     /// ## Why it matters
     /// Real scenes nest a few dozen levels, hold a few thousand nodes and declare no
@@ -37,6 +40,9 @@ crate::declare_rule! {
     /// … <WorldInfo title="&i;"/>  <!-- 3 GB of "lol" -->
     ///
     /// <ImageTexture url='"bomb.png"'/>  <!-- a 100 kB PNG claiming 100000×100000 -->
+    ///
+    /// <!-- P1's body: ten P0 instances, each passing P1's values on and adding its own;
+    ///      P2's body ten P1 … : 10^8 distinct instantiations of P0 -->
     /// ```
     ///
     /// ## Clause

@@ -45,7 +45,7 @@ crate::declare_rule! {
 fn check(ctx: &mut Ctx) {
     let mut found: Vec<(Span, Option<crate::model::NodeId>, String)> = Vec::new();
     // The nodes as written: a copy made for a prototype instance is the same Script.
-    for (id, node) in ctx.doc.iter().take(ctx.doc.written) {
+    for (id, node) in ctx.doc.iter().take(ctx.doc.written_nodes().len()) {
         let what = if node.is_a("Script") {
             "Script code is not checked"
         } else if node.is_a("X3DShaderNode")
