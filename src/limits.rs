@@ -32,7 +32,7 @@ pub const MAX_NODES: usize = 1_000_000;
 /// few: the most in the shared corpus is in the README ("Prototypes"). A prototype
 /// "billion laughs" (bodies of ten instances of the previous prototype, each passing its
 /// own values) stops here, reported, in a fraction of a second.
-pub const MAX_INSTANCE_NODES: usize = 1_000_000;
+pub const MAX_INSTANCE_NODES: usize = 100_000;
 
 /// Field values (numbers, strings, nodes) those copies may hold: a copied node keeps its
 /// own fields, so a body IndexedFaceSet of a million indices with one IS field would

@@ -21,7 +21,7 @@ crate::declare_rule! {
     /// | bytes expanded from entities declared in the DOCTYPE | 1 MiB per document |
     /// | entity references nested in entities | 16 (a recursive entity ends here) |
     /// | image size (deep checks, renderer), from the header, before decoding | 16,384 pixels a side, 1 GiB decoded |
-    /// | nodes copied by instantiating prototypes (identical instances share a copy) | 1,000,000 |
+    /// | nodes copied by instantiating prototypes (identical instances share a copy) | 100,000 |
     /// | field values those copies hold | 16,777,216 (2^24) |
     /// | prototype instances nested in instantiated bodies | 32 levels |
     ///
