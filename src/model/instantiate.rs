@@ -218,7 +218,11 @@ impl Copier<'_> {
             let message = format!(
                 "instantiating prototypes copies more than {MAX_INSTANCE_NODES} nodes or {MAX_INSTANCE_VALUES} values; the rest are checked as written"
             );
-            builder.exceeded(Limit::Instances, builder.doc().node(self.instance).name_span, message);
+            builder.exceeded(
+                Limit::Instances,
+                builder.doc().node(self.instance).name_span,
+                message,
+            );
             return child;
         }
         state.nodes += 1;
@@ -290,7 +294,10 @@ impl Copier<'_> {
         let initializable = match &field {
             FieldRef::Schema { def, version } => {
                 *version == doc.schema_version()
-                    && matches!(def.access, AccessType::InitializeOnly | AccessType::InputOutput)
+                    && matches!(
+                        def.access,
+                        AccessType::InitializeOnly | AccessType::InputOutput
+                    )
             }
             FieldRef::Declared { .. } => true,
             FieldRef::Unknown { .. } => false,

@@ -66,12 +66,22 @@ pub enum NodeKind {
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub enum Place {
     Scene,
-    ProtoBody { proto: usize },
-    ProtoField { proto: usize, field: u32 },
-    Field { parent: NodeId, entry: u32 },
+    ProtoBody {
+        proto: usize,
+    },
+    ProtoField {
+        proto: usize,
+        field: u32,
+    },
+    Field {
+        parent: NodeId,
+        entry: u32,
+    },
     /// A top-level node of a ProtoBody as one ProtoInstance builds it (a copy that holds
     /// the instance's values).
-    Instance { instance: NodeId },
+    Instance {
+        instance: NodeId,
+    },
 }
 
 /// The DEF name scope a node lives in: the scene, or one ProtoBody (19775-1 4.4.7).

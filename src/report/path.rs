@@ -169,7 +169,9 @@ fn node_path(doc: &Document, id: NodeId, position: impl Fn(NodeId) -> u32) -> St
                 );
             }
             Place::Instance { instance } => {
-                let roots = doc.instantiation_of(instance).map_or(&[][..], |i| &i.roots[..]);
+                let roots = doc
+                    .instantiation_of(instance)
+                    .map_or(&[][..], |i| &i.roots[..]);
                 steps.push(step(doc, current, roots.len() > 1, &position));
                 current = instance;
             }

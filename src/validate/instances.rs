@@ -71,7 +71,10 @@ pub fn fold(doc: &Document, diagnostics: Vec<Diagnostic>) -> Vec<Diagnostic> {
             if let Some(instance) = k.instance {
                 if k.instances > 1 {
                     d.message = format!("{} (in {} prototype instances)", d.message, k.instances);
-                    d.count = d.count.max(1).saturating_mul(k.instances.min(usize::MAX as u64) as usize);
+                    d.count = d
+                        .count
+                        .max(1)
+                        .saturating_mul(k.instances.min(usize::MAX as u64) as usize);
                 }
                 note_instances(doc, &mut d, instance);
             }
@@ -101,9 +104,15 @@ fn note_instances(doc: &Document, d: &mut Diagnostic, instance: NodeId) {
             NodeKind::ProtoInstance { name, .. } => name.as_str(),
             _ => "",
         };
-        let nested = if node.copy_of.is_some() { ", in the body" } else { "" };
-        d.related
-            .push((node.name_span, format!("in this instance of `{name}`{nested}")));
+        let nested = if node.copy_of.is_some() {
+            ", in the body"
+        } else {
+            ""
+        };
+        d.related.push((
+            node.name_span,
+            format!("in this instance of `{name}`{nested}"),
+        ));
         current = node.copy_of.map(|c| c.instance);
     }
 }

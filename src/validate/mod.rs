@@ -155,7 +155,9 @@ impl Ctx<'_> {
                 Value::Floats(v) => v.get(k).map(f32::to_string),
                 Value::Doubles(v) => v.get(k).map(f64::to_string),
                 Value::Int32s(v) => v.get(k).map(i32::to_string),
-                Value::Bools(v) => v.get(k).map(|b| if *b { "true" } else { "false" }.to_string()),
+                Value::Bools(v) => v
+                    .get(k)
+                    .map(|b| if *b { "true" } else { "false" }.to_string()),
                 _ => None,
             };
             return (span, text.unwrap_or_default());
