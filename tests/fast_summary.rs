@@ -39,7 +39,9 @@ fn json(report: &FileReport) -> String {
 /// Numeric MF values of schema fields still kept whole, and summaries, in `doc`.
 fn kept_and_summarized(doc: &Document) -> (usize, usize) {
     let (mut kept, mut summarized) = (0, 0);
-    for node in &doc.nodes {
+    // The nodes as written: a prototype instance's copy holds the value the instance
+    // passes through IS, a declared field's value, which is kept whole at every level.
+    for node in doc.written_nodes() {
         for entry in &node.fields {
             let Some(def) = entry.schema_def() else {
                 continue;

@@ -320,3 +320,101 @@ impl Copier<'_> {
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::model::{Document, NodeId, NodeKind, Place};
+    use crate::parse;
+
+    fn doc(scene: &str) -> Document {
+        let source = format!(
+            "<X3D profile='Immersive' version='4.0'><Scene>
+            <ProtoDeclare name='Ball'>
+              <ProtoInterface>
+                <field name='s' type='SFFloat' accessType='inputOutput' value='0.2'/>
+              </ProtoInterface>
+              <ProtoBody>
+                <Shape>
+                  <Appearance><Material><IS><connect nodeField='shininess' protoField='s'/></IS></Material></Appearance>
+                  <Box/>
+                </Shape>
+              </ProtoBody>
+            </ProtoDeclare>{scene}</Scene></X3D>"
+        );
+        parse::read(source.as_bytes()).document.unwrap()
+    }
+
+    fn instances(doc: &Document) -> Vec<NodeId> {
+        doc.node_ids()
+            .filter(|&id| matches!(doc.node(id).kind, NodeKind::ProtoInstance { .. }))
+            .collect()
+    }
+
+    #[test]
+    fn copies_the_path_to_connected_fields_and_shares_the_rest() {
+        let doc =
+            doc("<ProtoInstance name='Ball'><fieldValue name='s' value='0.7'/></ProtoInstance>");
+        // Shape, Appearance and Material are copied; the Box is the body's own.
+        assert_eq!(doc.copies, 3);
+        let instance = instances(&doc)[0];
+        let shape = doc.built(instance).unwrap();
+        assert!(shape.index() >= doc.written_nodes().len());
+        assert_eq!(doc.node(shape).place, Place::Instance { instance });
+        let material = doc.child_of(doc.child_of(shape, "appearance").unwrap(), "material");
+        let material = material.unwrap();
+        assert_eq!(doc.f32_of(material, "shininess"), Some(0.7));
+        assert!(doc.node(material).connects.is_empty());
+        let body_shape = doc.node(shape).copy_of.unwrap().original;
+        assert_eq!(
+            doc.child_of(shape, "geometry"),
+            doc.child_of(body_shape, "geometry")
+        );
+    }
+
+    #[test]
+    fn identical_instances_share_one_instantiation() {
+        let same = "<ProtoInstance name='Ball'><fieldValue name='s' value='0.5'/></ProtoInstance>";
+        let doc = doc(&format!(
+            "{}<ProtoInstance name='Ball'/><ProtoInstance name='Ball'><fieldValue name='s' value='0.2'/></ProtoInstance>",
+            same.repeat(100)
+        ));
+        // 0.5 a hundred times; the default and an explicit 0.2 are two more values.
+        assert_eq!(doc.instantiations.len(), 2);
+        assert_eq!(doc.instantiations[0].count, 100);
+        assert_eq!(doc.instantiations[1].count, 2);
+        assert_eq!(doc.copies, 6);
+    }
+
+    #[test]
+    fn a_prototype_billion_laughs_stops_at_the_limit() {
+        // P_k's body holds ten instances of P_(k-1), each setting its own field k and
+        // passing the others on: 10^7 distinct instantiations of P0.
+        let n = 8;
+        let fields: String = (0..n)
+            .map(|i| {
+                format!("<field name='f{i}' type='SFFloat' accessType='initializeOnly' value='0'/>")
+            })
+            .collect();
+        let mut scene = format!(
+            "<ProtoDeclare name='P0'><ProtoInterface>{fields}</ProtoInterface><ProtoBody><Material><IS><connect nodeField='shininess' protoField='f0'/></IS></Material></ProtoBody></ProtoDeclare>"
+        );
+        for k in 1..n {
+            let connects: String = (0..n)
+                .filter(|&i| i != k)
+                .map(|i| format!("<connect nodeField='f{i}' protoField='f{i}'/>"))
+                .collect();
+            let body: String = (0..10)
+                .map(|j| format!("<ProtoInstance name='P{}'><fieldValue name='f{k}' value='0.{j}'/><IS>{connects}</IS></ProtoInstance>", k - 1))
+                .collect();
+            scene += &format!("<ProtoDeclare name='P{k}'><ProtoInterface>{fields}</ProtoInterface><ProtoBody><Group>{body}</Group></ProtoBody></ProtoDeclare>");
+        }
+        scene += &format!("<ProtoInstance name='P{}'/>", n - 1);
+        let source = format!("<X3D profile='Immersive' version='4.0'><Scene>{scene}</Scene></X3D>");
+        let parsed = parse::read(source.as_bytes());
+        assert!(parsed.document.unwrap().copies <= crate::limits::MAX_INSTANCE_NODES);
+        assert!(parsed
+            .diagnostics
+            .iter()
+            .any(|d| d.code() == "LIMIT_EXCEEDED" && d.message.contains("instantiating")));
+    }
+}
