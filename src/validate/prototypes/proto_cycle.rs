@@ -304,3 +304,73 @@ fn cycle(
             ),
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::config::CheckConfig;
+    use crate::validate::Level;
+
+    /// `count` files, each with a prototype whose body holds the next file's; the last
+    /// names the first when `closed`.
+    fn chain(dir: &std::path::Path, count: usize, closed: bool) {
+        std::fs::create_dir_all(dir).unwrap();
+        for i in 0..count {
+            let next = if i + 1 < count {
+                i + 1
+            } else if closed {
+                0
+            } else {
+                i
+            };
+            let scene = format!(
+                "<X3D profile='Immersive' version='4.0'><Scene>\
+                 <ExternProtoDeclare name='Next' url='\"f{next}.x3d#P{next}\"'/>\
+                 <ProtoDeclare name='P{i}'><ProtoBody><Group><ProtoInstance name='Next'/></Group></ProtoBody></ProtoDeclare>\
+                 </Scene></X3D>"
+            );
+            std::fs::write(dir.join(format!("f{i}.x3d")), scene).unwrap();
+        }
+    }
+
+    fn codes(path: &std::path::Path, level: Level) -> Vec<(String, String)> {
+        let config = CheckConfig {
+            level,
+            ..CheckConfig::default()
+        };
+        let source = std::fs::read(path).unwrap();
+        let report = crate::check::check_source(&path.display().to_string(), &source, &config);
+        report
+            .diagnostics
+            .iter()
+            .map(|d| (d.code.to_string(), d.message.clone()))
+            .filter(|(code, _)| code != "VALIDATION_INCOMPLETE")
+            .collect()
+    }
+
+    #[test]
+    fn a_cycle_through_library_files_is_found_at_the_deep_level_only() {
+        let dir = std::env::temp_dir().join(format!("x3dcheck-cycle-{}", std::process::id()));
+        chain(&dir, 5, true);
+        let found = codes(&dir.join("f0.x3d"), Level::Deep);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert_eq!(found[0].0, "PROTO_CYCLE");
+        assert!(
+            found[0].1.contains("`P0` → `P1` (f1.x3d) →"),
+            "{}",
+            found[0].1
+        );
+        assert!(codes(&dir.join("f0.x3d"), Level::Standard).is_empty());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_long_chain_of_library_files_stops_at_the_limit() {
+        let count = crate::limits::MAX_LIBRARY_FILES + 10;
+        let dir = std::env::temp_dir().join(format!("x3dcheck-chain-{}", std::process::id()));
+        chain(&dir, count, true);
+        let found = codes(&dir.join("f0.x3d"), Level::Deep);
+        let found: Vec<&str> = found.iter().map(|(code, _)| code.as_str()).collect();
+        assert_eq!(found, ["LIMIT_EXCEEDED"], "the cycle closes past the limit");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
