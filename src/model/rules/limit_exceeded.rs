@@ -21,6 +21,7 @@ crate::declare_rule! {
     /// | bytes expanded from entities declared in the DOCTYPE | 1 MiB per document |
     /// | entity references nested in entities | 16 (a recursive entity ends here) |
     /// | image size (deep checks, renderer), from the header, before decoding | 16,384 pixels a side, 1 GiB decoded |
+    /// | prototype library files followed from one document (deep, PROTO_CYCLE) | 256 |
     ///
     /// ## Why it matters
     /// Real scenes nest a few dozen levels, hold a few thousand nodes and declare no

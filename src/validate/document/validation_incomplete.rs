@@ -2,6 +2,7 @@
 
 use crate::model::Span;
 use crate::report::Diagnostic;
+use crate::validate::prototypes::externs::Resolved;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -9,7 +10,9 @@ crate::declare_rule! {
     /// Says which parts of a scene were not checked, so that a partial check never reads
     /// as "valid": Script code; shader source; prototypes (ProtoDeclare bodies are
     /// checked as written, without substituting the values passed through `IS`;
-    /// ExternProtoDeclare bodies live in other files); IMPORT/EXPORT; Inline scenes.
+    /// ExternProtoDeclare bodies live in other files: at the deep level, one whose url
+    /// resolves to a ProtoDeclare in a local file of the tree has its interface compared
+    /// with it and is not listed); IMPORT/EXPORT; Inline scenes.
     ///
     /// ## Why it matters
     /// A clean report should mean the whole scene is right. Where x3dcheck cannot look,
@@ -53,8 +56,13 @@ fn check(ctx: &mut Ctx) {
             format!("{}: {what}", node.type_name()),
         ));
     }
-    for proto in &ctx.doc.protos {
-        let what = if proto.external {
+    for (index, proto) in ctx.doc.protos.iter().enumerate() {
+        // At the deep level an external prototype resolved to a local ProtoDeclare has its
+        // interface compared with it (EXTERNPROTO_INTERFACE_MISMATCH, PROTO_CYCLE).
+        let resolved = matches!(ctx.externs.get(index), Some(Resolved::Found { .. }));
+        let what = if proto.external && resolved {
+            continue;
+        } else if proto.external {
             format!(
                 "ExternProtoDeclare {}: its body is in another file and is not checked",
                 proto.name.text
