@@ -17,8 +17,8 @@
 //!   segment's direction (the shortest arc, about Y × direction). For a spine along −Y
 //!   the clause leaves the rotation open (every half turn about a horizontal axis takes
 //!   +Y there); X_ITE (after Coin's SbRotation) turns about Z, so that the
-//!   crossSection's x runs along −X and its z along +Z, and view3dscene draws the same:
-//!   so does this.
+//!   crossSection's x runs along −X and its z along +Z (view3dscene was seen drawing
+//!   the same): so does this.
 //! - A Z axis taken from a neighbour is made perpendicular to this point's Y axis (the
 //!   test against flipping uses the Z axes as the clause computes them). X = Y × Z.
 //! - Closed spine (first point = last): both ends have the first point's SCP, as the

@@ -10,8 +10,9 @@
 // follows (17.2.2.6) does: its colours (baseColor, emissiveColor, Color nodes) are linear
 // values, its colour textures (the main and the emissive texture) are decoded from sRGB,
 // the Fog colour too, and the result is encoded to sRGB. Phong and unlit shading use the
-// stored values as they are, with no conversion, as X3D browsers draw them (X_ITE and
-// view3dscene by default: linear only for PhysicalMaterial).
+// stored values as they are, with no conversion, as X_ITE draws them by default (its
+// ColorSpace LINEAR_WHEN_PHYSICAL_MATERIAL: linear only for PhysicalMaterial); the
+// view3dscene figures of issue 15 agree.
 
 struct Globals {
     view_projection: mat4x4<f32>,
