@@ -56,12 +56,9 @@ fn check_decoded<'a>(path: &str, decoded: parse::Decoded<'a>, config: &CheckConf
         None => parse::read_with(&text, config.keep_values()),
     };
     let mut diagnostics = parsed.diagnostics;
-    let base = (path != STDIN_NAME).then(|| match Path::new(path).parent() {
-        Some(dir) if !dir.as_os_str().is_empty() => dir,
-        _ => Path::new("."),
-    });
+    let file = (path != STDIN_NAME).then(|| Path::new(path));
     if let Some(doc) = &parsed.document {
-        diagnostics.extend(validate::check(doc, &text, base, config));
+        diagnostics.extend(validate::check(doc, &text, file, config));
     }
     diagnostics.retain(|d| config.enabled(d.rule.code) && d.rule.level <= config.level);
     for d in &mut diagnostics {

@@ -220,8 +220,11 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
     for output in [&args.output, &args.render.render].into_iter().flatten() {
         refuse_input_as_output(&inputs, output)?;
     }
+    // One cache of prototype libraries for the whole batch: a library many scenes name is
+    // read once.
+    let libraries = x3dcheck::library::Libraries::default();
     // Configuration errors stop the run before anything is checked.
-    let configs = inputs
+    let mut configs = inputs
         .iter()
         .map(|input| match input {
             Input::Stdin => match &args.stdin_filename {
@@ -238,6 +241,9 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
         })
         .collect::<Result<Vec<Effective>, _>>()
         .map_err(|e| e.to_string())?;
+    for effective in &mut configs {
+        effective.check.libraries = libraries.clone();
+    }
     if args.show_settings {
         let (Some(input), Some(effective)) = (inputs.first(), configs.first()) else {
             return Err("--show-settings: no input to show the settings of".to_string());

@@ -27,6 +27,10 @@ pub struct CheckConfig {
     ///
     /// [`check_document`]: crate::check::check_document
     pub render: bool,
+    /// The prototype libraries read so far (deep level): one cache for every file of a
+    /// batch, so that a library many scenes name is read once. Cloning the configuration
+    /// shares it.
+    pub libraries: crate::library::Libraries,
 }
 
 impl Default for CheckConfig {
@@ -41,6 +45,7 @@ impl Default for CheckConfig {
             normal_tolerance: 0.01,
             root: None,
             render: false,
+            libraries: crate::library::Libraries::default(),
         }
     }
 }

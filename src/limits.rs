@@ -67,6 +67,11 @@ pub const MAX_ENTITY_EXPANSION: usize = 1 << 20;
 /// here too.
 pub const MAX_ENTITY_NESTING: usize = 16;
 
+/// Prototype library files (the files ExternProtoDeclares name, and those their
+/// ExternProtoDeclares name, …) followed from one document at the deep level when looking
+/// for prototypes that instantiate themselves. Real libraries name a few others at most.
+pub const MAX_LIBRARY_FILES: usize = 256;
+
 /// Pixels on one side of an image the deep checks and the renderer decode. The size is
 /// read from the file's header before decoding, so a small file claiming 100000×100000
 /// (a decompression bomb) costs nothing.

@@ -78,5 +78,23 @@ fn the_pre_commit_hook_runs_x3dcheck_on_scene_files() {
         .lines()
         .find_map(|l| l.strip_prefix("  files: "))
         .unwrap();
-    assert_eq!(files, r"'\.(x3d|x3dj)$'");
+    // The hook takes what a directory walk takes: the extensions of
+    // src/cli/discover.rs's SCENE_EXTENSIONS in any case, each also with `.gz` after it.
+    let alternation = files
+        .strip_prefix(r"'(?i)\.(")
+        .and_then(|f| f.strip_suffix(r")(\.gz)?$'"))
+        .unwrap_or_else(|| panic!("files: {files}"));
+    let hooked: Vec<&str> = alternation.split('|').collect();
+    let discover = repository_file("src/cli/discover.rs");
+    let walked = discover
+        .split_once("const SCENE_EXTENSIONS: &[&str] = &[")
+        .and_then(|(_, rest)| rest.split_once("];"))
+        .map(|(list, _)| list)
+        .unwrap();
+    let walked: Vec<&str> = walked
+        .split(',')
+        .map(|e| e.trim().trim_matches('"'))
+        .filter(|e| !e.is_empty())
+        .collect();
+    assert_eq!(hooked, walked);
 }

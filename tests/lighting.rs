@@ -7,7 +7,8 @@
 //!    guarantees, extremes included: every result is finite and non-negative, attenuation
 //!    and spot factors stay in [0, 1], and the decisions at the bounds are exact (a point
 //!    at exactly the radius is lit; one beyond is not; Table 17.4's spot cases; Table
-//!    17.5's fog cases).
+//!    17.5's fog cases), and the sRGB transfer functions of the physical model keep
+//!    colours in [0, 1] and invert each other.
 //!
 //! Without a graphics adapter the GPU part is skipped, loudly
 //! ([`x3dcheck::render::adapter_for_test`]).
@@ -56,7 +57,8 @@ fn main(@builtin(global_invocation_id) id: vec3<u32>) {
     let fog = fog_interpolant(u32(c.fog.x), c.fog.y, c.fog.z);
     results[3u * i] = vec4<f32>(light_phong(c.light, s, c.point.xyz, c.normal.xyz, c.view.xyz), factor);
     results[3u * i + 1u] = vec4<f32>(light_physical(c.light, s, c.point.xyz, c.normal.xyz, c.view.xyz), fog);
-    results[3u * i + 2u] = vec4<f32>(0.0);
+    let encoded = linear_to_srgb(c.diffuse_shininess.xyz);
+    results[3u * i + 2u] = vec4<f32>(encoded, srgb_to_linear(encoded).x);
 }
 "#;
 
@@ -110,6 +112,9 @@ struct Lit {
     factor: f32,
     physical: [f32; 3],
     fog: f32,
+    /// The diffuse colour encoded to sRGB, and its red decoded again.
+    encoded: [f32; 3],
+    round_trip: f32,
 }
 
 /// Runs the cases through the kernel.
@@ -186,6 +191,8 @@ fn run(cases: &[Case]) -> Vec<Lit> {
                 factor: c[3],
                 physical: [c[4], c[5], c[6]],
                 fog: c[7],
+                encoded: [c[8], c[9], c[10]],
+                round_trip: c[11],
             })
             .collect()
     })
@@ -373,6 +380,10 @@ proptest! {
             }
             prop_assert!((0.0..=1.0).contains(&lit.factor), "{c:?} gave {lit:?}");
             prop_assert!((0.0..=1.0).contains(&lit.fog), "{c:?} gave {lit:?}");
+            for v in lit.encoded {
+                prop_assert!((0.0..=1.0).contains(&v), "{c:?} gave {lit:?}");
+            }
+            prop_assert!((lit.round_trip - c.diffuse[0]).abs() < 1e-4, "{c:?} gave {lit:?}");
         }
     }
 }
@@ -459,6 +470,32 @@ fn decisions_at_the_bounds_are_exact() {
     assert_eq!(lit[15].factor, 0.25, "1 / (2²)");
     // A white light straight on a white Phong surface: diffuse exactly 1 (N · L = 1).
     assert_eq!(lit[0].phong, [1.0; 3]);
+
+    // sRGB (IEC 61966-2-1): 0 and 1 stay; linear 0.5 is 0.7354, 0.2140 is 0.5, and
+    // the linear segment below 0.0031308 is 12.92 x.
+    let mut colours = Vec::new();
+    for (linear, encoded) in [
+        (0.0, 0.0),
+        (1.0, 1.0),
+        (0.5, 0.735_357),
+        (0.214_041, 0.5),
+        (0.002, 0.025_84),
+    ] {
+        let mut case = point_light(1.0, 1.0);
+        case.diffuse = [linear; 3];
+        colours.push((case, encoded));
+    }
+    let cases: Vec<Case> = colours.iter().map(|(c, _)| c.clone()).collect();
+    for ((case, expected), lit) in colours.iter().zip(run(&cases)) {
+        assert!(
+            (lit.encoded[0] - expected).abs() < 1e-4,
+            "{case:?}: {lit:?}"
+        );
+        assert!(
+            (lit.round_trip - case.diffuse[0]).abs() < 1e-5,
+            "{case:?}: {lit:?}"
+        );
+    }
 }
 
 /// What the flattener makes of a light node with these fields.

@@ -151,10 +151,12 @@ fn a_far_away_tiny_box_renders_like_a_big_one_at_the_origin() {
         return;
     }
     // The Viewpoint and the box share a Transform placing both at x = 1,000,000; only
-    // f64 composition and eye-relative placement keep the 0.0002 box intact.
+    // f64 composition and eye-relative placement keep the 0.0002 box intact. The
+    // NavigationInfo brings the near plane (avatarSize / 2, 23.4.4) in front of it.
     let scene = |outer: &str, box_transform: &str| {
         format!(
-            "<X3D profile='Interchange' version='4.0'><Scene><Transform translation='{outer}'>\
+            "<X3D profile='Interchange' version='4.0'><Scene>\
+             <NavigationInfo avatarSize='0.0001'/><Transform translation='{outer}'>\
              <Viewpoint position='0 0 0'/>\
              <Transform {box_transform}><Shape><Appearance><Material diffuseColor='1 0.5 0'/></Appearance>\
              <Box size='1 1 1'/></Shape></Transform></Transform></Scene></X3D>"
@@ -247,7 +249,8 @@ fn coordinate_double_far_from_the_origin_keeps_its_precision() {
         return;
     }
     // A 0.001-wide quad made of CoordinateDouble points at x = 10,000,000 (where f32 steps
-    // by 1), seen from 0.002 away, renders as the same quad at the origin.
+    // by 1), seen from 0.002 away (a NavigationInfo bringing the near plane closer),
+    // renders as the same quad at the origin.
     let scene = |x: f64| {
         let points: Vec<String> = [
             (-0.0005, -0.0005),
@@ -259,7 +262,8 @@ fn coordinate_double_far_from_the_origin_keeps_its_precision() {
         .map(|(dx, dy)| format!("{} {dy} 0", x + dx))
         .collect();
         format!(
-            "<X3D profile='Full' version='4.0'><Scene><Viewpoint position='{x} 0 0.002'/>\
+            "<X3D profile='Full' version='4.0'><Scene><NavigationInfo avatarSize='0.0001'/>\
+             <Viewpoint position='{x} 0 0.002'/>\
              <Shape><Appearance><Material diffuseColor='0.2 0.6 1'/></Appearance>\
              <IndexedFaceSet coordIndex='0 1 2 3 -1'><CoordinateDouble point='{}'/></IndexedFaceSet>\
              </Shape></Scene></X3D>",

@@ -530,8 +530,9 @@ impl Builder {
         self.doc.nodes[node.index()].fields.push(entry);
     }
 
-    /// Starts a ProtoDeclare or ExternProtoDeclare; its index names it.
-    pub fn declare_proto(&mut self, proto: ProtoDecl) -> usize {
+    /// Starts a ProtoDeclare or ExternProtoDeclare in the current scope; its index names it.
+    pub fn declare_proto(&mut self, mut proto: ProtoDecl) -> usize {
+        proto.scope = self.scope();
         self.doc.protos.push(proto);
         self.doc.protos.len() - 1
     }

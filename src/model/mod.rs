@@ -291,6 +291,9 @@ pub struct ProtoDecl {
     pub name: Named,
     pub span: Span,
     pub external: bool,
+    /// Where the declaration stands: the scene, or the body of the prototype it is nested
+    /// in (it is visible there only, 4.4.4.3). Set by [`Builder::declare_proto`].
+    pub scope: Scope,
     pub interface: Vec<FieldDecl>,
     /// The ProtoBody's top-level nodes (empty for ExternProtoDeclare).
     pub body: Vec<ChildRef>,

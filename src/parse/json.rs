@@ -797,6 +797,7 @@ impl<'t, 's> JsonReader<'t, 's> {
             name,
             span: proto_span,
             external,
+            scope: Scope::Scene,
             interface: Vec::new(),
             body: Vec::new(),
             url,

@@ -619,6 +619,7 @@ impl<'s> XmlReader<'s> {
             name,
             span,
             external,
+            scope: Scope::Scene,
             interface: Vec::new(),
             body: Vec::new(),
             url,

@@ -14,7 +14,11 @@
 //! - A Y axis that vanishes (spine[i+1] = spine[i−1]: the spine turns back on itself)
 //!   is the direction of the next segment.
 //! - "The entire spine is collinear": every SCP is the rotation taking +Y to the first
-//!   segment's direction; for a spine along −Y (no unique rotation) a half turn about X.
+//!   segment's direction (the shortest arc, about Y × direction). For a spine along −Y
+//!   the clause leaves the rotation open (every half turn about a horizontal axis takes
+//!   +Y there); X_ITE (after Coin's SbRotation) turns about Z, so that the
+//!   crossSection's x runs along −X and its z along +Z (view3dscene was seen drawing
+//!   the same): so does this.
 //! - A Z axis taken from a neighbour is made perpendicular to this point's Y axis (the
 //!   test against flipping uses the Z axes as the clause computes them). X = Y × Z.
 //! - Closed spine (first point = last): both ends have the first point's SCP, as the
@@ -307,10 +311,12 @@ fn frame_of(y: DVec3, z: DVec3) -> DMat3 {
     DMat3::from_cols(y.cross(z), y, z)
 }
 
-/// The rotation taking +Y to the unit vector `to`; a half turn about X for −Y.
+/// The rotation taking +Y to the unit vector `to`: about Y × `to` (the shortest arc);
+/// for −Y, where that axis vanishes, a half turn about Z, as X3D browsers take it (X_ITE
+/// and Coin pick the axis Y × X: X turns to −X, Z stays).
 fn rotation_from_y(to: DVec3) -> DQuat {
     if to.dot(DVec3::Y) <= -1.0 + 1e-12 {
-        DQuat::from_rotation_x(std::f64::consts::PI)
+        DQuat::from_rotation_z(std::f64::consts::PI)
     } else {
         DQuat::from_rotation_arc(DVec3::Y, to)
     }
@@ -400,10 +406,11 @@ mod tests {
         assert!(close(across[1].y_axis, DVec3::X));
         assert!(close(across[1].z_axis, DVec3::Z));
         assert!(close(across[1].x_axis, -DVec3::Y));
-        // Along −Y (no unique rotation): a half turn about X.
+        // Along −Y (no unique rotation): a half turn about Z, as browsers turn it.
         let down = spine_frames(&spine(&[[0.0; 3], [0.0, -1.0, 0.0]]));
-        assert!(close(down[0].x_axis, DVec3::X));
-        assert!(close(down[0].z_axis, -DVec3::Z));
+        assert!(close(down[0].x_axis, -DVec3::X));
+        assert!(close(down[0].y_axis, -DVec3::Y));
+        assert!(close(down[0].z_axis, DVec3::Z));
         // Float noise in a straight spine does not pick Z axes.
         let noisy = spine_frames(&spine(&[[0.0; 3], [0.0, 1.0, 1e-9], [0.0, 2.0, 0.0]]));
         assert!(noisy.iter().all(|f| close(f.z_axis, DVec3::Z)));

@@ -149,3 +149,17 @@ fn fog_interpolant(kind: u32, range: f32, d: f32) -> f32 {
     }
     return exp(-d / (range - d));
 }
+
+// The sRGB transfer functions (IEC 61966-2-1, the encoding glTF 2.0 gives colour
+// textures): stored values to linear light and back, per channel, for values in [0, 1].
+fn srgb_to_linear(c: vec3<f32>) -> vec3<f32> {
+    let low = c / 12.92;
+    let high = pow((max(c, vec3<f32>(0.0)) + vec3<f32>(0.055)) / 1.055, vec3<f32>(2.4));
+    return select(high, low, c <= vec3<f32>(0.04045));
+}
+
+fn linear_to_srgb(c: vec3<f32>) -> vec3<f32> {
+    let low = c * 12.92;
+    let high = 1.055 * pow(max(c, vec3<f32>(0.0)), vec3<f32>(1.0 / 2.4)) - vec3<f32>(0.055);
+    return select(high, low, c <= vec3<f32>(0.0031308));
+}

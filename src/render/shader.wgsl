@@ -5,6 +5,14 @@
 // Two shadings share the equations: Phong shading (`vs_main` + `fs_phong`, per fragment,
 // every material texture) and Gouraud shading (`vs_gouraud` + `fs_gouraud`, per vertex,
 // with the main texture applied per fragment as 17.2.2.8 recommends).
+//
+// Colour spaces: the physical model computes in linear light, as the glTF 2.0 model it
+// follows (17.2.2.6) does: its colours (baseColor, emissiveColor, Color nodes) are linear
+// values, its colour textures (the main and the emissive texture) are decoded from sRGB,
+// the Fog colour too, and the result is encoded to sRGB. Phong and unlit shading use the
+// stored values as they are, with no conversion, as X_ITE draws them by default (its
+// ColorSpace LINEAR_WHEN_PHYSICAL_MATERIAL: linear only for PhysicalMaterial); the
+// view3dscene figures of issue 15 agree.
 
 struct Globals {
     view_projection: mat4x4<f32>,
@@ -378,13 +386,33 @@ fn clip(p: vec3<f32>) {
     }
 }
 
-fn apply_fog(color: vec3<f32>, p: vec3<f32>) -> vec3<f32> {
-    let f = fog_interpolant(globals.counts.x, globals.fog_color_range.w, length(p));
-    return mix(globals.fog_color_range.rgb, color, f);
+fn is_physical(m: Material) -> bool {
+    return u32(m.emissive_model.w) == 2u;
 }
 
-fn finish(rgb: vec3<f32>, alpha: f32, p: vec3<f32>) -> vec4<f32> {
-    return vec4<f32>(clamp(apply_fog(rgb, p), vec3<f32>(0.0), vec3<f32>(1.0)), clamp(alpha, 0.0, 1.0));
+// The main texture's samples in linear light (the physical model's colour textures).
+fn decoded_stages(samples: StageSamples) -> StageSamples {
+    var out: StageSamples;
+    for (var i = 0u; i < 4u; i = i + 1u) {
+        out.s[i] = vec4<f32>(srgb_to_linear(samples.s[i].rgb), samples.s[i].a);
+    }
+    return out;
+}
+
+// Fog, then the output value: `rgb` is linear light for the physical model (the fog
+// colour is decoded to blend with it, so that a fully fogged shape has the Fog's colour
+// as every other shape does), stored values otherwise.
+fn finish(rgb: vec3<f32>, alpha: f32, p: vec3<f32>, linear: bool) -> vec4<f32> {
+    var fog = globals.fog_color_range.rgb;
+    if linear {
+        fog = srgb_to_linear(fog);
+    }
+    let f = fog_interpolant(globals.counts.x, globals.fog_color_range.w, length(p));
+    var out = clamp(mix(fog, rgb, f), vec3<f32>(0.0), vec3<f32>(1.0));
+    if linear {
+        out = linear_to_srgb(out);
+    }
+    return vec4<f32>(out, clamp(alpha, 0.0, 1.0));
 }
 
 @fragment
@@ -422,14 +450,20 @@ fn fs_phong(in: VertexOut, @builtin(front_facing) front_facing: bool) -> @locati
     if !front_facing {
         m = draw.back;
     }
-    let color = mix_texture(material_color(m, in.color), m.specular_shininess.rgb, m, samples, false);
+    let linear = is_physical(m);
+    var stages = samples;
+    if linear {
+        stages = decoded_stages(samples);
+        emissive_t = vec4<f32>(srgb_to_linear(emissive_t.rgb), emissive_t.a);
+    }
+    let color = mix_texture(material_color(m, in.color), m.specular_shininess.rgb, m, stages, false);
     if color.a < draw.cutoff.x {
         discard;
     }
     let model = u32(m.emissive_model.w);
     if model == 0u {
         // Unlit: the emissiveTexture (if any) is the main texture; nothing else applies.
-        return finish(color.rgb, color.a, in.position);
+        return finish(color.rgb, color.a, in.position, false);
     }
     // The normal, perturbed by the normal texture in tangent space (12.3.4), then turned
     // to the side seen.
@@ -455,7 +489,7 @@ fn fs_phong(in: VertexOut, @builtin(front_facing) front_facing: bool) -> @locati
         s.roughness = s.roughness * specular_mr_t.g;
     }
     s.occlusion = mix(1.0, occlusion_t.r, m.extra.x);
-    return finish(shade(m, s, in.position, n), color.a, in.position);
+    return finish(shade(m, s, in.position, n), color.a, in.position, linear);
 }
 
 @fragment
@@ -468,11 +502,17 @@ fn fs_gouraud(in: VertexOut, @builtin(front_facing) front_facing: bool) -> @loca
         m = draw.back;
         lit = in.lit_back;
     }
-    let color = mix_texture(lit, m.specular_shininess.rgb, m, samples, true);
+    // Lit per vertex in linear light for the physical model: its texture is decoded too.
+    let linear = is_physical(m);
+    var stages = samples;
+    if linear {
+        stages = decoded_stages(samples);
+    }
+    let color = mix_texture(lit, m.specular_shininess.rgb, m, stages, true);
     if color.a < draw.cutoff.x {
         discard;
     }
-    return finish(color.rgb, color.a, in.position);
+    return finish(color.rgb, color.a, in.position, linear);
 }
 
 // The Background: a triangle covering the screen, coloured by the direction of each

@@ -1,14 +1,16 @@
 //! Texture nodes to RGBA images: ImageTexture (PNG, JPEG, GIF files next to the
-//! document), PixelTexture (SFImage, rows from the bottom up), with the sampling of
+//! document, or in `data:` URLs), PixelTexture (SFImage, rows from the bottom up), with the sampling of
 //! repeatS/repeatT and TextureProperties (18.4.9) and a mipmap chain where the
 //! minification filter uses one.
 
+use std::io::{BufRead, Seek};
 use std::path::{Path, PathBuf};
 
 use super::draw_list::{Texture, Wrap};
 use super::fields::{boolean, child, float};
 use crate::limits::MAX_IMAGE_SIDE;
 use crate::model::{Document, NodeId};
+use crate::validate::texturing::data_url;
 
 /// The largest texture side loaded (larger images are reported, not drawn).
 const MAX_TEXTURE_SIDE: u32 = 8192;
@@ -193,15 +195,19 @@ fn image_texture(
     let mut reasons = Vec::new();
     let mut limit = false;
     for url in &urls {
-        match local_file(url, base, root) {
-            Ok(path) => match decode(&path) {
-                Ok(pixels) => return Ok(pixels),
-                Err(e) => {
-                    limit |= e.limit;
-                    reasons.push(format!("{url}: {}", e.message));
-                }
-            },
-            Err(e) => reasons.push(format!("{url}: {e}")),
+        let decoded = match data_url::decode(url) {
+            Some(Ok(data)) => decode_bytes(&data.bytes),
+            Some(Err(e)) => Err(e.into()),
+            None => local_file(url, base, root)
+                .map_err(NotDrawn::from)
+                .and_then(|path| decode_file(&path)),
+        };
+        match decoded {
+            Ok(pixels) => return Ok(pixels),
+            Err(e) => {
+                limit |= e.limit;
+                reasons.push(format!("{}: {}", data_url::shown(url), e.message));
+            }
         }
     }
     if reasons.is_empty() {
@@ -215,6 +221,9 @@ fn image_texture(
 
 /// A url as a file under `root` (the directory tree of the named document), or why not.
 pub fn local_file(url: &str, base: &Path, root: &Path) -> Result<PathBuf, String> {
+    if data_url::is_data_url(url) {
+        return Err("a data: URL is no file".to_string());
+    }
     let lower = url.to_ascii_lowercase();
     if lower.contains("://") && !lower.starts_with("file://") {
         return Err("network urls are not fetched".to_string());
@@ -236,8 +245,21 @@ pub fn local_file(url: &str, base: &Path, root: &Path) -> Result<PathBuf, String
     Ok(canonical)
 }
 
-fn decode(path: &Path) -> Result<Pixels, NotDrawn> {
-    let reader = image::ImageReader::open(path)
+fn decode_file(path: &Path) -> Result<Pixels, NotDrawn> {
+    decode(|| image::ImageReader::open(path))
+}
+
+/// An image carried in a data: URL.
+fn decode_bytes(bytes: &[u8]) -> Result<Pixels, NotDrawn> {
+    decode(|| Ok(image::ImageReader::new(std::io::Cursor::new(bytes))))
+}
+
+/// Decodes the image `open` reads (opened twice: once for the header's size, checked
+/// before any pixel is decoded, once to decode).
+fn decode<R: BufRead + Seek>(
+    open: impl Fn() -> std::io::Result<image::ImageReader<R>>,
+) -> Result<Pixels, NotDrawn> {
+    let reader = open()
         .map_err(|e| e.to_string())?
         .with_guessed_format()
         .map_err(|e| e.to_string())?;
@@ -253,7 +275,7 @@ fn decode(path: &Path) -> Result<Pixels, NotDrawn> {
             format!("{width}×{height} is larger than {MAX_TEXTURE_SIDE} pixels a side").into(),
         );
     }
-    let mut reader = image::ImageReader::open(path)
+    let mut reader = open()
         .map_err(|e| e.to_string())?
         .with_guessed_format()
         .map_err(|e| e.to_string())?;

@@ -232,7 +232,7 @@ fn quote(text: &str) -> String {
 mod tests {
     use super::*;
     use crate::model::builder::testing::{named, parent_of};
-    use crate::model::{Builder, Encoding, ProtoDecl, Span};
+    use crate::model::{Builder, Encoding, ProtoDecl, Scope, Span};
 
     /// Builds nodes as a reader would: open, optionally DEF, close later.
     struct Scene(Builder);
@@ -313,6 +313,7 @@ mod tests {
             name: named("Wheel"),
             span: Span::default(),
             external: false,
+            scope: Scope::Scene,
             interface: Vec::new(),
             body: Vec::new(),
             url: Vec::new(),

@@ -7,6 +7,7 @@ pub mod events;
 mod instances;
 pub mod lighting;
 pub mod numbers;
+pub mod prototypes;
 mod registry;
 pub mod rendering;
 pub mod shape;
@@ -46,9 +47,13 @@ pub struct Ctx<'a> {
     /// The version whose rules apply (the document's, or the latest when it names none).
     pub version: Version,
     pub config: &'a CheckConfig,
+    /// The checked file, as named; None for standard input.
+    pub file: Option<&'a std::path::Path>,
     /// The directory of the checked file, against which relative URLs resolve; None for
     /// standard input.
     pub base: Option<&'a std::path::Path>,
+    /// What each ExternProtoDeclare's url resolves to (deep level; empty below it).
+    pub externs: prototypes::externs::Externs,
     diagnostics: Vec<Diagnostic>,
     /// Folded findings: (code, node, field) → index in `diagnostics`.
     folded: HashMap<(&'static str, NodeId, String), usize>,
@@ -197,19 +202,30 @@ impl Ctx<'_> {
     }
 }
 
-/// Runs every enabled rule with a check on `doc`.
+/// Runs every enabled rule with a check on `doc`, read from `file` (None: standard input).
 pub fn check(
     doc: &Document,
     source: &[u8],
-    base: Option<&std::path::Path>,
+    file: Option<&std::path::Path>,
     config: &CheckConfig,
 ) -> Vec<Diagnostic> {
+    let base = file.map(|file| match file.parent() {
+        Some(dir) if !dir.as_os_str().is_empty() => dir,
+        _ => std::path::Path::new("."),
+    });
+    let externs = if config.level >= Level::Deep {
+        prototypes::externs::Externs::resolve(doc, file, config)
+    } else {
+        prototypes::externs::Externs::default()
+    };
     let mut ctx = Ctx {
         doc,
         source,
         version: doc.schema_version(),
         config,
+        file,
         base,
+        externs,
         diagnostics: Vec::new(),
         folded: HashMap::new(),
         full: false,

@@ -1,10 +1,10 @@
-//! Every rule, group by group in catalogue order (RULES.md §1–§6). `x3dcheck rules`, the
+//! Every rule, group by group in catalogue order (RULES.md §1–§8). `x3dcheck rules`, the
 //! docs, the fixtures test and the checks all read this. Each group lists its own rules in
 //! its `mod.rs`.
 
 use std::sync::LazyLock;
 
-use super::{document, events, lighting, rendering, shape, texturing, Check, Rule};
+use super::{document, events, lighting, prototypes, rendering, shape, texturing, Check, Rule};
 
 /// Every rule with its check function (None for those reported while reading).
 pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {
@@ -15,6 +15,7 @@ pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {
         lighting::RULES,
         texturing::RULES,
         events::RULES,
+        prototypes::RULES,
     ]
     .concat()
 });

@@ -24,6 +24,7 @@ crate::declare_rule! {
     /// | nodes copied by instantiating prototypes (identical instances share a copy) | 100,000 |
     /// | field values those copies hold | 16,777,216 (2^24) |
     /// | prototype instances nested in instantiated bodies | 32 levels |
+    /// | prototype library files followed from one document (deep, PROTO_CYCLE) | 256 |
     ///
     /// ## Why it matters
     /// Real scenes nest a few dozen levels, hold a few thousand nodes and declare no

@@ -478,6 +478,7 @@ impl<'s> Reader<'s> {
             name,
             span: keyword.span(),
             external,
+            scope: Scope::Scene,
             interface: Vec::new(),
             body: Vec::new(),
             url: Vec::new(),

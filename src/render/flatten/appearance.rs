@@ -168,25 +168,34 @@ impl Walker<'_> {
         }
         // The main texture: the material's own, else Appearance.texture (12.2.5).
         let model = look.front.model;
-        let own_main = material
-            .filter(|&m| doc.node(m).is_a("X3DOneSidedMaterialNode"))
-            .and_then(|m| {
-                let field = main_field(model);
-                child(doc, m, field).map(|t| (t, mapping(doc, m, field)))
-            });
+        let one_sided = material.filter(|&m| is_one_sided(doc, m));
+        let own_main = one_sided.and_then(|m| {
+            let field = main_field(model);
+            child(doc, m, field).map(|t| (t, mapping(doc, m, field)))
+        });
         match own_main {
+            // An X3D 4 field, so X3D 4's mixTexture even in a 3.x document.
             Some((texture, mapping)) => {
-                self.main_single(context, texture, Rule::Mapping(mapping), &mut look)
+                self.main_single(context, texture, Rule::Mapping(mapping), false, &mut look)
             }
             None => match child(doc, appearance, "texture") {
                 Some(t) if type_is(doc, t, "MultiTexture") => {
                     self.multi_texture(context, t, &mut look)
                 }
-                Some(t) => self.main_single(context, t, Rule::Mapping(String::new()), &mut look),
+                Some(t) => {
+                    let replaces = self.options.x3d_version_3;
+                    self.main_single(
+                        context,
+                        t,
+                        Rule::Mapping(String::new()),
+                        replaces,
+                        &mut look,
+                    )
+                }
                 None => {}
             },
         }
-        if let Some(material) = material.filter(|&m| doc.node(m).is_a("X3DOneSidedMaterialNode")) {
+        if let Some(material) = one_sided {
             for &(field, role) in role_fields(model) {
                 if let Some(texture) = child(doc, material, field) {
                     if let Some(loaded) = self.texture(context, texture) {
@@ -227,28 +236,35 @@ impl Walker<'_> {
         }
     }
 
-    /// The texture nodes and mappings of a material's texture fields, to compare sides.
+    /// The texture nodes and mappings of a material's texture fields, to compare sides
+    /// (the fields the document sets, those of X3D 4 in a 3.x document too).
     fn material_textures(&self, context: Context, material: NodeId) -> Vec<(NodeId, String)> {
         let doc = context.doc;
         doc.node(material)
-            .def()
-            .map(|def| {
-                def.fields
-                    .iter()
-                    .filter(|f| f.name.ends_with("Texture"))
-                    .filter_map(|f| {
-                        child(doc, material, f.name).map(|t| (t, mapping(doc, material, f.name)))
-                    })
-                    .collect()
+            .fields
+            .iter()
+            .map(|f| f.name())
+            .filter(|name| name.ends_with("Texture"))
+            .filter_map(|name| {
+                child(doc, material, name).map(|t| (t, mapping(doc, material, name)))
             })
-            .unwrap_or_default()
+            .collect()
     }
 
-    fn main_single(&mut self, context: Context, texture: NodeId, rule: Rule, look: &mut Look) {
+    /// A single main texture; `replaces`: by the X3D 3.x tables (Appearance.texture of a
+    /// 3.x document), else multiplying the colour.
+    fn main_single(
+        &mut self,
+        context: Context,
+        texture: NodeId,
+        rule: Rule,
+        replaces: bool,
+        look: &mut Look,
+    ) {
         let Some(loaded) = self.texture(context, texture) else {
             return;
         };
-        if self.options.x3d_version_3 {
+        if replaces {
             // 17.2.2.2 (3.x tables 17.2 and 17.3): an RGB texture replaces the diffuse
             // colour, a texture with alpha replaces the transparency.
             for m in std::iter::once(&mut look.front).chain(look.back.as_mut()) {
@@ -494,6 +510,17 @@ fn point_properties(doc: &crate::model::Document, id: NodeId) -> Stroke {
         min: min.min(max),
         max,
     }
+}
+
+/// Material, PhysicalMaterial and UnlitMaterial, by name: an X3D 3.x document's Material
+/// is no X3DOneSidedMaterialNode (X3D 4 added the type), yet browsers draw the X3D 4
+/// texture fields it is given (FIELD_NOT_IN_VERSION reports them).
+fn is_one_sided(doc: &crate::model::Document, material: NodeId) -> bool {
+    doc.node(material).is_a("X3DOneSidedMaterialNode")
+        || matches!(
+            doc.node(material).type_name(),
+            "Material" | "PhysicalMaterial" | "UnlitMaterial"
+        )
 }
 
 /// The xxxTextureMapping of a material's xxxTexture field.

@@ -19,6 +19,9 @@ pub struct ViewpointFound {
     pub eye: DVec3,
     pub orientation: DQuat,
     pub projection: Projection,
+    /// X3D 4 nearDistance and farDistance, where set (positive).
+    pub near_distance: Option<f32>,
+    pub far_distance: Option<f32>,
 }
 
 /// The first Viewpoint or OrthoViewpoint of the scene in traversal order (the one a
@@ -110,7 +113,12 @@ fn viewpoint(doc: &Document, id: NodeId, world: DMat4) -> ViewpointFound {
             },
         }
     };
+    // −1 (the default) leaves the planes to the NavigationInfo; 0 cannot be a plane.
+    let distance =
+        |field| Some(crate::render::fields::float(doc, id, field, -1.0)).filter(|d| *d > 0.0);
     ViewpointFound {
+        near_distance: distance("nearDistance"),
+        far_distance: distance("farDistance"),
         eye: world.transform_point3(position),
         orientation: if orientation.is_finite() {
             orientation
@@ -126,6 +134,10 @@ pub struct View {
     pub eye: DVec3,
     pub orientation: DQuat,
     projection: Projection,
+    /// Whether the view frames the bounds (there is no viewpoint).
+    framed: bool,
+    near_distance: Option<f32>,
+    far_distance: Option<f32>,
 }
 
 impl View {
@@ -133,28 +145,30 @@ impl View {
     /// direction) with the default field of view.
     pub fn choose(viewpoint: Option<&ViewpointFound>, bounds: Option<(DVec3, DVec3)>) -> View {
         let fov = std::f32::consts::FRAC_PI_4;
-        let projection = Projection::Perspective { field_of_view: fov };
+        let framing = |eye| View {
+            eye,
+            orientation: DQuat::IDENTITY,
+            projection: Projection::Perspective { field_of_view: fov },
+            framed: true,
+            near_distance: None,
+            far_distance: None,
+        };
         match (viewpoint, bounds) {
             (Some(v), _) => View {
                 eye: v.eye,
                 orientation: v.orientation,
                 projection: v.projection,
+                framed: false,
+                near_distance: v.near_distance,
+                far_distance: v.far_distance,
             },
             (None, Some((lo, hi))) => {
                 let centre = (lo + hi) / 2.0;
                 let radius = ((hi - lo).length() / 2.0).max(f64::MIN_POSITIVE);
                 let distance = radius / (f64::from(fov) / 2.0).sin();
-                View {
-                    eye: centre + DVec3::new(0.0, 0.0, distance),
-                    orientation: DQuat::IDENTITY,
-                    projection,
-                }
+                framing(centre + DVec3::new(0.0, 0.0, distance))
             }
-            (None, None) => View {
-                eye: DVec3::new(0.0, 0.0, 10.0),
-                orientation: DQuat::IDENTITY,
-                projection,
-            },
+            (None, None) => framing(DVec3::new(0.0, 0.0, 10.0)),
         }
     }
 
@@ -166,46 +180,60 @@ impl View {
             far,
         }
     }
-}
 
-/// Near and far: from NavigationInfo (avatarSize / 2, visibilityLimit) where the scene
-/// has one, else from the distance of the scene's bounds.
-pub fn depth_range(
-    bounds: Option<(DVec3, DVec3)>,
-    eye: DVec3,
-    navigation: Option<super::environment::Navigation>,
-) -> (f32, f32) {
-    let (nearest, farthest) = match bounds {
-        Some((lo, hi)) => {
-            let closest = eye.clamp(lo, hi);
+    /// The near and far planes (23.4.4 NavigationInfo): near is avatarSize[0] / 2 of the
+    /// bound NavigationInfo, or of the default one (avatarSize 0.25: 0.125) when the
+    /// scene has none, as browsers bind; far is visibilityLimit, or (0, the default:
+    /// unlimited) just past the farthest corner of the bounds. An X3D 4 Viewpoint's
+    /// nearDistance and farDistance, where set, come first. A framed view (no viewpoint:
+    /// x3dcheck's own camera) brings the near plane in front of the bounds when they are
+    /// closer than that, so that a small scene is not cut away.
+    pub fn depth_range(
+        &self,
+        bounds: Option<(DVec3, DVec3)>,
+        navigation: Option<super::environment::Navigation>,
+    ) -> (f32, f32) {
+        let avatar = navigation
+            .and_then(|n| n.avatar_size)
+            .unwrap_or(DEFAULT_AVATAR_SIZE);
+        let mut near = self
+            .near_distance
+            .map_or(f64::from(avatar) / 2.0, f64::from);
+        let farthest = bounds.map(|(lo, hi)| {
             let pick = |e: f64, l: f64, h: f64| if (e - l).abs() > (e - h).abs() { l } else { h };
             let corner = DVec3::new(
-                pick(eye.x, lo.x, hi.x),
-                pick(eye.y, lo.y, hi.y),
-                pick(eye.z, lo.z, hi.z),
+                pick(self.eye.x, lo.x, hi.x),
+                pick(self.eye.y, lo.y, hi.y),
+                pick(self.eye.z, lo.z, hi.z),
             );
-            ((closest - eye).length(), (corner - eye).length())
+            (corner - self.eye).length() * 1.01
+        });
+        let limit = navigation.map_or(0.0, |n| n.visibility_limit);
+        let mut far = match (self.far_distance, farthest) {
+            (Some(d), _) => f64::from(d),
+            _ if limit > 0.0 => f64::from(limit),
+            (None, Some(f)) => f,
+            (None, None) => 100.0,
+        };
+        if let (true, Some((_, hi))) = (self.framed, bounds) {
+            // The framing looks down −Z: the depth of the bounds' front face.
+            let front = (self.eye.z - hi.z) * 0.99;
+            if front > 0.0 {
+                near = near.min(front);
+            }
         }
-        None => (1.0, 100.0),
-    };
-    let mut far = (farthest * 1.01).max(f64::MIN_POSITIVE * 1e6);
-    let mut near = (nearest * 0.99).max(far * 1e-6);
-    if let Some(n) = navigation {
-        if let Some(avatar) = n.avatar_size {
-            near = f64::from(avatar) / 2.0;
+        if !(near > 0.0 && near.is_finite()) {
+            near = f64::from(DEFAULT_AVATAR_SIZE) / 2.0;
         }
-        if n.visibility_limit > 0.0 {
-            far = f64::from(n.visibility_limit);
+        if !(far > near && far.is_finite()) {
+            far = near * 1e6;
         }
+        (near as f32, (far as f32).max(near as f32 * 2.0))
     }
-    if !(near > 0.0 && near.is_finite()) {
-        near = 0.1;
-    }
-    if !(far > near && far.is_finite()) {
-        far = near * 1e6;
-    }
-    (near as f32, (far as f32).max(near as f32 * 2.0))
 }
+
+/// NavigationInfo.avatarSize[0] by default (23.4.4).
+const DEFAULT_AVATAR_SIZE: f32 = 0.25;
 
 impl Walker<'_> {
     /// A Billboard's rotation (in its own coordinates) that turns its local +Z towards
@@ -263,6 +291,7 @@ impl Walker<'_> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::environment::Navigation;
     use super::*;
 
     fn doc(scene: &str) -> Document {
@@ -290,6 +319,64 @@ mod tests {
         let d = crate::parse::read(source.as_bytes()).document.unwrap();
         let v = find_viewpoint(&d, None).unwrap().unwrap();
         assert_eq!(v.eye, DVec3::new(1.0, 2.0, 3.0));
+    }
+
+    /// The planes of the first viewpoint (or the framing) of `scene`, and its bounds.
+    fn planes(scene: &str, bounds: (DVec3, DVec3), navigation: Option<Navigation>) -> (f32, f32) {
+        let d = doc(scene);
+        let viewpoint = find_viewpoint(&d, None).unwrap();
+        View::choose(viewpoint.as_ref(), Some(bounds)).depth_range(Some(bounds), navigation)
+    }
+
+    fn navigation(avatar: Option<f32>, visibility_limit: f32) -> Option<Navigation> {
+        Some(Navigation {
+            headlight: true,
+            avatar_size: avatar,
+            visibility_limit,
+        })
+    }
+
+    #[test]
+    fn the_near_plane_is_half_the_avatar_size_by_default_not_the_bounds_distance() {
+        // A unit box seen from (2, 0, 7.2): its front face is 6.7 ahead, nearer than the
+        // distance to its nearest point (6.87); the default avatarSize puts near at 0.125.
+        let unit_box = (DVec3::splat(-0.5), DVec3::splat(0.5));
+        let (near, far) = planes("<Viewpoint position='2 0 7.2'/>", unit_box, None);
+        assert_eq!(near, 0.125);
+        assert!(far > 8.1, "{far}");
+        // A NavigationInfo's avatarSize and visibilityLimit.
+        let (near, far) = planes(
+            "<Viewpoint position='2 0 7.2'/>",
+            unit_box,
+            navigation(Some(2.0), 50.0),
+        );
+        assert_eq!((near, far), (1.0, 50.0));
+        // An empty avatarSize: the default.
+        let (near, _) = planes("<Viewpoint/>", unit_box, navigation(None, 0.0));
+        assert_eq!(near, 0.125);
+        // X3D 4 nearDistance and farDistance come first; −1 leaves them to the defaults.
+        let (near, far) = planes(
+            "<Viewpoint nearDistance='0.01' farDistance='30'/>",
+            unit_box,
+            navigation(Some(2.0), 50.0),
+        );
+        assert_eq!((near, far), (0.01, 30.0));
+        let (near, _) = planes("<Viewpoint nearDistance='-1'/>", unit_box, None);
+        assert_eq!(near, 0.125);
+    }
+
+    #[test]
+    fn a_framed_small_scene_keeps_its_near_plane_in_front_of_it() {
+        // No viewpoint: x3dcheck frames the bounds; a 0.001-wide scene is framed from
+        // about 0.003 away, so the near plane comes in front of it.
+        let tiny = (DVec3::splat(-0.0005), DVec3::splat(0.0005));
+        let (near, far) = planes("", tiny, None);
+        let view = View::choose(None, Some(tiny));
+        assert!(near < (view.eye.z - 0.0005) as f32, "{near}");
+        assert!(near > 0.0 && far > near);
+        // A large one keeps the default.
+        let large = (DVec3::splat(-50.0), DVec3::splat(50.0));
+        assert_eq!(planes("", large, None).0, 0.125);
     }
 
     #[test]

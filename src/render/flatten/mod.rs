@@ -21,6 +21,7 @@ use super::draw_list::{DrawList, Light, MAX_CLIP_PLANES};
 use super::fields::{boolean, floats};
 use crate::model::bounds::{local_transform, Bounds};
 use crate::model::{Document, NodeId};
+use crate::validate::texturing::data_url;
 use place::Pending;
 
 /// Inline files nested deeper than this are not loaded (and cycles end here).
@@ -373,33 +374,50 @@ impl Walker<'_> {
             .unwrap_or_default();
         let mut reasons = Vec::new();
         for url in &urls {
-            let path = match super::textures::local_file(url, context.base, &self.options.base_dir)
-            {
-                Ok(path) => path,
-                Err(e) => {
-                    reasons.push(format!("{url}: {e}"));
+            // The file's bytes, the directory its urls are relative to, and what the
+            // stack of Inlines being walked knows it by (data: content, as browsers take
+            // it, is relative to the document that holds it and is bounded by the depth).
+            let (bytes, base, key) = match data_url::decode(url) {
+                Some(Ok(data)) => (data.bytes, context.base.to_path_buf(), PathBuf::new()),
+                Some(Err(e)) => {
+                    reasons.push(format!("{}: {e}", data_url::shown(url)));
                     continue;
                 }
-            };
-            if self.inline_stack.contains(&path) {
-                reasons.push(format!("{url}: inlines itself"));
-                continue;
-            }
-            let bytes = match std::fs::read(&path) {
-                Ok(bytes) => bytes,
-                Err(e) => {
-                    reasons.push(format!("{url}: {e}"));
-                    continue;
+                None => {
+                    let path = match super::textures::local_file(
+                        url,
+                        context.base,
+                        &self.options.base_dir,
+                    ) {
+                        Ok(path) => path,
+                        Err(e) => {
+                            reasons.push(format!("{url}: {e}"));
+                            continue;
+                        }
+                    };
+                    if self.inline_stack.contains(&path) {
+                        reasons.push(format!("{url}: inlines itself"));
+                        continue;
+                    }
+                    let bytes = match std::fs::read(&path) {
+                        Ok(bytes) => bytes,
+                        Err(e) => {
+                            reasons.push(format!("{url}: {e}"));
+                            continue;
+                        }
+                    };
+                    let base = path.parent().map(Path::to_path_buf).unwrap_or_default();
+                    (bytes, base, path)
                 }
             };
+            let url = data_url::shown(url);
             let Some(inlined) = crate::parse::read(&bytes).document else {
                 reasons.push(format!("{url}: not an X3D document"));
                 continue;
             };
-            let base = path.parent().map(Path::to_path_buf).unwrap_or_default();
             let serial = self.documents;
             self.documents += 1;
-            self.inline_stack.push(path);
+            self.inline_stack.push(key);
             let inner = Context {
                 doc: &inlined,
                 serial,
@@ -427,7 +445,7 @@ impl Walker<'_> {
             )
         });
         let view = camera::View::choose(self.viewpoint.as_ref(), bounds);
-        let (near, far) = camera::depth_range(bounds, view.eye, self.environment.navigation);
+        let (near, far) = view.depth_range(bounds, self.environment.navigation);
         let mut lights: Vec<Light> = self
             .lights
             .iter()

@@ -2,6 +2,7 @@
 
 use crate::model::Span;
 use crate::report::Diagnostic;
+use crate::validate::prototypes::externs::Resolved;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -9,8 +10,9 @@ crate::declare_rule! {
     /// Says which parts of a scene were not checked, so that a partial check never reads
     /// as "valid": Script code; shader source; prototypes the document declares but never
     /// instantiates (their bodies are checked as written, with no values passed through
-    /// `IS`); ExternProtoDeclare bodies, which live in other files; IMPORT/EXPORT; Inline
-    /// scenes.
+    /// `IS`); ExternProtoDeclare bodies, which live in other files (at the deep level, one
+    /// whose url resolves to a ProtoDeclare in a local file of the tree has its interface
+    /// compared with it and is not listed); IMPORT/EXPORT; Inline scenes.
     ///
     /// Each ProtoInstance of a ProtoDeclare is instantiated (19775-1 4.4.4) and every rule
     /// checks the nodes it builds with the values it passes, so a prototype with an
@@ -69,10 +71,12 @@ fn check(ctx: &mut Ctx) {
         instantiated[instantiation.proto] = true;
     }
     for (index, proto) in ctx.doc.protos.iter().enumerate() {
-        if instantiated[index] {
+        // At the deep level an external prototype resolved to a local ProtoDeclare has its
+        // interface compared with it (EXTERNPROTO_INTERFACE_MISMATCH, PROTO_CYCLE).
+        let resolved = matches!(ctx.externs.get(index), Some(Resolved::Found { .. }));
+        let what = if instantiated[index] || (proto.external && resolved) {
             continue;
-        }
-        let what = if proto.external {
+        } else if proto.external {
             format!(
                 "ExternProtoDeclare {}: its body is in another file and is not checked",
                 proto.name.text

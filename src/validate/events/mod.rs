@@ -4,7 +4,7 @@
 
 use super::Check;
 
-mod endpoint;
+pub(crate) mod endpoint;
 pub mod proto_body_empty;
 pub mod proto_field_unknown;
 pub mod route_field_unknown;

@@ -352,6 +352,24 @@ impl Prober {
     }
 }
 
+/// What the image a `data:` URL carries is (decoded within the same limits as files).
+pub fn probe_bytes(bytes: &[u8]) -> Probe {
+    let reader = image::ImageReader::new(std::io::Cursor::new(bytes));
+    let reader = match reader.with_guessed_format() {
+        Ok(reader) => reader,
+        Err(e) => return Probe::Broken(format!("cannot be read: {e}")),
+    };
+    let Some(format) = reader.format() else {
+        return Probe::Broken("is not in an image format x3dcheck recognises".into());
+    };
+    probe_format(reader, format, || {
+        format!(
+            "is too large to decode: more than {MAX_IMAGE_SIDE} pixels on a side or {} GiB decoded",
+            MAX_IMAGE_BYTES >> 30
+        )
+    })
+}
+
 fn decode(path: &Path) -> Probe {
     let reader = match image::ImageReader::open(path).and_then(|r| r.with_guessed_format()) {
         Ok(reader) => reader,
@@ -370,14 +388,22 @@ fn decode(path: &Path) -> Probe {
         }
         return Probe::Broken("is not in an image format x3dcheck recognises".into());
     };
+    probe_format(reader, format, || too_large(path))
+}
+
+/// Decodes an image of a known format within [`image_limits`].
+fn probe_format<R: std::io::BufRead + std::io::Seek>(
+    mut reader: image::ImageReader<R>,
+    format: image::ImageFormat,
+    too_large: impl Fn() -> String,
+) -> Probe {
     if !format.reading_enabled() {
         return Probe::Undecoded(format_name(format));
     }
-    let mut reader = reader;
     reader.limits(image_limits());
     match reader.decode() {
         Ok(_) => Probe::Decodes(format),
-        Err(image::ImageError::Limits(_)) => Probe::TooLarge(too_large(path)),
+        Err(image::ImageError::Limits(_)) => Probe::TooLarge(too_large()),
         Err(e) => Probe::Broken(format!("does not decode as {}: {e}", format_name(format))),
     }
 }

@@ -1,6 +1,7 @@
 //! IMAGE_UNREADABLE: a texture file that exists but does not decode.
 
-use super::files::{url_fields, Content, Probe, Prober, Resolution, Resolver};
+use super::data_url;
+use super::files::{probe_bytes, url_fields, Content, Probe, Prober, Resolution, Resolver};
 use crate::model::rules::LIMIT_EXCEEDED;
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
@@ -14,7 +15,9 @@ crate::declare_rule! {
     /// decoding (so a decompression bomb costs nothing) and reported as LIMIT_EXCEEDED.
     /// Each file is decoded once
     /// per document, however many nodes use it. Formats x3dcheck does not decode (DDS,
-    /// KTX, TGA, …) are IMAGE_FORMAT_UNSUPPORTED's.
+    /// KTX, TGA, …) are IMAGE_FORMAT_UNSUPPORTED's. The image a `data:` URL carries
+    /// (base64 or percent-encoded) is decoded the same way, and reported when its content
+    /// does not decode (an invalid data: URL included).
     ///
     /// ## Why it matters
     /// The browser finds the file but cannot show it: the shape is drawn untextured, or
@@ -46,23 +49,29 @@ fn check(ctx: &mut Ctx) {
             continue;
         }
         for url in field.entry.value.as_strings().unwrap_or_default() {
-            let Resolution::Local(path) = resolver.resolve(url) else {
-                continue;
+            let probe = match data_url::decode(url) {
+                Some(Ok(data)) => probe_bytes(&data.bytes),
+                Some(Err(why)) => Probe::Broken(why),
+                None => match resolver.resolve(url) {
+                    Resolution::Local(path) => prober.decode(&path),
+                    _ => continue,
+                },
             };
-            let (rule, why) = match prober.decode(&path) {
+            let (rule, why) = match probe {
                 Probe::Broken(why) => (&IMAGE_UNREADABLE, why),
                 Probe::TooLarge(why) => (&LIMIT_EXCEEDED, why),
                 Probe::Decodes(_) | Probe::Undecoded(_) => continue,
             };
             let type_name = ctx.doc.node(field.node).type_name();
+            let shown = data_url::shown(url);
             found.push(
                 Diagnostic::new(
                     rule,
                     field.entry.span,
-                    format!("{type_name}.{}: \"{url}\" {why}", field.entry.name()),
+                    format!("{type_name}.{}: \"{shown}\" {why}", field.entry.name()),
                 )
                 .node(field.node)
-                .value(url.clone()),
+                .value(shown),
             );
         }
     }
