@@ -7,10 +7,12 @@ use crate::model::{Document, NodeId, NodeKind, Place};
 /// of one of its interface fields — or None for a node of the scene. A node inside a
 /// prototype nested in a body belongs to the nested one.
 pub fn owners(doc: &Document) -> Vec<Option<usize>> {
-    let mut owners: Vec<Option<usize>> = Vec::with_capacity(doc.nodes.len());
-    for node in &doc.nodes {
+    // The nodes as written: the copies instantiation makes hold no definition.
+    let written = doc.written_nodes();
+    let mut owners: Vec<Option<usize>> = Vec::with_capacity(written.len());
+    for node in written {
         let owner = match node.place {
-            Place::Scene => None,
+            Place::Scene | Place::Instance { .. } => None,
             Place::ProtoBody { proto } | Place::ProtoField { proto, .. } => Some(proto),
             // A parent is made before its children, so its owner is known.
             Place::Field { parent, .. } => owners.get(parent.index()).copied().flatten(),
