@@ -316,6 +316,16 @@ fn skip_separators(
     i
 }
 
+/// Skips white space from `i`, in a value known to hold no comma: most values, scanned
+/// without [`skip_separators`]' per-byte comma test.
+#[inline(always)]
+fn skip_whitespace(s: &[u8], mut i: usize) -> usize {
+    while i < s.len() && is_separator(s[i]) {
+        i += 1;
+    }
+    i
+}
+
 /// The numbers of `s` into `values`; the offset of the first misplaced comma.
 fn scan_floats<F: Float, S: Sink<F>>(
     ty: FieldType,
@@ -325,8 +335,13 @@ fn scan_floats<F: Float, S: Sink<F>>(
     let n = s.len();
     let mut i = 0;
     let mut comma = None;
+    let has_comma = memchr::memchr(b',', s).is_some();
     loop {
-        i = skip_separators(ty, s, i, values.count(), &mut comma);
+        i = if has_comma {
+            skip_separators(ty, s, i, values.count(), &mut comma)
+        } else {
+            skip_whitespace(s, i)
+        };
         if i >= n {
             break;
         }
@@ -433,8 +448,13 @@ fn scan_int32s<S: Sink<i32>>(
     let n = s.len();
     let mut i = 0;
     let mut comma = None;
+    let has_comma = memchr::memchr(b',', s).is_some();
     loop {
-        i = skip_separators(ty, s, i, values.count(), &mut comma);
+        i = if has_comma {
+            skip_separators(ty, s, i, values.count(), &mut comma)
+        } else {
+            skip_whitespace(s, i)
+        };
         if i >= n {
             break;
         }
