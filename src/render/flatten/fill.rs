@@ -282,7 +282,7 @@ mod tests {
         assert_eq!(screen.covered(&huge), screen.pixels());
         // Crossing the near plane: only the part in front counts, at most the image.
         let crossing = mesh(
-            vec![[-1.0, -1.0, 1.0], [1.0, -1.0, 1.0], [0.0, 1.0, -1.0]],
+            vec![[-1.0, -1.0, 1.0], [1.0, -1.0, -1.0], [0.0, 1.0, -1.0]],
             vec![0, 1, 2],
             true,
         );
