@@ -15,6 +15,7 @@
 use std::path::{Path, PathBuf};
 
 use x3dcheck::config::CheckConfig;
+use x3dcheck::limits::{MAX_RENDER_SHAPES, RENDER_FILL_IMAGES};
 use x3dcheck::model::Document;
 use x3dcheck::render::{preview, render_image, Gpu, ImageSize, Quality, RenderArgs};
 use x3dcheck::report::FileReport;
@@ -238,6 +239,123 @@ fn exponential_use_expansion_renders_quickly_with_a_note() {
             .iter()
             .map(|d| &d.message)
             .collect::<Vec<_>>()
+    );
+}
+
+/// Checks and renders a generated scene at 160×120: the time both took and the report's
+/// LIMIT_EXCEEDED messages.
+fn render_generated(scene: &str) -> (std::time::Duration, Vec<String>) {
+    let started = std::time::Instant::now();
+    let x3dcheck::check::Checked {
+        mut report,
+        document: doc,
+        ..
+    } = x3dcheck::check::check_document("scene.x3d", scene.as_bytes(), &CheckConfig::default());
+    render_image(
+        &args(),
+        Path::new("scene.x3d"),
+        scene.as_bytes(),
+        doc.as_ref(),
+        &mut report,
+    )
+    .unwrap();
+    let limits = report
+        .diagnostics
+        .iter()
+        .filter(|d| d.code == "LIMIT_EXCEEDED")
+        .map(|d| d.message.clone())
+        .collect();
+    (started.elapsed(), limits)
+}
+
+#[test]
+fn shapes_piled_on_one_place_stop_at_the_fill_budget() {
+    if !x3dcheck::render::adapter_for_test("shapes_piled_on_one_place_stop_at_the_fill_budget") {
+        return;
+    }
+    // 300,000 unit spheres (7.5 MB), all at the origin: each is a few hundred triangles,
+    // but each is shaded wherever it covers the image; drawing them all took minutes.
+    let mut scene = String::from("<X3D profile='Interchange' version='4.0'><Scene>");
+    for _ in 0..300_000 {
+        scene.push_str("<Shape><Sphere/></Shape>");
+    }
+    scene.push_str("</Scene></X3D>");
+    let (elapsed, limits) = render_generated(&scene);
+    assert!(elapsed.as_secs() < 15, "took {elapsed:?}");
+    assert!(
+        limits.iter().any(|m| m.contains(&format!(
+            "shapes cover the image more than {RENDER_FILL_IMAGES} times over; drawn up to the first"
+        ))),
+        "{limits:#?}"
+    );
+}
+
+#[test]
+fn nested_uses_of_one_shape_stop_within_seconds() {
+    if !x3dcheck::render::adapter_for_test("nested_uses_of_one_shape_stop_within_seconds") {
+        return;
+    }
+    // 60 nested DEFs each USEd twice (3.8 KB, 2^60 paths to one Box): the walk stops at
+    // the shape budget, the fill budget at the boxes piled on one another.
+    let mut scene = String::from(
+        "<X3D profile='Interchange' version='4.0'><Scene><Group DEF='G0'><Shape><Box/></Shape></Group>",
+    );
+    for i in 1..=60 {
+        scene.push_str(&format!(
+            "<Group DEF='G{i}'><Group USE='G{}'/><Group USE='G{}'/></Group>",
+            i - 1,
+            i - 1
+        ));
+    }
+    scene.push_str("</Scene></X3D>");
+    let (elapsed, limits) = render_generated(&scene);
+    assert!(elapsed.as_secs() < 10, "took {elapsed:?}");
+    assert!(
+        limits
+            .iter()
+            .any(|m| m.ends_with(&format!("drawn up to {MAX_RENDER_SHAPES} shape instances"))),
+        "{limits:#?}"
+    );
+}
+
+#[test]
+fn many_small_shapes_stop_at_the_shape_budget_within_seconds() {
+    if !x3dcheck::render::adapter_for_test(
+        "many_small_shapes_stop_at_the_shape_budget_within_seconds",
+    ) {
+        return;
+    }
+    // A 256 × 256 grid of Boxes (2^16 shapes, nested USEs moved apart): each covers a
+    // pixel or two, so only the shape budget bounds the per-shape cost.
+    let mut scene = String::from(
+        "<X3D profile='Interchange' version='4.0'><Scene><Group DEF='G0'><Shape><Box/></Shape></Group>",
+    );
+    for i in 1..=16u32 {
+        let step = 3 << ((i - 1) / 2);
+        let offset = if i % 2 == 1 {
+            format!("{step} 0 0")
+        } else {
+            format!("0 {step} 0")
+        };
+        scene.push_str(&format!(
+            "<Group DEF='G{i}'><Transform translation='{offset}'><Group USE='G{}'/></Transform>\
+             <Group USE='G{}'/></Group>",
+            i - 1,
+            i - 1
+        ));
+    }
+    scene.push_str("</Scene></X3D>");
+    let (elapsed, limits) = render_generated(&scene);
+    assert!(elapsed.as_secs() < 10, "took {elapsed:?}");
+    assert!(
+        limits
+            .iter()
+            .any(|m| m.ends_with(&format!("drawn up to {MAX_RENDER_SHAPES} shape instances"))),
+        "{limits:#?}"
+    );
+    assert!(
+        !limits.iter().any(|m| m.contains("cover the image")),
+        "{limits:#?}"
     );
 }
 

@@ -172,6 +172,7 @@ pub fn preview(
             .as_ref()
             .is_some_and(|v| v.text.starts_with('3')),
         primitive_budget: flatten::primitive_budget(args.size.width, args.size.height),
+        image: (args.size.width, args.size.height),
     };
     let flattened = flatten::flatten(doc, &options)?;
     let diagnostics: Vec<Diagnostic> = flattened

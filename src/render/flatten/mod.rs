@@ -8,6 +8,7 @@
 mod appearance;
 mod camera;
 mod environment;
+mod fill;
 mod lights;
 mod place;
 mod shape;
@@ -30,7 +31,7 @@ const MAX_INLINE_DEPTH: usize = 8;
 const MAX_DEPTH: usize = 256;
 use crate::limits::{
     MAX_RENDER_NODE_INSTANCES as MAX_NODE_INSTANCES, MAX_RENDER_PRIMITIVES, MIN_RENDER_PRIMITIVES,
-    RENDER_PRIMITIVES_PER_PIXEL,
+    RENDER_FILL_IMAGES, RENDER_PRIMITIVES_PER_PIXEL,
 };
 
 /// Triangles (lines, points) drawn at most for an image of this size (the bounds of
@@ -58,6 +59,9 @@ pub struct Options<'a> {
     pub x3d_version_3: bool,
     /// Triangles, lines and points drawn at most (see [`primitive_budget`]).
     pub primitive_budget: usize,
+    /// The image's width and height in pixels: the shapes drawn may cover it
+    /// [`RENDER_FILL_IMAGES`] times over (the fill budget, see [`fill`]).
+    pub image: (u32, u32),
 }
 
 /// The material of a shape without an Appearance: unlit white (17.2.2.4).
@@ -467,15 +471,33 @@ impl Walker<'_> {
         }
         let frame = place::EyeFrame::new(view.eye, view.orientation);
         let global_lights = self.global_lights;
-        let meshes = self
-            .shapes
-            .into_iter()
-            .map(|p| p.place(&frame, global_lights))
-            .collect();
+        let camera = view.camera(near, far);
+        let (width, height) = self.options.image;
+        let screen = fill::Screen::new(&camera, width, height);
+        let fill_budget = screen.pixels() * RENDER_FILL_IMAGES as f64;
+        let (mut meshes, mut filled) = (Vec::with_capacity(self.shapes.len()), 0.0);
+        let shapes = self.shapes.len();
+        for pending in self.shapes {
+            let mesh = pending.place(&frame, global_lights);
+            filled += screen.covered(&mesh);
+            if filled > fill_budget {
+                self.notes.push(Note {
+                    node: None,
+                    message: format!(
+                        "renderer: the scene's {shapes} shapes cover the image more than \
+                         {RENDER_FILL_IMAGES} times over; drawn up to the first {} shapes",
+                        meshes.len()
+                    ),
+                    limit: true,
+                });
+                break;
+            }
+            meshes.push(mesh);
+        }
         let environment = self.environment;
         Flattened {
             list: DrawList {
-                camera: view.camera(near, far),
+                camera,
                 background: environment.background.unwrap_or_default(),
                 fog: environment.fog.flatten(),
                 lights,
