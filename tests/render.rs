@@ -308,7 +308,13 @@ fn nested_uses_of_one_shape_stop_within_seconds() {
         ));
     }
     scene.push_str("</Scene></X3D>");
-    let (elapsed, limits) = render_generated(&scene);
+    stops_at_the_shape_budget_within_seconds(&scene);
+}
+
+/// Renders `scene` and checks that it stopped at the shape budget within 10 s; the
+/// LIMIT_EXCEEDED messages.
+fn stops_at_the_shape_budget_within_seconds(scene: &str) -> Vec<String> {
+    let (elapsed, limits) = render_generated(scene);
     assert!(elapsed.as_secs() < 10, "took {elapsed:?}");
     assert!(
         limits
@@ -316,6 +322,7 @@ fn nested_uses_of_one_shape_stop_within_seconds() {
             .any(|m| m.ends_with(&format!("drawn up to {MAX_RENDER_SHAPES} shape instances"))),
         "{limits:#?}"
     );
+    limits
 }
 
 #[test]
@@ -345,14 +352,7 @@ fn many_small_shapes_stop_at_the_shape_budget_within_seconds() {
         ));
     }
     scene.push_str("</Scene></X3D>");
-    let (elapsed, limits) = render_generated(&scene);
-    assert!(elapsed.as_secs() < 10, "took {elapsed:?}");
-    assert!(
-        limits
-            .iter()
-            .any(|m| m.ends_with(&format!("drawn up to {MAX_RENDER_SHAPES} shape instances"))),
-        "{limits:#?}"
-    );
+    let limits = stops_at_the_shape_budget_within_seconds(&scene);
     assert!(
         !limits.iter().any(|m| m.contains("cover the image")),
         "{limits:#?}"
