@@ -502,22 +502,33 @@ impl<'s> Reader<'s> {
         self.depth -= 1;
     }
 
+    /// Whether a `[ … ]` list ends at `token`: its `]` (taken), or the end of the file
+    /// (reported as a missing `]` of `what`).
+    fn bracket_list_ends(&mut self, token: &Token<'s>, what: &str) -> bool {
+        match token.kind {
+            Kind::CloseBracket => {
+                self.lexer.next();
+                true
+            }
+            Kind::End => {
+                self.malformed(
+                    token.span(),
+                    format!("the file ends inside {what}: `]` is missing"),
+                );
+                true
+            }
+            _ => false,
+        }
+    }
+
     /// The `[ … ]` of declarations after its `[`, up to and with its `]`.
     fn declarations(&mut self, owner: Owner) {
         loop {
             let token = self.lexer.peek();
+            if self.bracket_list_ends(&token, "a PROTO interface `[`") {
+                return;
+            }
             match token.kind {
-                Kind::CloseBracket => {
-                    self.lexer.next();
-                    return;
-                }
-                Kind::End => {
-                    self.malformed(
-                        token.span(),
-                        "the file ends inside a PROTO interface `[`: `]` is missing",
-                    );
-                    return;
-                }
                 Kind::Id if access_type(token.text).is_some() => {
                     self.lexer.next();
                     self.declaration(owner, token);
@@ -1035,18 +1046,10 @@ impl<'s> Reader<'s> {
     fn node_list(&mut self, hint: Hint<'s>) {
         loop {
             let token = self.lexer.peek();
+            if self.bracket_list_ends(&token, "a node list") {
+                return;
+            }
             match token.kind {
-                Kind::CloseBracket => {
-                    self.lexer.next();
-                    return;
-                }
-                Kind::End => {
-                    self.malformed(
-                        token.span(),
-                        "the file ends inside a node list: `]` is missing",
-                    );
-                    return;
-                }
                 Kind::CloseBrace => {
                     // Left for the node it closes.
                     self.malformed(
