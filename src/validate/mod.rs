@@ -10,6 +10,7 @@ pub mod numbers;
 pub mod prototypes;
 mod registry;
 pub mod rendering;
+pub mod shaders;
 pub mod shape;
 pub mod suggest;
 pub mod texturing;
@@ -54,6 +55,8 @@ pub struct Ctx<'a> {
     pub base: Option<&'a std::path::Path>,
     /// What each ExternProtoDeclare's url resolves to (deep level; empty below it).
     pub externs: prototypes::externs::Externs,
+    /// The shader analysis, made by the first rule that needs it ([`shaders::analysis`]).
+    shaders: Option<std::rc::Rc<shaders::analysis::Analysis>>,
     diagnostics: Vec<Diagnostic>,
     /// Folded findings: (code, node, field) → index in `diagnostics`.
     folded: HashMap<(&'static str, NodeId, String), usize>,
@@ -226,6 +229,7 @@ pub fn check(
         file,
         base,
         externs,
+        shaders: None,
         diagnostics: Vec::new(),
         folded: HashMap::new(),
         full: false,

@@ -8,7 +8,9 @@ use crate::validate::Ctx;
 crate::declare_rule! {
     /// ## What it does
     /// Says which parts of a scene were not checked, so that a partial check never reads
-    /// as "valid": Script code; shader source; prototypes the document declares but never
+    /// as "valid": Script code; shader source (below the standard level; from it on,
+    /// what the GLSL compiler could not check: other languages, PackagedShader, sources
+    /// in network or, below deep, local files); prototypes the document declares but never
     /// instantiates (their bodies are checked as written, with no values passed through
     /// `IS`); ExternProtoDeclare bodies, which live in other files (at the deep level, one
     /// whose url resolves to a ProtoDeclare in a local file of the tree has its interface
@@ -54,6 +56,11 @@ fn check(ctx: &mut Ctx) {
             || node.is_a("ShaderPart")
             || node.is_a("ShaderProgram")
         {
+            // From the standard level on, GLSL is compiled and the shader rules say what
+            // was not (validate/shaders).
+            if ctx.config.level >= crate::diagnostic::Level::Standard {
+                continue;
+            }
             "shader source is not checked"
         } else if node.is_a("Inline") {
             "the inlined scene is not checked"
@@ -88,6 +95,12 @@ fn check(ctx: &mut Ctx) {
             )
         };
         found.push((proto.name.span, None, what));
+    }
+    if ctx.config.level >= crate::diagnostic::Level::Standard {
+        let shaders = crate::validate::shaders::analysis(ctx);
+        for (span, node, message) in &shaders.notes {
+            found.push((*span, Some(*node), message.clone()));
+        }
     }
     for &span in &ctx.doc.imports_exports {
         found.push((span, None, "IMPORT/EXPORT is not checked".to_string()));

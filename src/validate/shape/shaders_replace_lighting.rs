@@ -10,8 +10,8 @@ crate::declare_rule! {
     /// ## Why it matters
     /// 12.4.2: "If the field is not empty, one shader node is selected and the fixed
     /// rendering requirements defined by this specification are ignored": material,
-    /// texture and lighting rules no longer say what is drawn, and x3dcheck does not check
-    /// shader source, so the Shape's look is not verified.
+    /// texture and lighting rules no longer say what is drawn, and x3dcheck compiles GLSL
+    /// (SHADER_COMPILE_ERROR) but does not run it, so the Shape's look is not verified.
     ///
     /// ## Example
     /// ```xml
@@ -56,7 +56,7 @@ fn check(ctx: &mut Ctx) {
             Diagnostic::new(
                 &SHADERS_REPLACE_LIGHTING,
                 span,
-                format!("Appearance has {nodes}: fixed lighting and texturing are replaced, and shaders are not checked"),
+                format!("Appearance has {nodes}: fixed lighting and texturing are replaced, and what it draws is not verified"),
             )
             .node(id),
         );

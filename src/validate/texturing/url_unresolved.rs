@@ -1,6 +1,7 @@
 //! URL_UNRESOLVED: no entry of a url field names a readable local file.
 
 use super::files::{url_fields, Resolution, Resolver};
+use crate::validate::shaders::source::is_source_text;
 use crate::report::Diagnostic;
 use crate::validate::document::validation_incomplete::VALIDATION_INCOMPLETE;
 use crate::validate::Ctx;
@@ -20,7 +21,8 @@ crate::declare_rule! {
     ///   with no local file but a network entry gets VALIDATION_INCOMPLETE instead, as does
     ///   a relative URL of a document read from standard input.
     /// - `data:` URLs and script code (`ecmascript:`, `javascript:`, `vrmlscript:`, or a
-    ///   CDATA section, which the XML encoding adds as a url entry) need no file.
+    ///   CDATA section, which the XML encoding adds as a url entry) need no file, nor
+    ///   GLSL written in a shader part's url entry.
     /// - Files are read only inside the allowed tree: the directory given as the checking
     ///   root (the tree the user named on the command line), else the document's own
     ///   directory. `..` and symlinks are resolved first; an entry that leaves the tree is
@@ -58,7 +60,16 @@ fn check(ctx: &mut Ctx) {
         if urls.is_empty() || ctx.doc.node(field.node).source_code.is_some() {
             continue;
         }
-        let resolutions: Vec<Resolution> = urls.iter().map(|u| resolver.resolve(u)).collect();
+        // GLSL written straight into a shader part's url entry is its content too.
+        let node = ctx.doc.node(field.node);
+        let shader = node.is_a("ShaderPart") || node.is_a("ShaderProgram");
+        let resolutions: Vec<Resolution> = urls
+            .iter()
+            .map(|u| match shader && is_source_text(u) {
+                true => Resolution::Inline,
+                false => resolver.resolve(u),
+            })
+            .collect();
         if resolutions
             .iter()
             .any(|r| matches!(r, Resolution::Local(_) | Resolution::Inline))
