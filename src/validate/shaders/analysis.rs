@@ -121,7 +121,10 @@ fn check_program(ctx: &Ctx, program: &Program, resolver: Option<&Resolver>, out:
             out.notes.push((
                 node.name_span,
                 part,
-                format!("{}: type \"{ty}\" names no shader stage; not compiled", node.type_name()),
+                format!(
+                    "{}: type \"{ty}\" names no shader stage; not compiled",
+                    node.type_name()
+                ),
             ));
             continue;
         };
@@ -133,7 +136,10 @@ fn check_program(ctx: &Ctx, program: &Program, resolver: Option<&Resolver>, out:
                         Diagnostic::new(
                             &SHADER_COMPILE_ERROR,
                             source::line_span(ctx.source, &found.origin, None),
-                            format!("{} shader contains a NUL character, which GLSL does not allow", ty),
+                            format!(
+                                "{} shader contains a NUL character, which GLSL does not allow",
+                                ty
+                            ),
                         )
                         .node(part),
                     );
@@ -172,17 +178,28 @@ fn check_program(ctx: &Ctx, program: &Program, resolver: Option<&Resolver>, out:
     // compiles as neither.
     let mut compiled = glsl::compile(&inputs, complete, Unversioned::Desktop110);
     let unversioned_failed = compiled.as_ref().is_some_and(|program| {
-        program.parts.iter().zip(&inputs).any(|(result, (_, text))| {
-            matches!(result, Compiled::Failed(_)) && !text.contains("#version")
-        }) || !program.link_errors.is_empty()
+        program
+            .parts
+            .iter()
+            .zip(&inputs)
+            .any(|(result, (_, text))| {
+                matches!(result, Compiled::Failed(_)) && !text.contains("#version")
+            })
+            || !program.link_errors.is_empty()
     });
     if unversioned_failed {
         if let Some(es) = glsl::compile(&inputs, complete, Unversioned::Es100) {
             let failures = |p: &glsl::Program| {
-                p.parts.iter().filter(|r| matches!(r, Compiled::Failed(_))).count()
+                p.parts
+                    .iter()
+                    .filter(|r| matches!(r, Compiled::Failed(_)))
+                    .count()
                     + usize::from(!p.link_errors.is_empty())
             };
-            if compiled.as_ref().is_none_or(|desktop| failures(&es) < failures(desktop)) {
+            if compiled
+                .as_ref()
+                .is_none_or(|desktop| failures(&es) < failures(desktop))
+            {
                 compiled = Some(es);
             }
         }
@@ -302,15 +319,33 @@ fn compile_error(
     let span = source::line_span(file, &found.origin, first.line);
     let message = match (&found.origin, first.line) {
         (Origin::File { url, .. }, Some(line)) => {
-            format!("{stage} shader \"{url}\" does not compile: {url}:{line}: {}{more}", first.text)
+            format!(
+                "{stage} shader \"{url}\" does not compile: {url}:{line}: {}{more}",
+                first.text
+            )
         }
         (Origin::File { url, .. }, None) => {
-            format!("{stage} shader \"{url}\" does not compile: {}{more}", first.text)
+            format!(
+                "{stage} shader \"{url}\" does not compile: {}{more}",
+                first.text
+            )
         }
-        (Origin::Inline { first_line: Some(_), .. }, _) | (Origin::Inline { .. }, None) => {
+        (
+            Origin::Inline {
+                first_line: Some(_),
+                ..
+            },
+            _,
+        )
+        | (Origin::Inline { .. }, None) => {
             format!("{stage} shader does not compile: {}{more}", first.text)
         }
-        (Origin::Inline { first_line: None, .. }, Some(line)) => format!(
+        (
+            Origin::Inline {
+                first_line: None, ..
+            },
+            Some(line),
+        ) => format!(
             "{stage} shader does not compile: line {line} of its source: {}{more}",
             first.text
         ),
@@ -360,7 +395,9 @@ fn compare_fields(
             }
             continue;
         };
-        let Some(glsl_type) = uniform.ty.as_deref() else { continue };
+        let Some(glsl_type) = uniform.ty.as_deref() else {
+            continue;
+        };
         if !uniforms::is_builtin(glsl_type) {
             continue;
         }

@@ -65,7 +65,9 @@ pub struct Message {
 pub enum Compiled {
     /// The preprocessed source (macros expanded, comments and inactive `#if` branches
     /// gone), where uniform declarations are looked for.
-    Ok { preprocessed: String },
+    Ok {
+        preprocessed: String,
+    },
     Failed(Vec<Message>),
 }
 
@@ -273,7 +275,11 @@ mod tests {
     use super::*;
 
     fn first_error(stage: Stage, source: &str) -> Option<Message> {
-        match compile(&[(stage, source)], true, Unversioned::Desktop110).unwrap().parts.remove(0) {
+        match compile(&[(stage, source)], true, Unversioned::Desktop110)
+            .unwrap()
+            .parts
+            .remove(0)
+        {
             Compiled::Ok { .. } => None,
             Compiled::Failed(messages) => Some(messages[0].clone()),
         }
@@ -285,9 +291,11 @@ mod tests {
         assert_eq!(first_error(Stage::Vertex, legacy), None);
         let v120 = "#version 120\nvarying vec2 t;\nvoid main() { gl_Position = ftransform(); t = gl_MultiTexCoord0.st; }";
         assert_eq!(first_error(Stage::Vertex, v120), None);
-        let es100 = "#version 100\nprecision mediump float;\nvoid main() { gl_FragColor = vec4(1.0); }";
+        let es100 =
+            "#version 100\nprecision mediump float;\nvoid main() { gl_FragColor = vec4(1.0); }";
         assert_eq!(first_error(Stage::Fragment, es100), None);
-        let es300 = "#version 300 es\nprecision highp float;\nout vec4 c;\nvoid main() { c = vec4(1.0); }";
+        let es300 =
+            "#version 300 es\nprecision highp float;\nout vec4 c;\nvoid main() { c = vec4(1.0); }";
         assert_eq!(first_error(Stage::Fragment, es300), None);
         let v460 = "#version 460\nlayout(location = 0) out vec4 c;\nvoid main() { c = vec4(1.0); }";
         assert_eq!(first_error(Stage::Fragment, v460), None);
@@ -295,8 +303,11 @@ mod tests {
 
     #[test]
     fn errors_name_their_line() {
-        let error = first_error(Stage::Fragment, "void main()\n{\n  gl_FragColor = colour;\n}")
-            .expect("an undeclared identifier");
+        let error = first_error(
+            Stage::Fragment,
+            "void main()\n{\n  gl_FragColor = colour;\n}",
+        )
+        .expect("an undeclared identifier");
         assert_eq!(error.line, Some(3), "{error:?}");
         assert!(error.text.contains("colour"), "{error:?}");
     }
@@ -317,7 +328,10 @@ mod tests {
             Unversioned::Desktop110,
         )
         .unwrap();
-        assert!(program.parts.iter().all(|p| matches!(p, Compiled::Ok { .. })));
+        assert!(program
+            .parts
+            .iter()
+            .all(|p| matches!(p, Compiled::Ok { .. })));
         assert!(!program.link_errors.is_empty());
     }
 }

@@ -261,11 +261,7 @@ mod tests {
         }
         chain.push_str("A39\n");
         assert!(!within_bound(&chain));
-        let nested = format!(
-            "#define F(x) x x\n{}y{}\n",
-            "F(".repeat(40),
-            ")".repeat(40)
-        );
+        let nested = format!("#define F(x) x x\n{}y{}\n", "F(".repeat(40), ")".repeat(40));
         assert!(!within_bound(&nested));
     }
 }

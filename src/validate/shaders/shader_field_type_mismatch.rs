@@ -5,7 +5,9 @@ use crate::validate::Ctx;
 crate::declare_rule! {
     /// ## What it does
     /// Compares the type of each field of a GLSL ComposedShader (or ShaderProgram) with
-    /// the type its uniform is declared with, by the mapping of 19775-1 Annex I:
+    /// the type its uniform is declared with, by the mapping of 19775-1 Annex I.
+    ///
+    /// The mapping:
     ///
     /// | X3D field | GLSL uniform |
     /// |---|---|

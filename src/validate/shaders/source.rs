@@ -79,7 +79,9 @@ pub fn data_text(url: &str) -> Option<Result<(String, usize), String>> {
         return None;
     }
     let Some(comma) = trimmed.find(',') else {
-        return Some(Err("is a data: URL without a comma before its content".into()));
+        return Some(Err(
+            "is a data: URL without a comma before its content".into()
+        ));
     };
     let header = trimmed[5..comma].trim();
     let body = &trimmed[comma + 1..];
@@ -90,7 +92,11 @@ pub fn data_text(url: &str) -> Option<Result<(String, usize), String>> {
     let bytes = if base64 {
         match data_url::forgiving_base64::decode_to_vec(body.as_bytes()) {
             Ok(bytes) => bytes,
-            Err(_) => return Some(Err("is a data: URL whose base64 content does not decode".into())),
+            Err(_) => {
+                return Some(Err(
+                    "is a data: URL whose base64 content does not decode".into()
+                ))
+            }
         }
     } else {
         percent_decode(body)
@@ -123,12 +129,7 @@ fn percent_decode(text: &str) -> Vec<u8> {
 
 /// Finds the source of a ShaderPart or ShaderProgram. `resolver` is given at the deep
 /// level only.
-pub fn find(
-    doc: &Document,
-    file: &[u8],
-    id: NodeId,
-    resolver: Option<&Resolver>,
-) -> Found {
+pub fn find(doc: &Document, file: &[u8], id: NodeId, resolver: Option<&Resolver>) -> Found {
     let node = doc.node(id);
     let name = node.type_name();
     if node.is_connected("url") {
@@ -348,10 +349,15 @@ pub fn line_span(file: &[u8], origin: &Origin, line: Option<u32>) -> Span {
             None => return entry,
         }
     }
-    let end = memchr::memchr(b'\n', &file[at..entry.range().end]).map_or(entry.range().end, |n| at + n);
+    let end =
+        memchr::memchr(b'\n', &file[at..entry.range().end]).map_or(entry.range().end, |n| at + n);
     let text = &file[at..end];
     let lead = text.iter().take_while(|b| b.is_ascii_whitespace()).count();
-    let trail = text.iter().rev().take_while(|b| b.is_ascii_whitespace()).count();
+    let trail = text
+        .iter()
+        .rev()
+        .take_while(|b| b.is_ascii_whitespace())
+        .count();
     if lead == text.len() {
         return Span::new(at, at);
     }
@@ -369,9 +375,13 @@ mod tests {
             .unwrap();
         assert_eq!(text, "#version 300 es\nvoid main() {}");
         assert_eq!(offset, 16);
-        let (text, _) = data_text("data:text/plain;charset=utf-8,a%20b%zz%").unwrap().unwrap();
+        let (text, _) = data_text("data:text/plain;charset=utf-8,a%20b%zz%")
+            .unwrap()
+            .unwrap();
         assert_eq!(text, "a b%zz%");
-        let (text, _) = data_text("data:text/plain;base64,dm9pZCBtYWluKCkge30=").unwrap().unwrap();
+        let (text, _) = data_text("data:text/plain;base64,dm9pZCBtYWluKCkge30=")
+            .unwrap()
+            .unwrap();
         assert_eq!(text, "void main() {}");
         assert!(data_text("shader.vs").is_none());
         assert!(data_text("data:;base64,!!").unwrap().is_err());
@@ -388,10 +398,7 @@ mod tests {
 
     #[test]
     fn quoted_elements_are_found() {
-        assert_eq!(
-            string_elements(br#""a" "b\"c""#),
-            vec![(1, 2), (5, 9)]
-        );
+        assert_eq!(string_elements(br#""a" "b\"c""#), vec![(1, 2), (5, 9)]);
         assert_eq!(string_elements(br#"["x", "y"]"#), vec![(2, 3), (7, 8)]);
     }
 }

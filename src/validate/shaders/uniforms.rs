@@ -230,7 +230,9 @@ fn tokens(text: &str) -> Vec<&str> {
                 i += 1;
             }
         } else if b.is_ascii_alphanumeric() || b == b'_' || b == b'.' {
-            while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || matches!(bytes[i], b'_' | b'.')) {
+            while i < bytes.len()
+                && (bytes[i].is_ascii_alphanumeric() || matches!(bytes[i], b'_' | b'.'))
+            {
                 i += 1;
             }
         } else {
@@ -304,7 +306,10 @@ pub fn is_builtin(ty: &str) -> bool {
         || ty.starts_with("usampler")
         || ["vec", "ivec", "uvec", "bvec", "dvec", "mat", "dmat"]
             .iter()
-            .any(|p| ty.strip_prefix(p).is_some_and(|n| n.starts_with(|c: char| c.is_ascii_digit())))
+            .any(|p| {
+                ty.strip_prefix(p)
+                    .is_some_and(|n| n.starts_with(|c: char| c.is_ascii_digit()))
+            })
 }
 
 #[cfg(test)]

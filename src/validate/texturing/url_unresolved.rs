@@ -1,9 +1,9 @@
 //! URL_UNRESOLVED: no entry of a url field names a readable local file.
 
 use super::files::{url_fields, Resolution, Resolver};
-use crate::validate::shaders::source::is_source_text;
 use crate::report::Diagnostic;
 use crate::validate::document::validation_incomplete::VALIDATION_INCOMPLETE;
+use crate::validate::shaders::source::is_source_text;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -65,9 +65,12 @@ fn check(ctx: &mut Ctx) {
         let shader = node.is_a("ShaderPart") || node.is_a("ShaderProgram");
         let resolutions: Vec<Resolution> = urls
             .iter()
-            .map(|u| match shader && is_source_text(u) {
-                true => Resolution::Inline,
-                false => resolver.resolve(u),
+            .map(|u| {
+                if shader && is_source_text(u) {
+                    Resolution::Inline
+                } else {
+                    resolver.resolve(u)
+                }
             })
             .collect();
         if resolutions
