@@ -143,6 +143,17 @@ fn check_program(ctx: &Ctx, program: &Program, resolver: Option<&Resolver>, out:
                         )
                         .node(part),
                     );
+                } else if !macros::nesting_within_bound(&found.text) {
+                    complete = false;
+                    out.notes.push((
+                        node.name_span,
+                        part,
+                        format!(
+                            "{}: not compiled: its brackets nest more than {} deep",
+                            node.type_name(),
+                            macros::MAX_NESTING
+                        ),
+                    ));
                 } else if !macros::within_bound(&found.text) {
                     complete = false;
                     out.notes.push((

@@ -14,6 +14,30 @@ use std::collections::HashMap;
 /// Sources whose macros may expand past this many tokens are not compiled.
 pub const MAX_EXPANDED_TOKENS: u64 = 4_000_000;
 
+/// Sources nesting brackets deeper than this are not compiled: glslang walks its syntax
+/// tree recursively, so `((((…))))` a hundred thousand deep would overflow the stack.
+/// Real shaders nest a few dozen deep at most.
+pub const MAX_NESTING: usize = 256;
+
+/// Whether `(`, `[` and `{` nest at most [`MAX_NESTING`] deep (comments included: a
+/// bound, not a parse).
+pub fn nesting_within_bound(source: &str) -> bool {
+    let mut depth = 0usize;
+    for b in source.bytes() {
+        match b {
+            b'(' | b'[' | b'{' => {
+                depth += 1;
+                if depth > MAX_NESTING {
+                    return false;
+                }
+            }
+            b')' | b']' | b'}' => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+    }
+    true
+}
+
 struct Macro<'a> {
     params: Vec<&'a str>,
     function: bool,
@@ -245,6 +269,19 @@ fn call_depth(tokens: &[&str], is_macro: impl Fn(&str) -> bool) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn deep_nesting_is_caught() {
+        let deep = format!(
+            "float f() {{ return {}1.0{}; }}",
+            "(".repeat(10_000),
+            ")".repeat(10_000)
+        );
+        assert!(!nesting_within_bound(&deep));
+        assert!(nesting_within_bound(
+            "void main() { if (a) { b[(1)] = 0; } }"
+        ));
+    }
 
     #[test]
     fn real_macros_pass() {

@@ -36,8 +36,9 @@ crate::declare_rule! {
     ///   fragment input to be written by the vertex stage (neither does
     ///   GL_ARB_separate_shader_objects), so that is not reported.
     /// - Macros are bounded before glslang sees them (its preprocessor has no limit): a
-    ///   source whose macros could expand past 4,000,000 tokens is not compiled and gets
-    ///   VALIDATION_INCOMPLETE. `#include` is refused.
+    ///   source whose macros could expand past 4,000,000 tokens, or whose brackets nest
+    ///   more than 256 deep, is not compiled and gets VALIDATION_INCOMPLETE. `#include`
+    ///   is refused.
     ///
     /// Reported at the standard level for sources in the X3D file, at the deep level for
     /// local files.
