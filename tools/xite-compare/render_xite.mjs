@@ -81,6 +81,9 @@ async function loadInPage({ url, width, height }) {
    browser.setBrowserOption("Shading", "PHONG");
    // Spheres, cones and cylinders closest to the true surface.
    browser.setBrowserOption("PrimitiveQuality", "HIGH");
+   // The view compared is the bound Viewpoint's: no falling of a WALK viewer (23.4.4
+   // terrain following) over the frames before the screenshot.
+   browser.setBrowserOption("Gravity", 0);
    await browser.loadURL(new X3D.MFString(url));
    for (let i = 0; i < 4; i++) await browser.nextFrame();
 }
