@@ -16,8 +16,9 @@ pub struct RenderArgs {
     #[arg(long, value_enum, default_value_t = Quality::Balanced)]
     pub quality: Quality,
     /// The Viewpoint to render from: `auto` (the first Viewpoint, else a framing of the
-    /// scene's bounds) or the DEF name of a Viewpoint
-    #[arg(long, value_name = "auto|DEF", default_value = "auto")]
+    /// scene's bounds), `browser` (the first Viewpoint, else the X3D default Viewpoint at
+    /// 0 0 10, as a browser binds) or the DEF name of a Viewpoint
+    #[arg(long, value_name = "auto|browser|DEF", default_value = "auto")]
     pub camera: String,
 }
 

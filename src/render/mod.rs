@@ -165,7 +165,7 @@ pub fn preview(
         .unwrap_or(Path::new("."))
         .to_path_buf();
     let options = flatten::Options {
-        camera: (args.camera != "auto").then_some(args.camera.as_str()),
+        camera: flatten::CameraChoice::parse(&args.camera),
         base_dir,
         x3d_version_3: doc
             .version_text

@@ -80,6 +80,22 @@ pub fn find_viewpoint(
     }
 }
 
+/// The view of a Viewpoint with every field at its default (position 0 0 10, no rotation,
+/// fieldOfView π/4, planes left to the NavigationInfo): the view of a scene without any
+/// Viewpoint in a browser (bindable nodes, 7.2.2; the NIST conformance scene
+/// noviewpoint.x3d expects this view, and X_ITE takes it).
+pub fn default_viewpoint() -> ViewpointFound {
+    ViewpointFound {
+        eye: DVec3::new(0.0, 0.0, 10.0),
+        orientation: DQuat::IDENTITY,
+        projection: Projection::Perspective {
+            field_of_view: std::f32::consts::FRAC_PI_4,
+        },
+        near_distance: None,
+        far_distance: None,
+    }
+}
+
 /// A Viewpoint, OrthoViewpoint or GeoViewpoint (X3D 3.0 and 3.1 have no
 /// X3DViewpointNode type above Viewpoint).
 pub fn is_viewpoint(node: &crate::model::Node) -> bool {

@@ -51,9 +51,31 @@ pub struct Note {
     pub limit: bool,
 }
 
+/// Which view the image is taken from (`--camera`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CameraChoice<'a> {
+    /// The first Viewpoint, else a framing of the scene's bounds.
+    Auto,
+    /// The first Viewpoint, else the X3D default Viewpoint (position 0 0 10, looking down
+    /// −Z, fieldOfView π/4): the view a browser binds (see [`camera::default_viewpoint`]).
+    Browser,
+    /// The Viewpoint DEF'd so.
+    Named(&'a str),
+}
+
+impl<'a> CameraChoice<'a> {
+    /// `auto`, `browser`, or a DEF name.
+    pub fn parse(text: &'a str) -> CameraChoice<'a> {
+        match text {
+            "auto" => CameraChoice::Auto,
+            "browser" => CameraChoice::Browser,
+            name => CameraChoice::Named(name),
+        }
+    }
+}
+
 pub struct Options<'a> {
-    /// The DEF name of the Viewpoint to use; None: the first one, else automatic.
-    pub camera: Option<&'a str>,
+    pub camera: CameraChoice<'a>,
     /// The document's directory (relative urls), and the tree files may be read from.
     pub base_dir: PathBuf,
     pub x3d_version_3: bool,
@@ -120,7 +142,13 @@ struct Context<'d> {
 }
 
 pub fn flatten(doc: &Document, options: &Options) -> Result<Flattened, String> {
-    let viewpoint = camera::find_viewpoint(doc, options.camera)?;
+    let viewpoint = match options.camera {
+        CameraChoice::Auto => camera::find_viewpoint(doc, None)?,
+        CameraChoice::Browser => {
+            Some(camera::find_viewpoint(doc, None)?.unwrap_or_else(camera::default_viewpoint))
+        }
+        CameraChoice::Named(name) => camera::find_viewpoint(doc, Some(name))?,
+    };
     let mut walker = Walker {
         options,
         notes: Vec::new(),
