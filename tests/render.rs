@@ -596,7 +596,7 @@ fn viewports_confine_layers_and_cut_their_children() {
     use x3dcheck::render::draw_list::Viewport;
     let scene = "<X3D profile='Full' version='4.0'><Scene><LayerSet order='1'><Layer>\
         <Viewport containerField='viewport' clipBoundary='0.5 1 0 0.5'/>\
-        <Viewport clipBoundary='0 0.5 0 1'><Shape><Box/></Shape></Viewport>\
+        <Viewport containerField='children' clipBoundary='0 0.5 0 1'><Shape><Box/></Shape></Viewport>\
         <Shape><Sphere/></Shape></Layer></LayerSet></Scene></X3D>";
     let (list, _) = draw_list_of(scene);
     let layer = &list.layers[0];
@@ -628,7 +628,7 @@ fn viewports_confine_layers_and_cut_their_children() {
 #[test]
 fn what_layering_and_layout_do_not_draw_is_noted() {
     let scene = "<X3D profile='Full' version='4.0'><Scene>\
-        <Group><Layer><Shape><Box/></Shape></Layer></Group>\
+        <Group><Layer containerField='children'><Shape><Box/></Shape></Layer></Group>\
         <LayoutGroup><Layout size='0.5'/><Shape><Box/></Shape></LayoutGroup>\
         <ScreenGroup><Shape><Box/></Shape></ScreenGroup>\
         <LayerSet order='0 1'><LayoutLayer><Viewpoint/></LayoutLayer></LayerSet>\
