@@ -37,7 +37,8 @@ pub const MAX_GRADIENT: usize = 8;
 
 #[derive(Clone, Debug)]
 pub struct DrawList {
-    /// At least one; the first is drawn first (at the bottom).
+    /// In drawing order, the first at the bottom; none (LayerSet.order naming no layer):
+    /// a black image.
     pub layers: Vec<Layer>,
     /// The textures of every layer's meshes.
     pub textures: Vec<Texture>,
