@@ -249,7 +249,10 @@ fn render_at_fast_keeps_the_values_and_draws_what_standard_draws() {
         let preview = x3dcheck::render::prepare(&args, &scene, &source, doc.as_ref(), &mut report)
             .unwrap()
             .unwrap();
-        (preview.list().meshes.len(), format!("{:?}", preview.list()))
+        (
+            preview.list().meshes().count(),
+            format!("{:?}", preview.list()),
+        )
     };
     let standard = draw(&CheckConfig::default());
     assert!(standard.0 > 0, "the case draws meshes");

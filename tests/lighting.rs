@@ -533,7 +533,7 @@ fn flattened_lights(fields: &str) -> Vec<Light> {
         &mut report,
     )
     .expect("a preview");
-    preview.list().lights.clone()
+    preview.list().layers[0].lights.clone()
 }
 
 fn field_text() -> impl Strategy<Value = String> {

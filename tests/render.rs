@@ -495,3 +495,172 @@ fn no_adapter_skips_loudly_or_fails() {
         "{text}"
     );
 }
+
+/// The draw list of `scene` (no GPU needed) and the renderer's notes.
+fn draw_list_of(scene: &str) -> (x3dcheck::render::draw_list::DrawList, Vec<String>) {
+    let x3dcheck::check::Checked {
+        mut report,
+        document: doc,
+        ..
+    } = x3dcheck::check::check_document("scene.x3d", scene.as_bytes(), &CheckConfig::default());
+    let list = preview(
+        &args(),
+        Quality::Balanced.settings(),
+        Path::new("scene.x3d"),
+        scene.as_bytes(),
+        doc.as_ref(),
+        &mut report,
+    )
+    .unwrap()
+    .list()
+    .clone();
+    let notes = report
+        .diagnostics
+        .iter()
+        .filter(|d| d.message.starts_with("renderer:"))
+        .map(|d| d.message.clone())
+        .collect();
+    (list, notes)
+}
+
+/// An unlit square of `size` at `x` with emissive colour `rgb`.
+fn square(x: f32, size: f32, rgb: &str) -> String {
+    format!(
+        "<Transform translation='{x} 0 0'><Shape><Appearance><Material diffuseColor='0 0 0' \
+         emissiveColor='{rgb}'/></Appearance><Rectangle2D size='{size} {size}'/></Shape></Transform>"
+    )
+}
+
+#[test]
+fn layer_set_order_picks_reorders_and_repeats_layers() {
+    // Layers 1, 2, 3 hold one square each (x = 1, 2, 3); the root scene one at x = 0.
+    let layers: String = (1..=3)
+        .map(|i| format!("<Layer>{}</Layer>", square(i as f32, 1.0, "1 1 1")))
+        .collect();
+    let scene = |order: &str| {
+        format!(
+            "<X3D profile='Full' version='4.0'><Scene><Viewpoint position='0 0 10'/>{}\
+             <LayerSet {order}>{layers}</LayerSet></Scene></X3D>",
+            square(0.0, 1.0, "1 0 0")
+        )
+    };
+    // Each layer's square, told by where it lies relative to its own (framed) eye.
+    let squares = |order: &str| {
+        let (list, _) = draw_list_of(&scene(order));
+        list.layers
+            .iter()
+            .map(|l| (l.meshes.len(), l.background.is_some()))
+            .collect::<Vec<_>>()
+    };
+    // 35.4.2: 0 is the root scene; 9 and −1 name no layer; a repeated layer is drawn again.
+    assert_eq!(
+        squares("order='2 0 9 2 -1'"),
+        vec![(1, false), (1, true), (1, false)]
+    );
+    // The default order [0]: only the root scene.
+    assert_eq!(squares(""), vec![(1, true)]);
+    // An empty order draws nothing.
+    assert_eq!(squares("order=''"), vec![]);
+    // Without a LayerSet the scene is one layer.
+    let (list, _) = draw_list_of(&format!(
+        "<X3D profile='Full' version='4.0'><Scene>{}</Scene></X3D>",
+        square(0.0, 1.0, "1 0 0")
+    ));
+    assert_eq!(list.layers.len(), 1);
+}
+
+#[test]
+fn each_layer_binds_its_own_viewpoint_navigation_and_lights() {
+    let scene = "<X3D profile='Full' version='4.0'><Scene>\
+        <Viewpoint position='0 0 10'/><PointLight location='0 5 0'/><Shape><Box/></Shape>\
+        <LayerSet order='0 1'><Layer><NavigationInfo headlight='false'/>\
+        <Viewpoint position='0 0 50'/><Shape><Box/></Shape></Layer></LayerSet>\
+        </Scene></X3D>";
+    let (list, _) = draw_list_of(scene);
+    assert_eq!(list.layers.len(), 2);
+    let depth = |layer: usize| {
+        let positions = &list.layers[layer].meshes[0].positions;
+        positions.iter().map(|p| p[2]).sum::<f32>() / positions.len() as f32
+    };
+    // Positions are relative to each layer's own eye.
+    assert!((depth(0) + 10.0).abs() < 0.01, "{}", depth(0));
+    assert!((depth(1) + 50.0).abs() < 0.01, "{}", depth(1));
+    // Layer 0: its PointLight and the headlight; layer 1: neither (its NavigationInfo
+    // turns the headlight off, and layer 0's light is not its own).
+    assert_eq!(list.layers[0].lights.len(), 2);
+    assert_eq!(list.layers[1].lights.len(), 0);
+}
+
+#[test]
+fn viewports_confine_layers_and_cut_their_children() {
+    use x3dcheck::render::draw_list::Viewport;
+    let scene = "<X3D profile='Full' version='4.0'><Scene><LayerSet order='1'><Layer>\
+        <Viewport containerField='viewport' clipBoundary='0.5 1 0 0.5'/>\
+        <Viewport containerField='children' clipBoundary='0 0.5 0 1'><Shape><Box/></Shape></Viewport>\
+        <Shape><Sphere/></Shape></Layer></LayerSet></Scene></X3D>";
+    let (list, _) = draw_list_of(scene);
+    let layer = &list.layers[0];
+    assert_eq!(
+        layer.viewport,
+        Viewport {
+            left: 0.5,
+            right: 1.0,
+            bottom: 0.0,
+            top: 0.5
+        }
+    );
+    // The Viewport node's rectangle is a part of the layer's.
+    let cut: Vec<Option<Viewport>> = layer.meshes.iter().map(|m| m.scissor).collect();
+    assert_eq!(
+        cut,
+        vec![
+            Some(Viewport {
+                left: 0.5,
+                right: 0.75,
+                bottom: 0.0,
+                top: 0.5
+            }),
+            None
+        ]
+    );
+}
+
+#[test]
+fn what_layering_and_layout_do_not_draw_is_noted() {
+    let scene = "<X3D profile='Full' version='4.0'><Scene>\
+        <Group><Layer containerField='children'><Shape><Box/></Shape></Layer></Group>\
+        <LayoutGroup><Layout size='0.5'/><Shape><Box/></Shape></LayoutGroup>\
+        <ScreenGroup><Shape><Box/></Shape></ScreenGroup>\
+        <LayerSet order='0 1'><LayoutLayer><Viewpoint/></LayoutLayer></LayerSet>\
+        <LayerSet/></Scene></X3D>";
+    let (_, notes) = draw_list_of(scene);
+    for expected in [
+        "renderer: Layer is drawn only in LayerSet.layers (35.2.3)",
+        "renderer: LayoutGroup outside a LayoutLayer: drawn as a Group, its Layout is not applied (36.2.1)",
+        "renderer: ScreenGroup: drawn as a Group, not scaled to pixels (36.4.5)",
+        "renderer: only one LayerSet is allowed (35.2.2): this one is not drawn",
+        "renderer: LayoutLayer: its Viewpoint is not used; the layer is drawn in its layout's 2D coordinates (36.2.1)",
+    ] {
+        assert!(notes.iter().any(|n| n == expected), "{expected}: {notes:#?}");
+    }
+}
+
+#[test]
+fn the_fill_budget_counts_every_layer() {
+    // One layer, listed 40 times, whose square covers the whole image: 40 images' worth.
+    let order = vec!["1"; 40].join(" ");
+    let scene = format!(
+        "<X3D profile='Full' version='4.0'><Scene><LayerSet order='{order}'><Layer>\
+         <Viewpoint position='0 0 1'/>{}</Layer></LayerSet></Scene></X3D>",
+        square(0.0, 100.0, "1 1 1")
+    );
+    let (list, notes) = draw_list_of(&scene);
+    let drawn = list.layers.iter().filter(|l| !l.meshes.is_empty()).count();
+    assert!(drawn <= RENDER_FILL_IMAGES as usize, "{drawn} layers drawn");
+    assert!(
+        notes.iter().any(|m| m.contains(&format!(
+            "shapes cover the image more than {RENDER_FILL_IMAGES} times over"
+        ))),
+        "{notes:#?}"
+    );
+}

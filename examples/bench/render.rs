@@ -514,7 +514,7 @@ impl Attributes {
     const EVERYTHING: u64 = 12 + 16 + 8;
 
     fn add(&mut self, list: &DrawList) {
-        for mesh in &list.meshes {
+        for mesh in list.meshes() {
             let n = mesh.positions.len() as u64;
             self.meshes += 1;
             self.vertices += n;

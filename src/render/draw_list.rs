@@ -17,8 +17,12 @@
 //! - **Resolved materials.** Colours are in [0, 1] (as the lighting equations of clause
 //!   17 expect), alpha is 1 − transparency, and every texture reference is an index into
 //!   [`DrawList::textures`] with a texture coordinate set of its mesh.
-//! - **Lights.** At most [`MAX_LIGHTS`]; each mesh says by a bit mask which lights reach
-//!   it (global lights reach all; a scoped light reaches its group's descendants).
+//! - **Lights.** At most [`MAX_LIGHTS`] per layer; each mesh says by a bit mask which
+//!   lights of its layer reach it (global lights reach all; a scoped light reaches its
+//!   group's descendants).
+//! - **Layers** (19775-1 35.2): drawn in list order, each over the previous with the
+//!   depth cleared, each with its own camera, background, fog and lights, within its
+//!   [`Viewport`] of the image. Positions are relative to the eye of their own layer.
 
 /// How many lights a shape can receive; more are reported as not drawn.
 pub const MAX_LIGHTS: usize = 16;
@@ -33,12 +37,83 @@ pub const MAX_GRADIENT: usize = 8;
 
 #[derive(Clone, Debug)]
 pub struct DrawList {
+    /// In drawing order, the first at the bottom; none (LayerSet.order naming no layer):
+    /// a black image.
+    pub layers: Vec<Layer>,
+    /// The textures of every layer's meshes.
+    pub textures: Vec<Texture>,
+}
+
+impl DrawList {
+    /// Every mesh of every layer.
+    pub fn meshes(&self) -> impl Iterator<Item = &Mesh> {
+        self.layers.iter().flat_map(|l| l.meshes.iter())
+    }
+}
+
+/// One layer (35.2.3): a scene with its own bindable nodes, drawn over the layers before
+/// it regardless of their depth.
+#[derive(Clone, Debug)]
+pub struct Layer {
     pub camera: Camera,
-    pub background: Background,
+    /// Where on the image the layer is drawn; its camera's aspect ratio is this
+    /// rectangle's (35.4.3).
+    pub viewport: Viewport,
+    /// Drawn first within the viewport; None: the layers below show through.
+    pub background: Option<Background>,
     pub fog: Option<Fog>,
     pub lights: Vec<Light>,
     pub meshes: Vec<Mesh>,
-    pub textures: Vec<Texture>,
+}
+
+/// A rectangle of the image in fractions of its width and height, from its left and its
+/// bottom edge (Viewport.clipBoundary, 35.4.3): 0 ≤ left ≤ right ≤ 1, 0 ≤ bottom ≤ top ≤ 1.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct Viewport {
+    pub left: f32,
+    pub right: f32,
+    pub bottom: f32,
+    pub top: f32,
+}
+
+impl Viewport {
+    pub const FULL: Viewport = Viewport {
+        left: 0.0,
+        right: 1.0,
+        bottom: 0.0,
+        top: 1.0,
+    };
+
+    /// The part of this rectangle given in fractions of it (left, right, bottom, top, each
+    /// clamped to [0, 1], as a nested Viewport's clipBoundary is).
+    pub fn part(&self, [left, right, bottom, top]: [f32; 4]) -> Viewport {
+        let unit = |v: f32| if v.is_nan() { 0.0 } else { v.clamp(0.0, 1.0) };
+        let (w, h) = (self.right - self.left, self.top - self.bottom);
+        let (l, r) = (unit(left), unit(right).max(unit(left)));
+        let (b, t) = (unit(bottom), unit(top).max(unit(bottom)));
+        Viewport {
+            left: self.left + w * l,
+            right: self.left + w * r,
+            bottom: self.bottom + h * b,
+            top: self.bottom + h * t,
+        }
+    }
+
+    /// The rectangle in whole pixels of a `width` × `height` image: x and y from the top
+    /// left, width, height (edges rounded down, as browsers place them).
+    pub fn pixels(&self, width: u32, height: u32) -> [u32; 4] {
+        let (w, h) = (width as f32, height as f32);
+        let x0 = (w * self.left).floor().clamp(0.0, w) as u32;
+        let x1 = (w * self.right).floor().clamp(0.0, w) as u32;
+        let y0 = (h * self.bottom).floor().clamp(0.0, h) as u32;
+        let y1 = (h * self.top).floor().clamp(0.0, h) as u32;
+        [
+            x0,
+            height - y1.max(y0),
+            x1.saturating_sub(x0),
+            y1.saturating_sub(y0),
+        ]
+    }
 }
 
 /// A camera at the origin.
@@ -69,6 +144,8 @@ pub struct Background {
     pub ground: Vec<([f32; 3], f32)>,
     /// Rotation from the Background's coordinate system to world axes.
     pub orientation: glam::Quat,
+    /// X3D 4 transparency in [0, 1]: how much of the layers below shows through.
+    pub transparency: f32,
 }
 
 #[derive(Copy, Clone, Debug)]
@@ -150,6 +227,9 @@ pub struct Mesh {
     pub light_mask: u32,
     /// Planes (a, b, c, d) relative to the eye: what has a·x + b·y + c·z + d < 0 is cut.
     pub clip_planes: Vec<[f32; 4]>,
+    /// The rectangle of the image the mesh is cut to (a Viewport node it lies in, 35.4.3),
+    /// within its layer's; None: its layer's.
+    pub scissor: Option<Viewport>,
     /// Whether the colour has alpha below 1 anywhere (drawn blended, back to front).
     pub blended: bool,
     /// Alpha below this is discarded (alphaMode MASK); 0 otherwise.

@@ -18,7 +18,7 @@ struct Globals {
     view_projection: mat4x4<f32>,
     // Clip space to background directions (the Background's axes, eye at the origin).
     background_from_clip: mat4x4<f32>,
-    viewport: vec4<f32>,           // target width and height in pixels, supersampling scale
+    viewport: vec4<f32>,           // the layer's width and height in target pixels, supersampling scale, background transparency
     forward_near: vec4<f32>,       // unit view direction, near plane distance
     fog_color_range: vec4<f32>,    // rgb, visibilityRange
     counts: vec4<u32>,             // fog (0 none, 1 linear, 2 exponential), lights, sky, ground
@@ -564,5 +564,5 @@ fn fs_background(in: BackgroundOut) -> @location(0) vec4<f32> {
             rgb = gradient_color(from_nadir, false);
         }
     }
-    return vec4<f32>(rgb, 1.0);
+    return vec4<f32>(rgb, 1.0 - globals.viewport.w);
 }

@@ -24,22 +24,22 @@ pub struct ViewpointFound {
     pub far_distance: Option<f32>,
 }
 
-/// The first Viewpoint or OrthoViewpoint of the scene in traversal order (the one a
-/// browser binds first), or the one DEF'd `name`. Err when `name` names none.
+/// The first Viewpoint or OrthoViewpoint of the tree under `roots` (a layer's) in
+/// traversal order (the one a browser binds first), or the one DEF'd `name`.
 pub fn find_viewpoint(
     doc: &Document,
+    roots: &[NodeId],
     name: Option<&str>,
-) -> Result<Option<ViewpointFound>, String> {
+) -> Option<ViewpointFound> {
     let wanted = |id: NodeId| {
         let node = doc.node(id);
         is_viewpoint(node)
             && name.is_none_or(|n| node.def_name.as_ref().is_some_and(|d| d.text == n))
     };
-    let mut stack: Vec<(NodeId, DMat4)> = doc
-        .scene
+    let mut stack: Vec<(NodeId, DMat4)> = roots
         .iter()
         .rev()
-        .map(|c| (c.node, DMat4::IDENTITY))
+        .map(|&id| (id, DMat4::IDENTITY))
         .collect();
     let mut visited = 0;
     while let Some((id, world)) = stack.pop() {
@@ -48,7 +48,7 @@ pub fn find_viewpoint(
             break;
         }
         if wanted(id) {
-            return Ok(Some(viewpoint(doc, id, world)));
+            return Some(viewpoint(doc, id, world));
         }
         let node = doc.node(id);
         if !node.is_a("X3DGroupingNode") && !matches!(node.type_name(), "Switch" | "LOD") {
@@ -69,15 +69,18 @@ pub fn find_viewpoint(
             }
         }
     }
-    match name {
-        // Not on the scene graph (e.g. in a prototype): its own coordinates.
-        Some(n) => doc
-            .iter()
-            .find(|(id, _)| wanted(*id))
-            .map(|(id, _)| Some(viewpoint(doc, id, DMat4::IDENTITY)))
-            .ok_or_else(|| format!("--camera {n}: the scene has no Viewpoint DEF'd `{n}`")),
-        None => Ok(None),
-    }
+    None
+}
+
+/// The viewpoint DEF'd `name` anywhere in the document, in its own coordinates (for one
+/// off the scene graph, e.g. in a prototype). Err when there is none.
+pub fn named_anywhere(doc: &Document, name: &str) -> Result<ViewpointFound, String> {
+    doc.iter()
+        .find(|(_, node)| {
+            is_viewpoint(node) && node.def_name.as_ref().is_some_and(|d| d.text == name)
+        })
+        .map(|(id, _)| viewpoint(doc, id, DMat4::IDENTITY))
+        .ok_or_else(|| format!("--camera {name}: the scene has no Viewpoint DEF'd `{name}`"))
 }
 
 /// The view of a Viewpoint with every field at its default (position 0 0 10, no rotation,
@@ -185,6 +188,23 @@ impl View {
                 framing(centre + DVec3::new(0.0, 0.0, distance))
             }
             (None, None) => framing(DVec3::new(0.0, 0.0, 10.0)),
+        }
+    }
+
+    /// A LayoutLayer's view (36.2.1, see [`super::layout`]): the default OrthoViewpoint's
+    /// −1 … 1, looking down −Z from in front of the bounds (and at least from z = 10, its
+    /// default position).
+    pub fn layout(bounds: Option<(DVec3, DVec3)>) -> View {
+        let z = bounds.map_or(10.0, |(_, hi)| (hi.z + 1.0).max(10.0));
+        View {
+            eye: DVec3::new(0.0, 0.0, if z.is_finite() { z } else { 10.0 }),
+            orientation: DQuat::IDENTITY,
+            projection: Projection::Orthographic {
+                rectangle: [-1.0, -1.0, 1.0, 1.0],
+            },
+            framed: true,
+            near_distance: None,
+            far_distance: None,
         }
     }
 
@@ -310,6 +330,10 @@ mod tests {
     use super::super::environment::Navigation;
     use super::*;
 
+    fn roots(d: &Document) -> Vec<NodeId> {
+        d.scene.iter().map(|c| c.node).collect()
+    }
+
     fn doc(scene: &str) -> Document {
         let source = format!("<X3D version='4.0' profile='Full'><Scene>{scene}</Scene></X3D>");
         crate::parse::read(source.as_bytes()).document.unwrap()
@@ -321,11 +345,12 @@ mod tests {
             "<Transform translation='10 0 0'><Viewpoint DEF='A' position='0 0 5'/></Transform>\
              <Viewpoint DEF='B' position='1 2 3'/>",
         );
-        let first = find_viewpoint(&d, None).unwrap().unwrap();
+        let first = find_viewpoint(&d, &roots(&d), None).unwrap();
         assert_eq!(first.eye, DVec3::new(10.0, 0.0, 5.0));
-        let b = find_viewpoint(&d, Some("B")).unwrap().unwrap();
+        let b = find_viewpoint(&d, &roots(&d), Some("B")).unwrap();
         assert_eq!(b.eye, DVec3::new(1.0, 2.0, 3.0));
-        assert!(find_viewpoint(&d, Some("C")).is_err());
+        assert!(find_viewpoint(&d, &roots(&d), Some("C")).is_none());
+        assert!(named_anywhere(&d, "C").is_err());
     }
 
     #[test]
@@ -333,14 +358,14 @@ mod tests {
         let source = "<X3D version='3.0' profile='Immersive'><Scene>\
                       <Viewpoint position='1 2 3'/></Scene></X3D>";
         let d = crate::parse::read(source.as_bytes()).document.unwrap();
-        let v = find_viewpoint(&d, None).unwrap().unwrap();
+        let v = find_viewpoint(&d, &roots(&d), None).unwrap();
         assert_eq!(v.eye, DVec3::new(1.0, 2.0, 3.0));
     }
 
     /// The planes of the first viewpoint (or the framing) of `scene`, and its bounds.
     fn planes(scene: &str, bounds: (DVec3, DVec3), navigation: Option<Navigation>) -> (f32, f32) {
         let d = doc(scene);
-        let viewpoint = find_viewpoint(&d, None).unwrap();
+        let viewpoint = find_viewpoint(&d, &roots(&d), None);
         View::choose(viewpoint.as_ref(), Some(bounds)).depth_range(Some(bounds), navigation)
     }
 
@@ -398,7 +423,7 @@ mod tests {
     #[test]
     fn ortho_viewpoints_keep_their_rectangle() {
         let d = doc("<OrthoViewpoint fieldOfView='-2 -1 2 1'/>");
-        let v = find_viewpoint(&d, None).unwrap().unwrap();
+        let v = find_viewpoint(&d, &roots(&d), None).unwrap();
         assert_eq!(
             v.projection,
             Projection::Orthographic {

@@ -1,6 +1,7 @@
 //! The bindable environment nodes a still image uses: the first Background (sky and
 //! ground gradients), Fog and NavigationInfo (headlight, near and far planes) of the
-//! checked document, as a browser binds the first of each (24.2, 23.2).
+//! checked document in each layer, as a browser binds the first of each (24.2, 23.2;
+//! each layer has its own binding stacks, 35.2.3).
 
 use glam::{DMat4, DQuat};
 
@@ -58,6 +59,8 @@ impl Walker<'_> {
                 } else {
                     DQuat::IDENTITY.as_quat()
                 },
+                // X3D 4: how much of the layers below shows through (24.4.1).
+                transparency: unit(float(doc, id, "transparency", 0.0)),
             };
             let textured = [
                 "backUrl",

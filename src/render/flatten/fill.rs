@@ -55,7 +55,8 @@ impl Screen {
     }
 
     /// Pixels of the whole image.
-    pub fn pixels(&self) -> f64 {
+    #[cfg(test)]
+    fn pixels(&self) -> f64 {
         4.0 * self.half[0] * self.half[1]
     }
 
@@ -249,6 +250,7 @@ mod tests {
             textures: Default::default(),
             light_mask: 0,
             clip_planes: Vec::new(),
+            scissor: None,
             blended: false,
             alpha_cutoff: 0.0,
             stroke: Stroke::default(),

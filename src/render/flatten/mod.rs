@@ -9,6 +9,8 @@ mod appearance;
 mod camera;
 mod environment;
 mod fill;
+mod layers;
+mod layout;
 mod lights;
 mod place;
 mod shape;
@@ -18,7 +20,7 @@ use std::path::{Path, PathBuf};
 
 use glam::{DMat4, DVec3, DVec4};
 
-use super::draw_list::{DrawList, Light, MAX_CLIP_PLANES};
+use super::draw_list::{DrawList, Light, Viewport, MAX_CLIP_PLANES};
 use super::fields::{boolean, floats};
 use crate::model::bounds::{local_transform, Bounds};
 use crate::model::{Document, NodeId};
@@ -97,16 +99,24 @@ pub struct Flattened {
 }
 
 /// What reaches the descendants of a group besides its transform: the scoped lights
-/// (bits into the light list) and the enabled ClipPlanes (world planes), 17.2.1.2, 11.4.
+/// (bits into the light list) and the enabled ClipPlanes (world planes), 17.2.1.2, 11.4;
+/// the rectangle of an enclosing Viewport node (35.4.3) and the region of an enclosing
+/// layout (36.2).
 #[derive(Clone, Debug, Default)]
 struct Scope {
     lights: u32,
     clip_planes: Vec<DVec4>,
+    scissor: Option<Viewport>,
+    layout: Option<layout::Region>,
 }
 
 struct Walker<'o> {
     options: &'o Options<'o>,
     notes: Vec<Note>,
+    /// The layers finished so far, in drawing order.
+    layers: Vec<super::draw_list::Layer>,
+    /// The layer being walked; the fields below up to `bounds` belong to it.
+    layer: layers::LayerFrame,
     shapes: Vec<Pending>,
     lights: Vec<lights::PendingLight>,
     global_lights: u32,
@@ -119,8 +129,11 @@ struct Walker<'o> {
     documents: usize,
     inline_stack: Vec<PathBuf>,
     spent: Spent,
-    /// World bounds of the shapes drawn (model::bounds), for framing and clip planes.
+    /// World bounds of the layer's shapes drawn (model::bounds), for framing and clip
+    /// planes.
     bounds: Bounds,
+    /// Pixels the shapes of the layers finished so far cover (the fill budget, [`fill`]).
+    filled: f64,
 }
 
 /// What the walk has expanded so far, against the caps.
@@ -142,36 +155,37 @@ struct Context<'d> {
 }
 
 pub fn flatten(doc: &Document, options: &Options) -> Result<Flattened, String> {
-    let viewpoint = match options.camera {
-        CameraChoice::Auto => camera::find_viewpoint(doc, None)?,
-        CameraChoice::Browser => {
-            Some(camera::find_viewpoint(doc, None)?.unwrap_or_else(camera::default_viewpoint))
-        }
-        CameraChoice::Named(name) => camera::find_viewpoint(doc, Some(name))?,
-    };
     let mut walker = Walker {
         options,
         notes: Vec::new(),
+        layers: Vec::new(),
+        layer: layers::LayerFrame::root(options.image),
         shapes: Vec::new(),
         lights: Vec::new(),
         global_lights: 0,
         textures: Vec::new(),
         texture_cache: HashMap::new(),
-        viewpoint,
+        viewpoint: None,
         environment: environment::Environment::default(),
         documents: 1,
         inline_stack: Vec::new(),
         spent: Spent::default(),
         bounds: Bounds::EMPTY,
+        filled: 0.0,
     };
     let context = Context {
         doc,
         serial: 0,
         base: &options.base_dir,
     };
-    let roots: Vec<NodeId> = doc.scene.iter().map(|c| c.node).collect();
-    walker.walk_children(context, &roots, DMat4::IDENTITY, &Scope::default(), 0);
-    Ok(walker.finish())
+    walker.walk_layers(context)?;
+    Ok(Flattened {
+        list: DrawList {
+            layers: walker.layers,
+            textures: walker.textures,
+        },
+        notes: walker.notes,
+    })
 }
 
 impl Walker<'_> {
@@ -367,6 +381,29 @@ impl Walker<'_> {
             }
             "Inline" => self.inline(context, id, world, scope, depth),
             "Shape" => self.shape(context, id, world, scope),
+            _ if def.is_a("X3DViewportNode") => {
+                let inner = self.viewport_scope(doc, id, scope);
+                self.walk_children(context, &kids("children"), world, &inner, depth);
+            }
+            "LayoutGroup" => self.layout_group(context, id, world, scope, depth),
+            "ScreenGroup" => {
+                self.note(
+                    context,
+                    id,
+                    "ScreenGroup: drawn as a Group, not scaled to pixels (36.4.5)".into(),
+                );
+                self.walk_children(context, &kids("children"), world, scope, depth);
+            }
+            "LayerSet" => self.note(
+                context,
+                id,
+                "LayerSet is drawn only as a root node (35.2.2)".into(),
+            ),
+            _ if def.is_a("X3DLayerNode") => self.note(
+                context,
+                id,
+                format!("{} is drawn only in LayerSet.layers (35.2.3)", def.name),
+            ),
             _ if def.is_a("X3DBackgroundNode") || matches!(def.name, "Fog" | "NavigationInfo") => {
                 self.environment_node(context, id, world)
             }
@@ -385,6 +422,47 @@ impl Walker<'_> {
             }
             _ => {}
         }
+    }
+
+    /// LayoutGroup (36.4.2): its Layout places a rectangle within the enclosing layout's
+    /// and scales its children; its viewport cuts them. Outside a LayoutLayer there is no
+    /// layout to place it in: a Group.
+    fn layout_group(
+        &mut self,
+        context: Context,
+        id: NodeId,
+        world: DMat4,
+        scope: &Scope,
+        depth: usize,
+    ) {
+        let doc = context.doc;
+        let node = doc.node(id);
+        let kids: Vec<NodeId> = node.children("children").iter().map(|c| c.node).collect();
+        let mut inner = match super::fields::child(doc, id, "viewport") {
+            Some(v) if doc.node(v).is_a("X3DViewportNode") => self.viewport_scope(doc, v, scope),
+            _ => scope.clone(),
+        };
+        let mut world = world;
+        match (
+            self.layer.layout,
+            scope.layout,
+            super::fields::child(doc, id, "layout"),
+        ) {
+            (Some(surface), Some(parent), Some(l)) => {
+                let (translation, region) = layout::Layout::of(doc, l).place(parent, &surface);
+                world = layout::group_transform(world, translation, &region);
+                inner.layout = Some(region);
+            }
+            (None, _, Some(_)) => self.note(
+                context,
+                id,
+                "LayoutGroup outside a LayoutLayer: drawn as a Group, its Layout is not applied \
+                 (36.2.1)"
+                    .into(),
+            ),
+            _ => {}
+        }
+        self.walk_children(context, &kids, world, &inner, depth);
     }
 
     fn inline(&mut self, context: Context, id: NodeId, world: DMat4, scope: &Scope, depth: usize) {
@@ -469,14 +547,21 @@ impl Walker<'_> {
         }
     }
 
-    fn finish(mut self) -> Flattened {
+    /// Ends the layer being walked: its camera (the bound viewpoint, or a framing of its
+    /// bounds), its lights relative to the eye, its meshes placed within what is left of
+    /// the fill budget.
+    fn finish_layer(&mut self) {
         let bounds = (!self.bounds.is_empty()).then(|| {
             (
                 DVec3::from_array(self.bounds.min),
                 DVec3::from_array(self.bounds.max),
             )
         });
-        let view = camera::View::choose(self.viewpoint.as_ref(), bounds);
+        let view = if self.layer.layout.is_some() {
+            camera::View::layout(bounds)
+        } else {
+            camera::View::choose(self.viewpoint.as_ref(), bounds)
+        };
         let (near, far) = view.depth_range(bounds, self.environment.navigation);
         let mut lights: Vec<Light> = self
             .lights
@@ -500,20 +585,24 @@ impl Walker<'_> {
         let frame = place::EyeFrame::new(view.eye, view.orientation);
         let global_lights = self.global_lights;
         let camera = view.camera(near, far);
-        let (width, height) = self.options.image;
+        let (width, height) = self.layer.pixels;
         let screen = fill::Screen::new(&camera, width, height);
-        let fill_budget = screen.pixels() * RENDER_FILL_IMAGES as f64;
-        let (mut meshes, mut filled) = (Vec::with_capacity(self.shapes.len()), 0.0);
-        let shapes = self.shapes.len();
-        for pending in self.shapes {
+        let (image_width, image_height) = self.options.image;
+        let fill_budget =
+            f64::from(image_width) * f64::from(image_height) * RENDER_FILL_IMAGES as f64;
+        let shapes = std::mem::take(&mut self.shapes);
+        let (mut meshes, count) = (Vec::with_capacity(shapes.len()), shapes.len());
+        for pending in shapes {
             let mesh = pending.place(&frame, global_lights);
-            filled += screen.covered(&mesh);
-            if filled > fill_budget {
+            self.filled += screen.covered(&mesh);
+            if self.filled > fill_budget {
+                self.spent.stopped = true;
                 self.notes.push(Note {
                     node: None,
                     message: format!(
-                        "renderer: the scene's {shapes} shapes cover the image more than \
-                         {RENDER_FILL_IMAGES} times over; drawn up to the first {} shapes",
+                        "renderer: the scene's shapes cover the image more than \
+                         {RENDER_FILL_IMAGES} times over; drawn up to the first {} of the \
+                         layer's {count} shapes",
                         meshes.len()
                     ),
                     limit: true,
@@ -522,17 +611,25 @@ impl Walker<'_> {
             }
             meshes.push(mesh);
         }
-        let environment = self.environment;
-        Flattened {
-            list: DrawList {
-                camera,
-                background: environment.background.unwrap_or_default(),
-                fog: environment.fog.flatten(),
-                lights,
-                meshes,
-                textures: self.textures,
-            },
-            notes: self.notes,
-        }
+        let environment = std::mem::take(&mut self.environment);
+        let background = match environment.background {
+            Some(background) => Some(background),
+            // The root scene's default Background is black; other layers show the ones
+            // below where they bind none.
+            None if self.layer.root => Some(Default::default()),
+            None => None,
+        };
+        self.layers.push(super::draw_list::Layer {
+            camera,
+            viewport: self.layer.viewport,
+            background,
+            fog: environment.fog.flatten(),
+            lights,
+            meshes,
+        });
+        self.lights.clear();
+        self.global_lights = 0;
+        self.viewpoint = None;
+        self.bounds = Bounds::EMPTY;
     }
 }

@@ -176,6 +176,7 @@ impl Pending {
                 .iter()
                 .map(|&plane| relative_plane(plane, frame.eye))
                 .collect(),
+            scissor: self.scope.scissor,
             blended: self.blended,
             alpha_cutoff: self.alpha_cutoff,
             stroke: self.stroke,

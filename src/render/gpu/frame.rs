@@ -1,5 +1,6 @@
-//! One frame: render targets, the background, the meshes in their order (opaque first,
-//! then blended ones back to front), and the read-back of the pixels.
+//! One frame: render targets, then layer by layer (each over the previous with the depth
+//! cleared, within its rectangle) the background and the meshes in their order (opaque
+//! first, then blended ones back to front), and the read-back of the pixels.
 
 use wgpu::util::DeviceExt;
 
@@ -69,27 +70,46 @@ pub async fn draw(
     let depth_view = depth.create_view(&Default::default());
 
     let mut pipelines = Pipelines::new(device, target.samples, target.shading);
-    let globals = globals(&list, target.width, target.height, target.scale);
-    let globals_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-        label: Some("globals"),
-        contents: bytemuck::bytes_of(&globals),
-        usage: wgpu::BufferUsages::UNIFORM,
-    });
-    let globals_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: None,
-        layout: &pipelines.globals_layout,
-        entries: &[wgpu::BindGroupEntry {
-            binding: 0,
-            resource: globals_buffer.as_entire_binding(),
-        }],
-    });
+    // Each layer's rectangle of the target, and its uniforms.
+    let rects: Vec<[u32; 4]> = list
+        .layers
+        .iter()
+        .map(|layer| layer.viewport.pixels(target.width, target.height))
+        .collect();
+    let globals_groups: Vec<wgpu::BindGroup> = list
+        .layers
+        .iter()
+        .zip(&rects)
+        .map(|(layer, rect)| {
+            let globals = globals(layer, rect[2].max(1), rect[3].max(1), target.scale);
+            let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("globals"),
+                contents: bytemuck::bytes_of(&globals),
+                usage: wgpu::BufferUsages::UNIFORM,
+            });
+            device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: None,
+                layout: &pipelines.globals_layout,
+                entries: &[wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: buffer.as_entire_binding(),
+                }],
+            })
+        })
+        .collect();
 
-    let order = draw_order(&list.meshes);
+    // Every layer's meshes in drawing order: (layer, mesh).
+    let order: Vec<(usize, usize)> = list
+        .layers
+        .iter()
+        .enumerate()
+        .flat_map(|(l, layer)| draw_order(&layer.meshes).into_iter().map(move |m| (l, m)))
+        .collect();
     let alignment = device.limits().min_uniform_buffer_offset_alignment as usize;
     let stride = size_of::<GpuDraw>().div_ceil(alignment) * alignment;
     let mut draw_bytes = vec![0u8; stride * order.len().max(1)];
-    for (slot, &index) in order.iter().enumerate() {
-        let bytes = bytemuck::bytes_of(&draw_uniform(&list.meshes[index])).to_vec();
+    for (slot, &(l, m)) in order.iter().enumerate() {
+        let bytes = bytemuck::bytes_of(&draw_uniform(&list.layers[l].meshes[m])).to_vec();
         draw_bytes[slot * stride..slot * stride + bytes.len()].copy_from_slice(&bytes);
     }
     let draw_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
@@ -121,30 +141,65 @@ pub async fn draw(
     });
     // Everything a draw call refers to exists before the pass begins.
     let mut draws = Vec::with_capacity(order.len());
-    for &index in &order {
-        let mesh = &mut list.meshes[index];
+    let mut scissors = Vec::with_capacity(order.len());
+    for &(l, m) in &order {
+        let mesh = &mut list.layers[l].meshes[m];
         let key = PipelineKey::of(mesh);
         pipelines.get(key);
         bindings.group(&mesh.textures);
         let textures = std::mem::take(&mut mesh.textures);
+        scissors.push(match mesh.scissor {
+            Some(viewport) => intersect(rects[l], viewport.pixels(target.width, target.height)),
+            None => rects[l],
+        });
         draws.push((key, textures, upload_mesh(device, mesh)));
     }
-    let background = list_background_pipeline(&list, &pipelines);
+    let background = list
+        .layers
+        .iter()
+        .any(|layer| layer.background.is_some())
+        .then(|| pipelines.background());
 
-    let [r, g, b] = list
-        .background
-        .sky
-        .first()
-        .map_or([0.0; 3], |(color, _)| *color)
-        .map(f64::from);
     let (view, resolve_target) = match &multisampled_view {
         Some(ms) => (ms, Some(&resolved_view)),
         None => (&resolved_view, None),
     };
-    let passes = passes(&draws, target.pass_indices);
-    let last = passes.len() - 1;
+    // Each layer's passes: its first clears the depth, so that it covers the layers
+    // below; the image's first clears the colour to black.
+    let mut passes: Vec<(usize, bool, Vec<Piece>)> = Vec::new();
+    let mut first_slot = 0;
+    for (l, layer) in list.layers.iter().enumerate() {
+        let count = order[first_slot..]
+            .iter()
+            .take_while(|(of, _)| *of == l)
+            .count();
+        let slots = first_slot..first_slot + count;
+        first_slot += count;
+        let [_, _, w, h] = rects[l];
+        if w == 0 || h == 0 || (count == 0 && layer.background.is_none()) {
+            continue;
+        }
+        for (n, pieces) in cut_passes(&draws[slots.clone()], target.pass_indices)
+            .into_iter()
+            .enumerate()
+        {
+            let pieces = pieces
+                .into_iter()
+                .map(|p| Piece {
+                    slot: p.slot + slots.start,
+                    range: p.range,
+                })
+                .collect();
+            passes.push((l, n == 0, pieces));
+        }
+    }
+    let starts_layer: Vec<bool> = passes.iter().map(|(_, first, _)| *first).collect();
     let mut encoder = device.create_command_encoder(&Default::default());
-    for (n, pieces) in passes.into_iter().enumerate() {
+    if passes.is_empty() {
+        // Nothing to draw: a black image.
+        clear_pass(&mut encoder, view, resolve_target, &depth_view);
+    }
+    for (n, (l, first_of_layer, pieces)) in passes.into_iter().enumerate() {
         if n > 0 {
             // The previous pass is finished before this one is recorded.
             queue.submit([std::mem::replace(
@@ -156,71 +211,83 @@ pub async fn draw(
                 .poll(wgpu::PollType::wait_indefinitely())
                 .map_err(|e| GpuError::Failed(e.to_string()))?;
         }
-        {
-            // The first pass clears; the others go on from what it left.
-            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                label: Some("scene"),
-                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                    view,
-                    depth_slice: None,
-                    resolve_target,
-                    ops: wgpu::Operations {
-                        load: if n == 0 {
-                            wgpu::LoadOp::Clear(wgpu::Color { r, g, b, a: 1.0 })
-                        } else {
-                            wgpu::LoadOp::Load
-                        },
-                        store: wgpu::StoreOp::Store,
+        let last_of_layer = starts_layer.get(n + 1).is_none_or(|&starts| starts);
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("scene"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view,
+                depth_slice: None,
+                resolve_target,
+                ops: wgpu::Operations {
+                    load: if n == 0 {
+                        wgpu::LoadOp::Clear(wgpu::Color::BLACK)
+                    } else {
+                        wgpu::LoadOp::Load
                     },
-                })],
-                depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                    view: &depth_view,
-                    depth_ops: Some(wgpu::Operations {
-                        load: if n == 0 {
-                            wgpu::LoadOp::Clear(0.0)
-                        } else {
-                            wgpu::LoadOp::Load
-                        },
-                        store: if n == last {
-                            wgpu::StoreOp::Discard
-                        } else {
-                            wgpu::StoreOp::Store
-                        },
-                    }),
-                    stencil_ops: None,
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &depth_view,
+                depth_ops: Some(wgpu::Operations {
+                    load: if first_of_layer {
+                        wgpu::LoadOp::Clear(0.0)
+                    } else {
+                        wgpu::LoadOp::Load
+                    },
+                    store: if last_of_layer {
+                        wgpu::StoreOp::Discard
+                    } else {
+                        wgpu::StoreOp::Store
+                    },
                 }),
-                timestamp_writes: None,
-                occlusion_query_set: None,
-                multiview_mask: None,
-            });
-            pass.set_bind_group(0, &globals_group, &[]);
-            if let (0, Some(background)) = (n, &background) {
-                pass.set_pipeline(background);
-                pass.draw(0..3, 0..1);
+                stencil_ops: None,
+            }),
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        let [x, y, w, h] = rects[l];
+        pass.set_viewport(x as f32, y as f32, w as f32, h as f32, 0.0, 1.0);
+        pass.set_scissor_rect(x, y, w, h);
+        pass.set_bind_group(0, &globals_groups[l], &[]);
+        if let (true, Some(background), Some(_)) =
+            (first_of_layer, &background, &list.layers[l].background)
+        {
+            pass.set_pipeline(background);
+            pass.draw(0..3, 0..1);
+        }
+        let mut scissor = rects[l];
+        for Piece { slot, range } in pieces {
+            let [sx, sy, sw, sh] = scissors[slot];
+            if sw == 0 || sh == 0 {
+                continue;
             }
-            for Piece { slot, range } in pieces {
-                let (key, textures, buffers) = &draws[slot];
-                pass.set_pipeline(pipelines.get(*key));
-                pass.set_bind_group(1, &draw_group, &[(slot * stride) as u32]);
-                pass.set_bind_group(2, bindings.group(textures), &[]);
-                match buffers {
-                    MeshBuffers::Surface {
-                        vertices, indices, ..
-                    } => {
-                        for (i, buffer) in vertices.iter().enumerate().take(VERTEX_SLOTS) {
-                            pass.set_vertex_buffer(
-                                i as u32,
-                                buffer.as_ref().unwrap_or(&zeros).slice(..),
-                            );
-                        }
-                        pass.set_index_buffer(indices.slice(..), wgpu::IndexFormat::Uint32);
-                        pass.draw_indexed(range, 0, 0..1);
+            if scissors[slot] != scissor {
+                scissor = scissors[slot];
+                pass.set_scissor_rect(sx, sy, sw, sh);
+            }
+            let (key, textures, buffers) = &draws[slot];
+            pass.set_pipeline(pipelines.get(*key));
+            pass.set_bind_group(1, &draw_group, &[(slot * stride) as u32]);
+            pass.set_bind_group(2, bindings.group(textures), &[]);
+            match buffers {
+                MeshBuffers::Surface {
+                    vertices, indices, ..
+                } => {
+                    for (i, buffer) in vertices.iter().enumerate().take(VERTEX_SLOTS) {
+                        pass.set_vertex_buffer(
+                            i as u32,
+                            buffer.as_ref().unwrap_or(&zeros).slice(..),
+                        );
                     }
-                    MeshBuffers::Stroke { ends, colors, .. } => {
-                        pass.set_vertex_buffer(0, ends.slice(..));
-                        pass.set_vertex_buffer(1, colors.slice(..));
-                        pass.draw(0..6, range);
-                    }
+                    pass.set_index_buffer(indices.slice(..), wgpu::IndexFormat::Uint32);
+                    pass.draw_indexed(range, 0, 0..1);
+                }
+                MeshBuffers::Stroke { ends, colors, .. } => {
+                    pass.set_vertex_buffer(0, ends.slice(..));
+                    pass.set_vertex_buffer(1, colors.slice(..));
+                    pass.draw(0..6, range);
                 }
             }
         }
@@ -251,8 +318,8 @@ struct Piece {
 
 /// The draws cut into passes of at most `limit` indices (whole triangles; a triangle or
 /// stroke larger than the limit gets a pass of its own), in order; at least one pass,
-/// empty for an empty scene.
-fn passes(draws: &[(PipelineKey, Textures, MeshBuffers)], limit: u32) -> Vec<Vec<Piece>> {
+/// empty for a layer without meshes.
+fn cut_passes(draws: &[(PipelineKey, Textures, MeshBuffers)], limit: u32) -> Vec<Vec<Piece>> {
     cut(
         draws.iter().map(|(_, _, buffers)| match buffers {
             MeshBuffers::Surface { index_count, .. } => (*index_count, 3, 1),
@@ -288,13 +355,45 @@ fn cut(draws: impl Iterator<Item = (u32, u32, u32)>, limit: u32) -> Vec<Vec<Piec
     passes
 }
 
-/// The gradient pipeline when the Background is more than one colour.
-fn list_background_pipeline(
-    list: &DrawList,
-    pipelines: &Pipelines,
-) -> Option<wgpu::RenderPipeline> {
-    let background = &list.background;
-    (background.sky.len() > 1 || !background.ground.is_empty()).then(|| pipelines.background())
+/// A pass that only clears the image to black.
+fn clear_pass(
+    encoder: &mut wgpu::CommandEncoder,
+    view: &wgpu::TextureView,
+    resolve_target: Option<&wgpu::TextureView>,
+    depth: &wgpu::TextureView,
+) {
+    encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        label: Some("clear"),
+        color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+            view,
+            depth_slice: None,
+            resolve_target,
+            ops: wgpu::Operations {
+                load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
+                store: wgpu::StoreOp::Store,
+            },
+        })],
+        depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+            view: depth,
+            depth_ops: Some(wgpu::Operations {
+                load: wgpu::LoadOp::Clear(0.0),
+                store: wgpu::StoreOp::Discard,
+            }),
+            stencil_ops: None,
+        }),
+        timestamp_writes: None,
+        occlusion_query_set: None,
+        multiview_mask: None,
+    });
+}
+
+/// The overlap of two pixel rectangles (x, y, width, height); empty: zero width or height.
+fn intersect(a: [u32; 4], b: [u32; 4]) -> [u32; 4] {
+    let x0 = a[0].max(b[0]);
+    let y0 = a[1].max(b[1]);
+    let x1 = (a[0] + a[2]).min(b[0] + b[2]);
+    let y1 = (a[1] + a[3]).min(b[1] + b[3]);
+    [x0, y0, x1.saturating_sub(x0), y1.saturating_sub(y0)]
 }
 
 async fn read_back(

@@ -264,7 +264,8 @@ impl<'d> Pipelines<'d> {
             })
     }
 
-    /// The Background gradient, drawn first, behind everything (no depth written).
+    /// The Background gradient, drawn first in its layer, behind everything (no depth
+    /// written), over the layers below as its transparency lets them show.
     pub fn background(&self) -> wgpu::RenderPipeline {
         self.device
             .create_render_pipeline(&wgpu::RenderPipelineDescriptor {
@@ -294,7 +295,7 @@ impl<'d> Pipelines<'d> {
                     compilation_options: Default::default(),
                     targets: &[Some(wgpu::ColorTargetState {
                         format: COLOR_FORMAT,
-                        blend: Some(wgpu::BlendState::REPLACE),
+                        blend: Some(wgpu::BlendState::ALPHA_BLENDING),
                         write_mask: wgpu::ColorWrites::ALL,
                     })],
                 }),

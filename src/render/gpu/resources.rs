@@ -286,6 +286,7 @@ mod tests {
             textures: Textures::default(),
             light_mask: 0,
             clip_planes: Vec::new(),
+            scissor: None,
             blended: false,
             alpha_cutoff: 0.0,
             stroke: Default::default(),

@@ -4,7 +4,7 @@
 use bytemuck::{Pod, Zeroable};
 
 use crate::render::draw_list::{
-    Camera, DrawList, LightKind, LightingModel, Material, Mesh, Primitive, Projection, TextureRef,
+    Camera, Layer, LightKind, LightingModel, Material, Mesh, Primitive, Projection, TextureRef,
     MAX_CLIP_PLANES, MAX_GRADIENT, MAX_LIGHTS, MAX_STAGES,
 };
 
@@ -170,14 +170,15 @@ pub fn draw_uniform(mesh: &Mesh) -> GpuDraw {
     }
 }
 
-/// The frame's uniforms for a `width` × `height` target drawn `scale` times larger than
-/// the image (supersampling): stroke sizes are in image pixels.
-pub fn globals(list: &DrawList, width: u32, height: u32, scale: u32) -> Globals {
+/// A layer's uniforms for its `width` × `height` rectangle of a target drawn `scale`
+/// times larger than the image (supersampling): stroke sizes are in image pixels.
+pub fn globals(list: &Layer, width: u32, height: u32, scale: u32) -> Globals {
     let camera = &list.camera;
     let projection = projection(camera, width as f32 / height as f32);
     let view = glam::Mat4::from_quat(camera.orientation.inverse());
     let view_projection = projection * view;
-    let to_background = glam::Mat4::from_quat(list.background.orientation.inverse());
+    let background = list.background.clone().unwrap_or_default();
+    let to_background = glam::Mat4::from_quat(background.orientation.inverse());
     let mut lights = [GpuLight::zeroed(); MAX_LIGHTS];
     for (slot, light) in lights.iter_mut().zip(&list.lights) {
         let kind = match light.kind {
@@ -217,7 +218,12 @@ pub fn globals(list: &DrawList, width: u32, height: u32, scale: u32) -> Globals 
     Globals {
         view_projection: view_projection.to_cols_array_2d(),
         background_from_clip: (to_background * view_projection.inverse()).to_cols_array_2d(),
-        viewport: [width as f32, height as f32, scale as f32, 0.0],
+        viewport: [
+            width as f32,
+            height as f32,
+            scale as f32,
+            background.transparency,
+        ],
         forward_near: {
             let forward = camera.orientation * glam::Vec3::NEG_Z;
             [forward.x, forward.y, forward.z, camera.near]
@@ -226,11 +232,11 @@ pub fn globals(list: &DrawList, width: u32, height: u32, scale: u32) -> Globals 
         counts: [
             fog_kind,
             list.lights.len().min(MAX_LIGHTS) as u32,
-            list.background.sky.len().clamp(1, MAX_GRADIENT) as u32,
-            list.background.ground.len().min(MAX_GRADIENT) as u32,
+            background.sky.len().clamp(1, MAX_GRADIENT) as u32,
+            background.ground.len().min(MAX_GRADIENT) as u32,
         ],
-        sky: gradient(&list.background.sky),
-        ground: gradient(&list.background.ground),
+        sky: gradient(&background.sky),
+        ground: gradient(&background.ground),
         lights,
     }
 }
