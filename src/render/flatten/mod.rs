@@ -12,6 +12,7 @@ mod fill;
 mod lights;
 mod place;
 mod shape;
+mod text;
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -99,6 +100,8 @@ struct Walker<'o> {
     spent: Spent,
     /// World bounds of the shapes drawn (model::bounds), for framing and clip planes.
     bounds: Bounds,
+    /// Glyphs tessellated for Text, each once.
+    glyphs: crate::render::text::Glyphs,
 }
 
 /// What the walk has expanded so far, against the caps.
@@ -107,6 +110,8 @@ struct Spent {
     node_instances: u64,
     primitives: usize,
     texture_bytes: usize,
+    /// Characters of Text laid out.
+    text_characters: usize,
     /// A cap was hit: nothing more is walked.
     stopped: bool,
 }
@@ -135,6 +140,7 @@ pub fn flatten(doc: &Document, options: &Options) -> Result<Flattened, String> {
         inline_stack: Vec::new(),
         spent: Spent::default(),
         bounds: Bounds::EMPTY,
+        glyphs: Default::default(),
     };
     let context = Context {
         doc,
