@@ -100,26 +100,38 @@ pub fn build(
         return BuiltText { mesh: None, notes };
     };
     let font = style.face.face();
-    let em = f64::from(font.units_per_em().max(1));
-    let lines: Vec<Vec<GlyphId>> = {
+    let units_per_em = em(style.face);
+    // A character the face lacks is drawn as a missing-glyph box: the face's own glyph 0,
+    // or Liberation Sans's where the face's is empty (Liberation Serif's).
+    let missing_box = if font.glyph_bounding_box(GlyphId(0)).is_some() {
+        style.face
+    } else {
+        FaceId {
+            family: fonts::Family::Sans,
+            ..style.face
+        }
+    };
+    let lines: Vec<Vec<(FaceId, GlyphId)>> = {
         let mut missing = 0usize;
         let lines = strings(doc, text)
             .iter()
             .map(|s| {
                 s.chars()
                     .filter(|c| !c.is_control())
-                    .map(|c| {
-                        font.glyph_index(c).unwrap_or_else(|| {
+                    .map(|c| match font.glyph_index(c) {
+                        Some(glyph) => (style.face, glyph),
+                        None => {
                             missing += 1;
-                            GlyphId(0)
-                        })
+                            (missing_box, GlyphId(0))
+                        }
                     })
                     .collect()
             })
             .collect();
         if missing > 0 {
+            let characters = if missing == 1 { "character" } else { "characters" };
             notes.push(format!(
-                "Text: {missing} characters that {} lacks are drawn as its missing-glyph box",
+                "Text: {missing} {characters} that {} lacks drawn as a missing-glyph box",
                 style.face.name()
             ));
         }
@@ -132,10 +144,10 @@ pub fn build(
     // Each line's pen positions along its direction of advance, in ems.
     let pens: Vec<Pens> = lines
         .iter()
-        .map(|line| Pens::of(font, line, em, &style))
+        .map(|line| Pens::of(line, &style))
         .collect();
     let scales = major_scales(doc, text, &pens, style.size);
-    let layout = Layout::new(&style, font, em, lines.len());
+    let layout = Layout::new(&style, font, units_per_em, lines.len());
 
     let mut mesh = LocalMesh {
         primitive: Primitive::Triangles,
@@ -146,12 +158,12 @@ pub fn build(
     'lines: for (l, (line, pens)) in lines.iter().zip(&pens).enumerate() {
         let k = scales[l];
         let start = pens.start(&style, k);
-        for (&glyph, &pen) in line.iter().zip(&pens.at) {
-            let shape = glyphs.get(style.face, glyph);
+        for (&(face, glyph), &pen) in line.iter().zip(&pens.at) {
+            let shape = glyphs.get(face, glyph);
             if shape.indices.is_empty() {
                 continue;
             }
-            let advance = advance(font, glyph, em);
+            let advance = advance(face, glyph);
             let base = mesh.positions.len() as u32;
             for &[px, py] in &shape.points {
                 let [x, y] =
@@ -232,15 +244,25 @@ fn style(doc: &Document, text: NodeId, notes: &mut Vec<String>) -> Option<Style>
     })
 }
 
-/// A glyph's horizontal advance in ems.
-fn advance(font: &Face, glyph: GlyphId, em: f64) -> f64 {
-    f64::from(font.glyph_hor_advance(glyph).unwrap_or(0)) / em
+/// The units per em of `face`.
+fn em(face: FaceId) -> f64 {
+    f64::from(face.face().units_per_em().max(1))
 }
 
-/// The font's pair kerning of `left` followed by `right`, in ems (horizontal subtables of
-/// the `kern` table).
-fn kerning(font: &Face, left: GlyphId, right: GlyphId, em: f64) -> f64 {
-    let Some(kern) = font.tables().kern else {
+/// A glyph's horizontal advance in ems.
+fn advance(face: FaceId, glyph: GlyphId) -> f64 {
+    f64::from(face.face().glyph_hor_advance(glyph).unwrap_or(0)) / em(face)
+}
+
+/// The pair kerning of `left` followed by `right`, in ems (horizontal subtables of the
+/// `kern` table); none between glyphs of two faces.
+fn kerning(left: (FaceId, GlyphId), right: (FaceId, GlyphId)) -> f64 {
+    let face = left.0;
+    if right.0 != face {
+        return 0.0;
+    }
+    let (left, right) = (left.1, right.1);
+    let Some(kern) = face.face().tables().kern else {
         return 0.0;
     };
     let units: i32 = kern
@@ -250,7 +272,7 @@ fn kerning(font: &Face, left: GlyphId, right: GlyphId, em: f64) -> f64 {
         .filter_map(|s| s.glyphs_kerning(left, right))
         .map(i32::from)
         .sum();
-    f64::from(units) / em
+    f64::from(units) / em(face)
 }
 
 /// Where each character of a line starts along the direction of advance, and the
@@ -261,7 +283,7 @@ struct Pens {
 }
 
 impl Pens {
-    fn of(font: &Face, line: &[GlyphId], em: f64, style: &Style) -> Pens {
+    fn of(line: &[(FaceId, GlyphId)], style: &Style) -> Pens {
         if !style.horizontal {
             // One em per character (the bundled fonts have no vertical metrics).
             return Pens {
@@ -273,13 +295,13 @@ impl Pens {
         let mut pen = 0.0;
         for (i, &glyph) in line.iter().enumerate() {
             at.push(pen);
-            pen += advance(font, glyph, em);
+            pen += advance(glyph.0, glyph.1);
             if let Some(&next) = line.get(i + 1) {
                 // Kerning pairs are in visual order, left glyph first.
                 pen += if style.left_to_right {
-                    kerning(font, glyph, next, em)
+                    kerning(glyph, next)
                 } else {
-                    kerning(font, next, glyph, em)
+                    kerning(next, glyph)
                 };
             }
         }
