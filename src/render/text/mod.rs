@@ -129,7 +129,11 @@ pub fn build(
             })
             .collect();
         if missing > 0 {
-            let characters = if missing == 1 { "character" } else { "characters" };
+            let characters = if missing == 1 {
+                "character"
+            } else {
+                "characters"
+            };
             notes.push(format!(
                 "Text: {missing} {characters} that {} lacks drawn as a missing-glyph box",
                 style.face.name()
@@ -142,10 +146,7 @@ pub fn build(
     }
 
     // Each line's pen positions along its direction of advance, in ems.
-    let pens: Vec<Pens> = lines
-        .iter()
-        .map(|line| Pens::of(line, &style))
-        .collect();
+    let pens: Vec<Pens> = lines.iter().map(|line| Pens::of(line, &style)).collect();
     let scales = major_scales(doc, text, &pens, style.size);
     let layout = Layout::new(&style, font, units_per_em, lines.len());
 
