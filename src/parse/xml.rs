@@ -787,9 +787,7 @@ impl<'s> XmlReader<'s> {
                         span: attr.value_span,
                     },
                 ),
-                "containerField" | "class" | "id" => {}
-                // The HTML `style` attribute, except on the two nodes with a `style` field.
-                "style" if !matches!(name, "FontStyle" | "ScreenFontStyle") => {}
+                "containerField" | "class" | "id" | "style" => {}
                 "name" if name == "ProtoInstance" => {}
                 _ if attr.name.starts_with("xmlns") => {}
                 _ => self.attribute_field(id, attr),
