@@ -114,5 +114,11 @@ pub const MAX_RENDER_PRIMITIVES: u64 = 16_000_000;
 /// most.
 pub const RENDER_FILL_IMAGES: u64 = 16;
 
+/// Characters of Text the renderer lays out, over all Text instances of a scene (the
+/// most in a real scene of the shared corpus is a few hundred). Text past it is not
+/// drawn: a string of ten million characters costs a few bytes of layout per character
+/// before the triangle budget could see it (spaces make no triangles at all).
+pub const MAX_RENDER_TEXT_CHARACTERS: usize = 100_000;
+
 /// Texture bytes (RGBA8, with mipmaps) the renderer loads, over all textures.
 pub const MAX_RENDER_TEXTURE_BYTES: usize = 512 << 20;

@@ -15,7 +15,7 @@
 use std::path::{Path, PathBuf};
 
 use x3dcheck::config::CheckConfig;
-use x3dcheck::limits::{MAX_RENDER_SHAPES, RENDER_FILL_IMAGES};
+use x3dcheck::limits::{MAX_RENDER_SHAPES, MAX_RENDER_TEXT_CHARACTERS, RENDER_FILL_IMAGES};
 use x3dcheck::model::Document;
 use x3dcheck::render::{preview, render_image, Gpu, ImageSize, Quality, RenderArgs};
 use x3dcheck::report::FileReport;
@@ -287,6 +287,32 @@ fn shapes_piled_on_one_place_stop_at_the_fill_budget() {
             "shapes cover the image more than {RENDER_FILL_IMAGES} times over; drawn up to the first"
         ))),
         "{limits:#?}"
+    );
+}
+
+#[test]
+fn a_text_of_ten_million_characters_stops_at_the_character_budget() {
+    if !x3dcheck::render::adapter_for_test(
+        "a_text_of_ten_million_characters_stops_at_the_character_budget",
+    ) {
+        return;
+    }
+    // Ten million characters (spaces cost layout but no triangles), then a small Text
+    // that is still drawn.
+    let scene = format!(
+        "<X3D profile='Immersive' version='4.0'><Scene>\
+         <Shape><Text string='\"{}\"'/></Shape><Shape><Text string='\"drawn\"'/></Shape>\
+         </Scene></X3D>",
+        "a ".repeat(5_000_000)
+    );
+    let (elapsed, limits) = render_generated(&scene);
+    assert!(elapsed.as_secs() < 10, "took {elapsed:?}");
+    assert_eq!(
+        limits,
+        [format!(
+            "renderer: Text of 10000000 characters is not drawn: a scene's Text is drawn up to \
+             {MAX_RENDER_TEXT_CHARACTERS} characters"
+        )]
     );
 }
 

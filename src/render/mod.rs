@@ -30,6 +30,8 @@ mod test_adapter;
 #[cfg(feature = "render")]
 mod texgen;
 #[cfg(feature = "render")]
+mod text;
+#[cfg(feature = "render")]
 mod textures;
 
 use std::path::Path;

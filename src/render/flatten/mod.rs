@@ -14,6 +14,7 @@ mod layout;
 mod lights;
 mod place;
 mod shape;
+mod text;
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -134,6 +135,8 @@ struct Walker<'o> {
     bounds: Bounds,
     /// Pixels the shapes of the layers finished so far cover (the fill budget, [`fill`]).
     filled: f64,
+    /// Glyphs tessellated for Text, each once.
+    glyphs: crate::render::text::Glyphs,
 }
 
 /// What the walk has expanded so far, against the caps.
@@ -142,6 +145,8 @@ struct Spent {
     node_instances: u64,
     primitives: usize,
     texture_bytes: usize,
+    /// Characters of Text laid out.
+    text_characters: usize,
     /// A cap was hit: nothing more is walked.
     stopped: bool,
 }
@@ -172,6 +177,7 @@ pub fn flatten(doc: &Document, options: &Options) -> Result<Flattened, String> {
         spent: Spent::default(),
         bounds: Bounds::EMPTY,
         filled: 0.0,
+        glyphs: Default::default(),
     };
     let context = Context {
         doc,

@@ -2,20 +2,20 @@
 //! against this geometry and Appearance, the same resolution the checker uses), its
 //! geometry built with only what those need, waiting in local coordinates for the camera.
 
-use glam::DMat4;
+use glam::{DMat4, DVec3, Vec3};
 
 use super::appearance::{unlit_from, Role, Rule};
 use super::place::{Channel, Pending, TextureTransform};
 use super::{Context, Scope, Walker};
 use crate::limits::{MAX_FACE_CORNERS, MAX_RENDER_SHAPES};
-use crate::model::bounds::{geometry_bounds, Affine};
+use crate::model::bounds::{geometry_bounds, Affine, Bounds};
 use crate::model::texture_mapping::{texture_coordinates, texture_transforms, MappingList};
 use crate::model::NodeId;
 use crate::render::draw_list::{
     LightingModel, Primitive, Stage, Stroke, TextureRef, Textures, MAX_TEX_COORD_SETS,
 };
 use crate::render::fields::{child, type_is};
-use crate::render::geometry::{self, Built, Needs, TexCoordSource};
+use crate::render::geometry::{self, Built, LocalMesh, Needs, TexCoordSource};
 use crate::render::texgen::Generator;
 
 /// A texture coordinate set as the shape's textures ask for it: its source node (None:
@@ -88,7 +88,15 @@ impl Walker<'_> {
             self.stop(context, format!("{budget} triangles, lines and points"));
             return;
         }
-        let (mut mesh, shading) = match geometry::build(doc, geometry, &needs) {
+        let built = if type_is(doc, geometry, "Text") {
+            match self.text(context, geometry, &needs, budget - self.spent.primitives) {
+                Some((mesh, shading)) => Built::Mesh(mesh, shading),
+                None => return,
+            }
+        } else {
+            geometry::build(doc, geometry, &needs)
+        };
+        let (mut mesh, shading) = match built {
             Built::Mesh(mesh, shading) => (mesh, shading),
             Built::NotDrawn(reason) => {
                 self.note(context, geometry, reason);
@@ -189,7 +197,10 @@ impl Walker<'_> {
             return;
         }
         self.spent.primitives += primitives;
-        if let Some(b) = geometry_bounds(doc, geometry, &affine(world)) {
+        // Geometry whose bounds the model does not know (Text) is framed as built.
+        if let Some(b) =
+            geometry_bounds(doc, geometry, &affine(world)).or_else(|| mesh_bounds(&mesh, world))
+        {
             self.bounds = self.bounds.union(&b);
         }
         self.shapes.push(Pending {
@@ -279,6 +290,20 @@ fn set_key(
             transforms.items.get(*i).map(|c| c.node),
         ),
     }
+}
+
+/// The world bounds of a built mesh's vertices; None when it has none.
+fn mesh_bounds(mesh: &LocalMesh, world: DMat4) -> Option<Bounds> {
+    let origin = DVec3::from_array(mesh.origin);
+    let mut bounds = Bounds::EMPTY;
+    for p in &mesh.positions {
+        let q = world.transform_point3(origin + Vec3::from_array(*p).as_dvec3());
+        if q.is_finite() {
+            bounds.min = DVec3::from_array(bounds.min).min(q).to_array();
+            bounds.max = DVec3::from_array(bounds.max).max(q).to_array();
+        }
+    }
+    (!bounds.is_empty()).then_some(bounds)
 }
 
 /// A transform as model::bounds takes it.
