@@ -20,7 +20,8 @@
 //! copies take the instance's spans (a place in another file is never shown against this
 //! one's text) and say where they are written ([`LibraryPlace`]).
 //!
-//! Limits ([`MAX_INSTANCE_NODES`], [`MAX_INSTANCE_VALUES`], [`MAX_PROTO_NESTING`]) stop a
+//! Limits ([`MAX_INSTANCE_NODES`] or [`INSTANCE_AMPLIFICATION`] copies per written node,
+//! [`MAX_INSTANCE_VALUES`], [`MAX_PROTO_NESTING`]) stop a
 //! prototype "billion laughs" with `LIMIT_EXCEEDED`; past one, no more copies are made and
 //! the remaining nodes are checked as written.
 
@@ -29,7 +30,9 @@ use std::collections::HashMap;
 use super::builder::{Builder, Limit};
 use super::*;
 use crate::diagnostic::Diagnostic;
-use crate::limits::{MAX_INSTANCE_NODES, MAX_INSTANCE_VALUES, MAX_PROTO_NESTING};
+use crate::limits::{
+    INSTANCE_AMPLIFICATION, MAX_INSTANCE_NODES, MAX_INSTANCE_VALUES, MAX_PROTO_NESTING,
+};
 
 /// A prototype library file, as the caller read it.
 pub struct LibraryFile<'a> {
@@ -113,6 +116,7 @@ pub(super) fn instantiate_all(builder: &mut Builder, externals: &ExternalPrototy
     }
     let mut state = State {
         externals,
+        budget: MAX_INSTANCE_NODES.max(INSTANCE_AMPLIFICATION.saturating_mul(written)),
         needs: vec![None; written],
         memo: HashMap::new(),
         nodes: 0,
@@ -149,6 +153,9 @@ type MemoKey = (ProtoKey, Vec<Option<String>>);
 
 struct State<'e> {
     externals: &'e ExternalPrototypes<'e>,
+    /// Nodes that may be copied: relative to the written nodes, at least
+    /// [`MAX_INSTANCE_NODES`].
+    budget: usize,
     /// Per written node: whether it, or a node below it, takes a value through IS.
     needs: Vec<Option<bool>>,
     /// (prototype, the values as a key) → instantiation.
@@ -300,10 +307,11 @@ impl State<'_> {
         if self.stopped {
             return false;
         }
-        if self.nodes >= MAX_INSTANCE_NODES || self.values + cost > MAX_INSTANCE_VALUES {
+        if self.nodes >= self.budget || self.values + cost > MAX_INSTANCE_VALUES {
             self.stopped = true;
             let message = format!(
-                "{TOO_MANY_COPIES} {MAX_INSTANCE_NODES} nodes or {MAX_INSTANCE_VALUES} values; the rest are checked as written"
+                "{TOO_MANY_COPIES} {} nodes or {MAX_INSTANCE_VALUES} values; the rest are checked as written",
+                self.budget
             );
             let span = builder.doc().node(instance).name_span;
             builder.exceeded(Limit::Instances, span, message);
