@@ -677,10 +677,20 @@ impl Importer {
             entry.name_span = at;
             entry.origin = Origin::Is;
         }
+        // The library's node types and fields, as this document's version has them (the
+        // library's own version is the library's concern).
+        if let NodeKind::Known { def, .. } = node.kind {
+            node.kind = builder.node_kind(def.name);
+        }
         let connects = std::mem::take(&mut node.connects);
         builder.doc_mut().nodes.push(node);
         let field_count = builder.doc().node(id).fields.len();
         for entry in 0..field_count {
+            let field = &builder.doc().node(id).fields[entry];
+            if let FieldRef::Schema { def, .. } = field.field {
+                let field = builder.field_ref(id, def.name);
+                builder.doc_mut().nodes[id.index()].fields[entry].field = field;
+            }
             let field = &builder.doc().node(id).fields[entry];
             let Some(children) = field.value.as_nodes().map(<[ChildRef]>::to_vec) else {
                 continue;
