@@ -10,6 +10,8 @@ use crate::parse;
 pub use crate::parse::Parsed;
 use crate::report::{resolve, FileReport, Stats};
 use crate::validate;
+use crate::validate::prototypes::externs::{self, Externs};
+use crate::validate::Level;
 
 /// The name standard input is reported under; such a document has no directory.
 pub const STDIN_NAME: &str = "<stdin>";
@@ -57,9 +59,39 @@ fn check_decoded<'a>(path: &str, decoded: parse::Decoded<'a>, config: &CheckConf
     };
     let mut diagnostics = parsed.diagnostics;
     let file = (path != STDIN_NAME).then(|| Path::new(path));
-    if let Some(doc) = &parsed.document {
-        diagnostics.extend(validate::check(doc, &text, file, config));
+    let mut document = parsed.document;
+    let deep = config.level >= Level::Deep;
+    if let Some(doc) = document.take() {
+        // External prototypes are resolved at the deep level, and for the renderer (after
+        // the check, so that --render does not change the report).
+        let externs = if deep || config.render {
+            Externs::resolve(&doc, file, config)
+        } else {
+            Externs::default()
+        };
+        let mut doc = doc;
+        if deep {
+            doc = instantiate_externals(doc, file, config, &externs, &mut diagnostics);
+        }
+        let externs_for_rules = if deep {
+            externs.clone()
+        } else {
+            Externs::default()
+        };
+        diagnostics.extend(validate::check_with(
+            &doc,
+            &text,
+            file,
+            config,
+            externs_for_rules,
+        ));
+        if !deep && config.render {
+            let mut limits = Vec::new();
+            doc = instantiate_externals(doc, file, config, &externs, &mut limits);
+        }
+        document = Some(doc);
     }
+
     diagnostics.retain(|d| config.enabled(d.rule.code) && d.rule.level <= config.level);
     for d in &mut diagnostics {
         d.severity = config.severity_of(d.rule.code, d.severity);
@@ -71,7 +103,7 @@ fn check_decoded<'a>(path: &str, decoded: parse::Decoded<'a>, config: &CheckConf
     if let Some(max) = config.max_diagnostics {
         diagnostics.truncate(max);
     }
-    let doc: Option<&Document> = parsed.document.as_ref();
+    let doc: Option<&Document> = document.as_ref();
     let report = FileReport {
         path: path.to_string(),
         encoding: parsed.encoding,
@@ -84,7 +116,24 @@ fn check_decoded<'a>(path: &str, decoded: parse::Decoded<'a>, config: &CheckConf
     };
     Checked {
         report,
-        document: parsed.document,
+        document,
         text,
     }
+}
+
+/// `doc` with its external prototypes instantiated (when one resolves); the findings of
+/// the instantiation made when it was read give way to those of this one.
+fn instantiate_externals(
+    doc: Document,
+    file: Option<&Path>,
+    config: &CheckConfig,
+    externs: &Externs,
+    diagnostics: &mut Vec<crate::diagnostic::Diagnostic>,
+) -> Document {
+    let (doc, found) = externs::instantiate(doc, file, config, externs);
+    if let Some(found) = found {
+        diagnostics.retain(|d| !crate::model::is_instantiation_limit(d));
+        diagnostics.extend(found);
+    }
+    doc
 }

@@ -26,14 +26,22 @@ pub const MAX_JSON_NESTING: usize = 10_000;
 /// bytes of model, and rules walk them all.
 pub const MAX_NODES: usize = 1_000_000;
 
-/// Nodes that instantiating prototypes may add to a document. An instance copies only
-/// the body nodes that take a value through IS and the nodes above them (the rest is
-/// shared), and instances with identical values share one copy, so real scenes need
-/// few: the most in the shared corpus is 4,004 (1,001 instantiations, one file). A
-/// prototype "billion laughs" (bodies of ten instances of the previous prototype, each
-/// passing its own values on) stops here, reported, having cost what a document of this
-/// many nodes costs.
+/// Nodes that instantiating prototypes may add to a document, at least: the budget is
+/// this or [`INSTANCE_AMPLIFICATION`] times the nodes the document writes, whichever is
+/// more (the amplification factor of XML parsers against entity expansion). An
+/// instance copies only the body nodes that take a value through IS and the nodes above
+/// them (the rest is shared), and instances with identical values share one copy, so
+/// real scenes need few: the most in the shared corpus is 4,004 (1,001 instantiations,
+/// one file). A prototype "billion laughs" (bodies of ten instances of the previous
+/// prototype, each passing its own values on) is a small document: it stops here,
+/// reported, having cost what a document of this many nodes costs.
 pub const MAX_INSTANCE_NODES: usize = 100_000;
+
+/// Copies per written node instantiation may make past [`MAX_INSTANCE_NODES`]: a scene of
+/// 100,000 distinct instances of a four-node prototype needs four per instance, so a
+/// linear scene passes while the copies stay within a constant factor of the input (a
+/// copy costs the rules what a written node costs).
+pub const INSTANCE_AMPLIFICATION: usize = 8;
 
 /// Field values (numbers, strings, nodes) those copies may hold: a copied node keeps its
 /// own fields, so a body IndexedFaceSet of a million indices with one IS field would

@@ -16,14 +16,14 @@ use quick_xml::XmlVersion;
 use serde_json::Value;
 
 /// Two ROUTE errors (one with help), a PROTO_FIELD_UNKNOWN with a related place, and an info
-/// (a prototype never instantiated).
+/// (an external prototype whose body is not looked for below the deep level).
 const SCENE: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
 <X3D profile='Immersive' version='4.0'>
   <Scene>
     <ProtoDeclare name='Ball'>
       <ProtoInterface><field name='radius' type='SFFloat' accessType='initializeOnly' value='1'/></ProtoInterface>
       <ProtoBody><Shape><Sphere><IS><connect nodeField='radius' protoField='radius'/></IS></Sphere></Shape></ProtoBody>
-    </ProtoDeclare><ProtoDeclare name='Spare'><ProtoBody><Group/></ProtoBody></ProtoDeclare>
+    </ProtoDeclare><ExternProtoDeclare name='Spare' url='"https://example.com/spare.x3d"'/>
     <ProtoInstance name='Ball'><fieldValue name='radios' value='2'/></ProtoInstance>
     <TimeSensor DEF='Clock'/>
     <Transform DEF='Mover'/>
@@ -169,7 +169,7 @@ fn github_commands_are_exact() {
     let output = x3dcheck(&dir, &["--format", "github", "a,b:c.x3d", "clean.x3d"]);
     assert_eq!(output.status.code(), Some(1));
     let expected = [
-        "::notice file=a%2Cb%3Ac.x3d,line=7,col=40,endLine=7,endColumn=45,title=VALIDATION_INCOMPLETE::ProtoDeclare Spare: no instance in this document, so the body is checked as written, without values passed through IS [/X3D/Scene/ProtoDeclare[@name='Spare']/ProtoBody]",
+        "::notice file=a%2Cb%3Ac.x3d,line=7,col=46,endLine=7,endColumn=51,title=VALIDATION_INCOMPLETE::ExternProtoDeclare Spare: its body is in another file and is not checked [/X3D/Scene/ExternProtoDeclare[@name='Spare']]",
         "::error file=a%2Cb%3Ac.x3d,line=8,col=50,endLine=8,endColumn=56,title=PROTO_FIELD_UNKNOWN::fieldValue `radios`: ProtoDeclare `Ball` declares no such field [/X3D/Scene/ProtoInstance[1]]%0Ahelp: did you mean `radius`?",
         "::error file=a%2Cb%3Ac.x3d,line=11,col=40,endLine=11,endColumn=55,title=ROUTE_FIELD_UNKNOWN::ROUTE fromField `fraction_changd`: TimeSensor has no such field [/X3D/Scene/TimeSensor[@DEF='Clock']]%0Ahelp: did you mean `fraction_changed`?",
         "::error file=a%2Cb%3Ac.x3d,line=12,col=82,endLine=12,endColumn=97,title=ROUTE_TYPE_MISMATCH::ROUTE connects `Clock.fraction_changed` (TimeSensor, SFFloat) to `Mover.set_translation` (Transform, SFVec3f): both ends need the same type [/X3D/Scene/Transform[@DEF='Mover']]",
@@ -256,7 +256,7 @@ fn junit_is_well_formed_and_counts_failures() {
     ));
     assert!(warning.contains("failures=\"3\""), "{warning}");
     assert!(
-        text.contains("<system-out>scene.x3d:7:40: info[VALIDATION_INCOMPLETE]"),
+        text.contains("<system-out>scene.x3d:7:46: info[VALIDATION_INCOMPLETE]"),
         "{text}"
     );
 }

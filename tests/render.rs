@@ -57,7 +57,11 @@ fn checked_case(case: &Path) -> (PathBuf, Vec<u8>, FileReport, Option<Document>)
     } = x3dcheck::check::check_document(
         &scene.display().to_string(),
         &source,
-        &CheckConfig::default(),
+        // As the command line's --render does: values kept, external prototypes resolved.
+        &CheckConfig {
+            render: true,
+            ..CheckConfig::default()
+        },
     );
     (scene, source, report, doc)
 }

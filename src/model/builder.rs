@@ -561,7 +561,22 @@ impl Builder {
 
     /// The document, with its prototype instances instantiated, and the findings.
     pub fn finish(mut self) -> (Document, Vec<Diagnostic>) {
-        super::instantiate::instantiate_all(&mut self);
+        let none = super::instantiate::ExternalPrototypes::default();
+        super::instantiate::instantiate_all(&mut self, &none);
+        (self.doc, self.diagnostics)
+    }
+
+    /// A builder around a finished document, to instantiate its prototypes again (with
+    /// external prototypes resolved).
+    pub(super) fn resume(doc: Document) -> Builder {
+        Builder {
+            doc,
+            ..Builder::new(Encoding::Xml)
+        }
+    }
+
+    /// The document and the findings, with nothing more done.
+    pub(super) fn into_parts(self) -> (Document, Vec<Diagnostic>) {
         (self.doc, self.diagnostics)
     }
 }

@@ -13,7 +13,15 @@
 //! in the instance ([`Place::Instance`]), so a finding in one has the instance in its path.
 //! Copies keep the body node's spans and DEF names: each instance is its own DEF name scope.
 //!
-//! Limits ([`MAX_INSTANCE_NODES`], [`MAX_INSTANCE_VALUES`], [`MAX_PROTO_NESTING`]) stop a
+//! External prototypes (4.4.5) are instantiated when their resolution is handed in
+//! ([`ExternalPrototypes`], [`instantiate_with`]): the model reads no file; the caller
+//! (the deep level, the renderer) resolves the urls and hands over the library documents.
+//! A body in another file cannot be shared with this document, so it is copied whole; its
+//! copies take the instance's spans (a place in another file is never shown against this
+//! one's text) and say where they are written ([`LibraryPlace`]).
+//!
+//! Limits ([`MAX_INSTANCE_NODES`] or [`INSTANCE_AMPLIFICATION`] copies per written node,
+//! [`MAX_INSTANCE_VALUES`], [`MAX_PROTO_NESTING`]) stop a
 //! prototype "billion laughs" with `LIMIT_EXCEEDED`; past one, no more copies are made and
 //! the remaining nodes are checked as written.
 
@@ -21,28 +29,102 @@ use std::collections::HashMap;
 
 use super::builder::{Builder, Limit};
 use super::*;
-use crate::limits::{MAX_INSTANCE_NODES, MAX_INSTANCE_VALUES, MAX_PROTO_NESTING};
+use crate::diagnostic::Diagnostic;
+use crate::limits::{
+    INSTANCE_AMPLIFICATION, MAX_INSTANCE_NODES, MAX_INSTANCE_VALUES, MAX_PROTO_NESTING,
+};
 
-/// Instantiates every ProtoInstance of a ProtoDeclare the document holds.
-pub(super) fn instantiate_all(builder: &mut Builder) {
+/// A prototype library file, as the caller read it.
+pub struct LibraryFile<'a> {
+    pub doc: &'a Document,
+    /// The text its spans are offsets into (for the line numbers of notes).
+    pub text: &'a [u8],
+    /// Its name in messages (a path relative to the checked document's directory).
+    pub name: String,
+}
+
+/// What the ExternProtoDeclares of a document and of the library files it reaches resolve
+/// to. Files are numbered: 0 is the document instantiated, `k ≥ 1` is `libraries[k - 1]`.
+#[derive(Default)]
+pub struct ExternalPrototypes<'a> {
+    pub libraries: Vec<LibraryFile<'a>>,
+    /// Per file, per prototype: the top-level ProtoDeclare an ExternProtoDeclare resolves
+    /// to, as (file, prototype index); None for one that does not resolve (and for
+    /// ProtoDeclares).
+    pub resolved: Vec<Vec<Option<(usize, usize)>>>,
+}
+
+impl ExternalPrototypes<'_> {
+    fn resolve(&self, file: usize, proto: usize) -> Option<(usize, usize)> {
+        self.resolved.get(file)?.get(proto).copied().flatten()
+    }
+
+    fn library(&self, file: usize) -> Option<&LibraryFile<'_>> {
+        self.libraries.get(file.checked_sub(1)?)
+    }
+}
+
+const TOO_MANY_COPIES: &str = "instantiating prototypes copies more than";
+const NESTED_TOO_DEEP: &str = "prototype instances nest deeper than";
+
+/// Whether `diagnostic` is a LIMIT_EXCEEDED instantiation reports (so that a caller that
+/// instantiates again can drop the first one).
+pub fn is_instantiation_limit(diagnostic: &Diagnostic) -> bool {
+    diagnostic.rule.code == "LIMIT_EXCEEDED"
+        && (diagnostic.message.starts_with(TOO_MANY_COPIES)
+            || diagnostic.message.starts_with(NESTED_TOO_DEEP))
+}
+
+/// Instantiates the document's prototype instances again, this time with the external
+/// prototypes `externals` resolves: the copies made when it was read are dropped first.
+/// The findings are those of the limits.
+pub fn instantiate_with(
+    mut doc: Document,
+    externals: &ExternalPrototypes,
+) -> (Document, Vec<Diagnostic>) {
+    let written = doc.written_nodes().len();
+    doc.nodes.truncate(written);
+    doc.copies = 0;
+    doc.instantiations.clear();
+    doc.library_bodies.clear();
+    for node in &mut doc.nodes {
+        node.instantiation = None;
+    }
+    let mut builder = Builder::resume(doc);
+    instantiate_all(&mut builder, externals);
+    builder.into_parts()
+}
+
+/// Instantiates every ProtoInstance of a ProtoDeclare the document holds, and of an
+/// ExternProtoDeclare `externals` resolves.
+pub(super) fn instantiate_all(builder: &mut Builder, externals: &ExternalPrototypes) {
     let written = builder.doc().nodes.len();
     let doc = builder.doc();
     let mut instanced = vec![false; doc.protos.len()];
     for node in &doc.nodes {
         if let NodeKind::ProtoInstance { proto: Some(p), .. } = node.kind {
             instanced[p] = true;
+            if let Some((0, q)) = externals.resolve(0, p) {
+                if let Some(q) = instanced.get_mut(q) {
+                    *q = true;
+                }
+            }
         }
     }
     if !instanced.iter().any(|&i| i) {
         return;
     }
     let mut state = State {
+        externals,
+        budget: MAX_INSTANCE_NODES.max(INSTANCE_AMPLIFICATION.saturating_mul(written)),
         needs: vec![None; written],
         memo: HashMap::new(),
         nodes: 0,
         values: 0,
         open: Vec::new(),
         stopped: false,
+        lines: HashMap::new(),
+        bodies: HashMap::new(),
     };
     for index in 0..written {
         let id = NodeId(index as u32);
@@ -63,21 +145,35 @@ pub(super) fn instantiate_all(builder: &mut Builder) {
     doc.copies = doc.nodes.len() - written;
 }
 
-struct State {
+/// A prototype of one of the files: (file, index in its protos); file 0 is the document.
+type ProtoKey = (usize, usize);
+
+/// An instantiation's prototype and values, for sharing it.
+type MemoKey = (ProtoKey, Vec<Option<String>>);
+
+struct State<'e> {
+    externals: &'e ExternalPrototypes<'e>,
+    /// Nodes that may be copied: relative to the written nodes, at least
+    /// [`MAX_INSTANCE_NODES`].
+    budget: usize,
     /// Per written node: whether it, or a node below it, takes a value through IS.
     needs: Vec<Option<bool>>,
     /// (prototype, the values as a key) → instantiation.
-    memo: HashMap<(usize, Vec<Option<String>>), u32>,
+    memo: HashMap<MemoKey, u32>,
     /// Nodes and field values copied so far.
     nodes: usize,
     values: usize,
     /// The prototypes being instantiated, outermost first.
-    open: Vec<usize>,
+    open: Vec<ProtoKey>,
     /// A limit was reached: nothing more is copied.
     stopped: bool,
+    /// Per library file: the offsets of its line ends, once needed.
+    lines: HashMap<usize, Vec<usize>>,
+    /// Library prototype → its index in `Document::library_bodies`.
+    bodies: HashMap<ProtoKey, u32>,
 }
 
-impl State {
+impl State<'_> {
     fn needs(&mut self, doc: &Document, id: NodeId) -> bool {
         let Some(&known) = self.needs.get(id.index()) else {
             return false;
@@ -103,23 +199,27 @@ impl State {
 
     fn instantiate(&mut self, builder: &mut Builder, instance: NodeId, depth: usize) {
         let doc = builder.doc();
-        let node = doc.node(instance);
-        let NodeKind::ProtoInstance { proto: Some(p), .. } = node.kind else {
+        let NodeKind::ProtoInstance { proto: Some(p), .. } = doc.node(instance).kind else {
             return;
         };
-        let proto = &doc.protos[p];
+        let mut p = p;
+        if doc.protos[p].external {
+            match self.externals.resolve(0, p) {
+                Some((0, q)) if doc.protos.get(q).is_some_and(|q| !q.external) => p = q,
+                Some((file, q)) if file > 0 => {
+                    return self.import(builder, instance, (file, q), Some(p), depth)
+                }
+                _ => return,
+            }
+        }
         // A prototype instantiated inside its own instantiation is a cycle (PROTO_CYCLE):
         // it builds nothing.
-        if proto.external || self.stopped || self.open.contains(&p) {
+        if self.stopped || self.open.contains(&(0, p)) || self.too_deep(builder, instance, depth) {
             return;
         }
-        if depth >= MAX_PROTO_NESTING {
-            let message = format!(
-                "prototype instances nest deeper than {MAX_PROTO_NESTING} levels here; deeper ones are checked as written"
-            );
-            builder.exceeded(Limit::Instances, node.name_span, message);
-            return;
-        }
+        let doc = builder.doc();
+        let node = doc.node(instance);
+        let proto = &doc.protos[p];
         let values: Vec<Option<Value>> = proto
             .interface
             .iter()
@@ -132,16 +232,15 @@ impl State {
                     .or_else(|| decl.value.as_ref().map(|(v, _)| v.clone()))
             })
             .collect();
-        let key = (p, values.iter().map(|v| v.as_ref().map(key_of)).collect());
-        if let Some(&shared) = self.memo.get(&key) {
-            let doc = builder.doc_mut();
-            doc.nodes[instance.index()].instantiation = Some(shared);
-            let shared = &mut doc.instantiations[shared as usize];
-            shared.count = shared.count.saturating_add(1);
+        let key = (
+            (0, p),
+            values.iter().map(|v| v.as_ref().map(key_of)).collect(),
+        );
+        let body = proto.body.clone();
+        if self.share(builder, instance, &key) {
             return;
         }
-        let body = proto.body.clone();
-        self.open.push(p);
+        self.open.push((0, p));
         let mut copies = HashMap::new();
         let mut roots = Vec::with_capacity(body.len());
         for root in body {
@@ -155,16 +254,185 @@ impl State {
             roots.push(copy.child(self, builder, &mut copies, root, place));
         }
         self.open.pop();
+        self.record(builder, instance, Some(p), roots, key);
+    }
+
+    /// Whether nesting at `depth` is past [`MAX_PROTO_NESTING`] (reported once).
+    fn too_deep(&mut self, builder: &mut Builder, instance: NodeId, depth: usize) -> bool {
+        if depth < MAX_PROTO_NESTING {
+            return false;
+        }
+        let message = format!(
+            "{NESTED_TOO_DEEP} {MAX_PROTO_NESTING} levels here; deeper ones are checked as written"
+        );
+        let span = builder.doc().node(instance).name_span;
+        builder.exceeded(Limit::Instances, span, message);
+        true
+    }
+
+    /// Shares the instantiation made with the same values, if there is one.
+    fn share(&mut self, builder: &mut Builder, instance: NodeId, key: &MemoKey) -> bool {
+        let Some(&shared) = self.memo.get(key) else {
+            return false;
+        };
+        let doc = builder.doc_mut();
+        doc.nodes[instance.index()].instantiation = Some(shared);
+        let shared = &mut doc.instantiations[shared as usize];
+        shared.count = shared.count.saturating_add(1);
+        true
+    }
+
+    fn record(
+        &mut self,
+        builder: &mut Builder,
+        instance: NodeId,
+        proto: Option<usize>,
+        roots: Vec<ChildRef>,
+        key: MemoKey,
+    ) {
         let doc = builder.doc_mut();
         let index = doc.instantiations.len() as u32;
         doc.instantiations.push(Instantiation {
-            proto: p,
+            proto,
             roots,
             instance,
             count: 1,
         });
         doc.nodes[instance.index()].instantiation = Some(index);
         self.memo.insert(key, index);
+    }
+
+    /// Whether one more node of `cost` values may be copied; reports the limit when not.
+    fn room_for(&mut self, builder: &mut Builder, instance: NodeId, cost: usize) -> bool {
+        if self.stopped {
+            return false;
+        }
+        if self.nodes >= self.budget || self.values + cost > MAX_INSTANCE_VALUES {
+            self.stopped = true;
+            let message = format!(
+                "{TOO_MANY_COPIES} {} nodes or {MAX_INSTANCE_VALUES} values; the rest are checked as written",
+                self.budget
+            );
+            let span = builder.doc().node(instance).name_span;
+            builder.exceeded(Limit::Instances, span, message);
+            return false;
+        }
+        self.nodes += 1;
+        self.values += cost;
+        true
+    }
+
+    /// Instantiates `instance` (a node of this document) from the body of prototype `key`
+    /// of a library file. `proto` is the ExternProtoDeclare of this document it is an
+    /// instance of (None for an instance inside a library body).
+    fn import(
+        &mut self,
+        builder: &mut Builder,
+        instance: NodeId,
+        key: ProtoKey,
+        proto: Option<usize>,
+        depth: usize,
+    ) {
+        let externals = self.externals;
+        let Some(decl) = externals
+            .library(key.0)
+            .and_then(|l| l.doc.protos.get(key.1))
+        else {
+            return;
+        };
+        if self.stopped || self.open.contains(&key) || self.too_deep(builder, instance, depth) {
+            return;
+        }
+        // The instance's fieldValue, else the ProtoDeclare's default: an
+        // ExternProtoDeclare's interface gives no initial values (4.4.5.2).
+        let node = builder.doc().node(instance);
+        let given: Vec<Option<Value>> = decl
+            .interface
+            .iter()
+            .map(|f| {
+                let entry = node.fields.iter().find(|e| {
+                    e.name() == f.name.text && matches!(e.field, FieldRef::Declared { .. })
+                });
+                entry.map(|e| e.value.clone())
+            })
+            .collect();
+        let memo_values = given
+            .iter()
+            .map(|v| Some(v.as_ref().map_or_else(String::new, |v| key_of(v) + "=")))
+            .collect();
+        let memo_key = (key, memo_values);
+        if self.share(builder, instance, &memo_key) {
+            return;
+        }
+        self.open.push(key);
+        let mut copies = HashMap::new();
+        let mut importer = Importer {
+            file: key.0,
+            proto: key.1,
+            instance,
+            depth,
+            body: self.body(builder, key),
+            values: Vec::new(),
+        };
+        // A default of node type is the library's nodes: copied too.
+        let mut values = Vec::with_capacity(given.len());
+        for (given, field) in given.into_iter().zip(&decl.interface) {
+            let value = given.or_else(|| {
+                let (default, _) = field.value.as_ref()?;
+                let Some(nodes) = default.as_nodes() else {
+                    return Some(default.clone());
+                };
+                let place = Place::Instance { instance };
+                let copied = nodes
+                    .iter()
+                    .filter_map(|&c| importer.copy(self, builder, &mut copies, c, place))
+                    .collect();
+                Some(Value::Nodes(copied))
+            });
+            values.push(value);
+        }
+        importer.values = values;
+        let roots = decl
+            .body
+            .iter()
+            .filter_map(|&root| {
+                let place = Place::Instance { instance };
+                importer.copy(self, builder, &mut copies, root, place)
+            })
+            .collect();
+        self.open.pop();
+        self.record(builder, instance, proto, roots, memo_key);
+    }
+
+    /// `` `Name` in file ``, as notes name a library body: its index in
+    /// `Document::library_bodies`.
+    fn body(&mut self, builder: &mut Builder, key: ProtoKey) -> u32 {
+        if let Some(&index) = self.bodies.get(&key) {
+            return index;
+        }
+        let library = self.externals.library(key.0).expect("a library file");
+        let label = format!(
+            "`{}` in {}",
+            library.doc.protos[key.1].name.text, library.name
+        );
+        let bodies = &mut builder.doc_mut().library_bodies;
+        bodies.push(label);
+        let index = (bodies.len() - 1) as u32;
+        self.bodies.insert(key, index);
+        index
+    }
+
+    /// The 1-based line of `span` in library `file`.
+    fn line(&mut self, file: usize, span: Span) -> u32 {
+        let externals = self.externals;
+        let Some(library) = externals.library(file) else {
+            return 0;
+        };
+        let ends = self.lines.entry(file).or_insert_with(|| {
+            let text = library.text.iter().enumerate();
+            text.filter(|&(_, &b)| b == b'\n').map(|(i, _)| i).collect()
+        });
+        (ends.partition_point(|&end| end < span.start as usize) + 1) as u32
     }
 }
 
@@ -178,6 +446,55 @@ fn key_of(value: &Value) -> String {
             .collect::<Vec<_>>()
             .join(" "),
         other => format!("{other:?}"),
+    }
+}
+
+/// The entry an `IS` gives a copy: `value` (of the prototype field's type `proto_type`)
+/// for node field `field`. None when the node field takes no initial value (inputOnly,
+/// outputOnly) or is one the document's version lacks (IS_FIELD_UNKNOWN's concern, not
+/// one to report again in every instance).
+fn passed_entry(
+    doc: &Document,
+    field: FieldRef,
+    value: &Value,
+    proto_type: Option<FieldType>,
+    name_span: Span,
+    span: Span,
+) -> Option<FieldEntry> {
+    let initializable = match &field {
+        FieldRef::Schema { def, version } => {
+            *version == doc.schema_version()
+                && matches!(
+                    def.access,
+                    AccessType::InitializeOnly | AccessType::InputOutput
+                )
+        }
+        FieldRef::Declared { .. } => true,
+        FieldRef::Unknown { .. } => false,
+    };
+    if !initializable {
+        return None;
+    }
+    // A value of another type (IS_TYPE_MISMATCH) is not one the node's rules can read.
+    let value = if field.field_type().is_some() && field.field_type() == proto_type {
+        value.clone()
+    } else {
+        Value::Unparsed(String::new())
+    };
+    Some(FieldEntry {
+        field,
+        name_span,
+        span,
+        origin: Origin::Is,
+        value,
+    })
+}
+
+/// Sets the entry an `IS` passes on a copy, in place of what the body wrote.
+fn set_entry(node: &mut Node, entry: FieldEntry) {
+    match node.fields.iter().position(|f| f.name() == entry.name()) {
+        Some(at) => node.fields[at] = entry,
+        None => node.fields.push(entry),
     }
 }
 
@@ -213,34 +530,21 @@ impl Copier<'_> {
         }
         let mut node = builder.doc().node(original).clone();
         let cost: usize = node.fields.iter().map(|f| f.value.len()).sum();
-        if state.nodes >= MAX_INSTANCE_NODES || state.values + cost > MAX_INSTANCE_VALUES {
-            state.stopped = true;
-            let message = format!(
-                "instantiating prototypes copies more than {MAX_INSTANCE_NODES} nodes or {MAX_INSTANCE_VALUES} values; the rest are checked as written"
-            );
-            builder.exceeded(
-                Limit::Instances,
-                builder.doc().node(self.instance).name_span,
-                message,
-            );
+        if !state.room_for(builder, self.instance, cost) {
             return child;
         }
-        state.nodes += 1;
-        state.values += cost;
         let id = NodeId(builder.doc().nodes.len() as u32);
         copies.insert(original, id);
         node.place = place;
         node.copy_of = Some(Copied {
             original,
             instance: self.instance,
+            library: None,
         });
         node.instantiation = None;
         for connect in std::mem::take(&mut node.connects) {
             if let Some(entry) = self.passed(builder, original, &connect) {
-                match node.fields.iter().position(|f| f.name() == entry.name()) {
-                    Some(at) => node.fields[at] = entry,
-                    None => node.fields.push(entry),
-                }
+                set_entry(&mut node, entry);
             }
         }
         builder.doc_mut().nodes.push(node);
@@ -274,8 +578,7 @@ impl Copier<'_> {
     }
 
     /// The entry a `connect` gives the copy of `original`: the instance's value for the
-    /// prototype field, typed as the node's field. None when the node field takes no
-    /// initial value (inputOnly, outputOnly) or the prototype field has none to give.
+    /// prototype field, typed as the node's field.
     fn passed(
         &self,
         builder: &Builder,
@@ -289,35 +592,171 @@ impl Copier<'_> {
             .position(|f| f.name.text == connect.proto_field.text)?;
         let value = self.values[at].as_ref()?;
         let field = builder.field_ref(original, &connect.node_field.text);
-        // A field the document's version lacks is the connect's own problem (IS_FIELD_UNKNOWN),
-        // not one to report again in every instance.
-        let initializable = match &field {
-            FieldRef::Schema { def, version } => {
-                *version == doc.schema_version()
-                    && matches!(
-                        def.access,
-                        AccessType::InitializeOnly | AccessType::InputOutput
-                    )
-            }
-            FieldRef::Declared { .. } => true,
-            FieldRef::Unknown { .. } => false,
+        let (name_span, span) = (connect.node_field.span, connect.span);
+        passed_entry(doc, field, value, interface[at].ty, name_span, span)
+    }
+}
+
+/// Copies the body nodes of one instantiation of a library file's prototype: every node,
+/// since none can be shared with this document.
+struct Importer {
+    file: usize,
+    proto: usize,
+    instance: NodeId,
+    depth: usize,
+    /// The body's index in `Document::library_bodies`.
+    body: u32,
+    /// Per interface field: the instance's value, or the default.
+    values: Vec<Option<Value>>,
+}
+
+impl Importer {
+    /// The copy of library node `child` under `place`; None past a limit.
+    fn copy(
+        &self,
+        state: &mut State,
+        builder: &mut Builder,
+        copies: &mut HashMap<NodeId, NodeId>,
+        child: ChildRef,
+        place: Place,
+    ) -> Option<ChildRef> {
+        let at = builder.doc().node(self.instance).name_span;
+        let copied = |node| ChildRef {
+            node,
+            span: at,
+            is_use: child.is_use,
         };
-        if !initializable {
+        if let Some(&copy) = copies.get(&child.node) {
+            return Some(copied(copy));
+        }
+        let externals = state.externals;
+        let library = externals.library(self.file)?.doc;
+        let original = library.nodes.get(child.node.index())?;
+        let cost: usize = original.fields.iter().map(|f| f.value.len()).sum();
+        if !state.room_for(builder, self.instance, cost) {
             return None;
         }
-        // A value of another type (IS_TYPE_MISMATCH) is not one the node's rules can read.
-        let value = if field.field_type().is_some() && field.field_type() == interface[at].ty {
-            value.clone()
-        } else {
-            Value::Unparsed(String::new())
+        let line = state.line(self.file, original.name_span);
+        let mut node = original.clone();
+        let id = NodeId(builder.doc().nodes.len() as u32);
+        copies.insert(child.node, id);
+        node.span = at;
+        node.name_span = at;
+        if let Some(def) = &mut node.def_name {
+            def.span = at;
+        }
+        node.place = place;
+        node.scope = builder.doc().node(self.instance).scope;
+        node.source_code = None;
+        node.instantiation = None;
+        node.copy_of = Some(Copied {
+            original: child.node,
+            instance: self.instance,
+            library: Some(LibraryPlace {
+                body: self.body,
+                line,
+            }),
+        });
+        // An instance of a library prototype: instantiated below from the library, never
+        // taken for an instance of this document's prototype of that index.
+        let nested = match &mut node.kind {
+            NodeKind::ProtoInstance { proto, .. } => proto.take(),
+            _ => None,
         };
-        Some(FieldEntry {
-            field,
-            name_span: connect.node_field.span,
-            span: connect.span,
-            origin: Origin::Is,
-            value,
-        })
+        for decl in &mut node.declared {
+            decl.span = at;
+            decl.name.span = at;
+            match &mut decl.value {
+                Some((Value::Nodes(_), _)) => decl.value = None,
+                Some((_, span)) => *span = at,
+                None => {}
+            }
+        }
+        for entry in &mut node.fields {
+            entry.span = at;
+            entry.name_span = at;
+            entry.origin = Origin::Is;
+        }
+        // The library's node types and fields, as this document's version has them (the
+        // library's own version is the library's concern).
+        if let NodeKind::Known { def, .. } = node.kind {
+            node.kind = builder.node_kind(def.name);
+        }
+        let connects = std::mem::take(&mut node.connects);
+        builder.doc_mut().nodes.push(node);
+        let field_count = builder.doc().node(id).fields.len();
+        for entry in 0..field_count {
+            let field = &builder.doc().node(id).fields[entry];
+            if let FieldRef::Schema { def, .. } = field.field {
+                let field = builder.field_ref(id, def.name);
+                builder.doc_mut().nodes[id.index()].fields[entry].field = field;
+            }
+            let field = &builder.doc().node(id).fields[entry];
+            let Some(children) = field.value.as_nodes().map(<[ChildRef]>::to_vec) else {
+                continue;
+            };
+            let place = Place::Field {
+                parent: id,
+                entry: entry as u32,
+            };
+            let children: Vec<ChildRef> = children
+                .into_iter()
+                .filter_map(|c| self.copy(state, builder, copies, c, place))
+                .collect();
+            builder.doc_mut().nodes[id.index()].fields[entry].value = Value::Nodes(children);
+        }
+        for connect in &connects {
+            if let Some(entry) = self.passed(state, builder, id, nested, connect) {
+                set_entry(&mut builder.doc_mut().nodes[id.index()], entry);
+            }
+        }
+        if let Some(nested) = nested {
+            let target = if library.protos.get(nested)?.external {
+                externals.resolve(self.file, nested)
+            } else {
+                Some((self.file, nested))
+            };
+            // A url back to the checked document names it as a library file: never file 0.
+            if let Some(target) = target.filter(|t| t.0 > 0) {
+                state.import(builder, id, target, None, self.depth + 1);
+            }
+        }
+        Some(copied(id))
+    }
+
+    /// The entry a `connect` of the library body gives the copy `id`: the instance's value
+    /// for the prototype field, typed as the node's field. `nested` is the library
+    /// prototype the copy is an instance of, if it is one.
+    fn passed(
+        &self,
+        state: &State,
+        builder: &Builder,
+        id: NodeId,
+        nested: Option<usize>,
+        connect: &IsConnect,
+    ) -> Option<FieldEntry> {
+        let library = state.externals.library(self.file)?.doc;
+        let interface = &library.protos.get(self.proto)?.interface;
+        let at = interface
+            .iter()
+            .position(|f| f.name.text == connect.proto_field.text)?;
+        let value = self.values.get(at)?.as_ref()?;
+        let name = &connect.node_field.text;
+        let field = match nested {
+            Some(nested) => {
+                let declared = library.protos.get(nested)?.interface.iter();
+                FieldRef::Declared {
+                    name: name.clone(),
+                    ty: declared
+                        .clone()
+                        .find(|f| &f.name.text == name)
+                        .and_then(|f| f.ty),
+                }
+            }
+            None => builder.field_ref(id, name),
+        };
+        let span = builder.doc().node(self.instance).name_span;
+        passed_entry(builder.doc(), field, value, interface[at].ty, span, span)
     }
 }
 

@@ -19,6 +19,7 @@ pub use header::{
     is_namespace_declaration, record, statement_attributes, statement_name, HeaderPart,
     IgnoredContent, UnknownAttribute,
 };
+pub use instantiate::{instantiate_with, is_instantiation_limit, ExternalPrototypes, LibraryFile};
 pub use value::{range_applies, ChildRef, Image, Sink, Summarized, Summarizer, Summary, Value};
 
 use std::collections::HashMap;
@@ -125,9 +126,22 @@ pub struct Node {
 /// A ProtoBody node copied for an instance, so that its fields hold the instance's values.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub struct Copied {
+    /// The body node copied: of this document, or of the library file `library` names.
     pub original: NodeId,
     /// The first ProtoInstance built with these values.
     pub instance: NodeId,
+    /// For a node of an external prototype's body (another file): where it is written.
+    pub library: Option<LibraryPlace>,
+}
+
+/// Where a node copied from a library file's prototype body is written: the body
+/// ([`Document::library_bodies`] names it) and the line in that file. The copy's spans are
+/// those of its instance in this document: a place in another file is never shown against
+/// this one's text.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct LibraryPlace {
+    pub body: u32,
+    pub line: u32,
 }
 
 /// What the ProtoInstances of one ProtoDeclare with the same values build (19775-1
@@ -136,7 +150,10 @@ pub struct Copied {
 /// own, shared as `USE` shares.
 #[derive(Clone, Debug)]
 pub struct Instantiation {
-    pub proto: usize,
+    /// The prototype of this document instantiated (for an external prototype, the
+    /// ExternProtoDeclare); None for a prototype of a library file instantiated in an
+    /// external prototype's body.
+    pub proto: Option<usize>,
     /// The body's top-level nodes; the first is the node the instance stands for.
     pub roots: Vec<ChildRef>,
     /// The first ProtoInstance built with these values.
@@ -207,7 +224,9 @@ pub enum Origin {
     /// A JSON member (`@name` or `-name`), or a ClassicVRML field named in a node's body.
     Member,
     /// In a prototype's instantiation: the value an `IS` passes in (the instance's
-    /// fieldValue or the interface default). The entry's spans are the IS/connect's.
+    /// fieldValue or the interface default). The entry's spans are the IS/connect's; in a
+    /// copy of a library file's body, every field is of this origin and its spans are the
+    /// instance's (the value is not written in this document's text).
     Is,
 }
 
@@ -365,6 +384,9 @@ pub struct Document {
     pub copies: usize,
     /// The prototype instantiations, shared by ProtoInstances with identical values.
     pub instantiations: Vec<Instantiation>,
+    /// The library prototype bodies copies were made from, as notes name them
+    /// (`` `Lamp` in lib/lamps.x3d ``); see [`LibraryPlace`].
+    pub library_bodies: Vec<String>,
 }
 
 impl Document {
@@ -386,6 +408,7 @@ impl Document {
             defs: HashMap::new(),
             copies: 0,
             instantiations: Vec::new(),
+            library_bodies: Vec::new(),
         }
     }
 

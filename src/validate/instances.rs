@@ -76,6 +76,7 @@ pub fn fold(doc: &Document, diagnostics: Vec<Diagnostic>) -> Vec<Diagnostic> {
                         .max(1)
                         .saturating_mul(k.instances.min(usize::MAX as u64) as usize);
                 }
+                note_library(doc, &mut d);
                 note_instances(doc, &mut d, instance);
             }
             d
@@ -93,6 +94,24 @@ fn instances(doc: &Document, instance: NodeId) -> u64 {
         current = doc.node(id).copy_of.map(|c| c.instance);
     }
     count
+}
+
+/// For a finding in a copy of a library file's body: where in that file, as a note at the
+/// finding's place (spans of another file are never shown against this one).
+fn note_library(doc: &Document, d: &mut Diagnostic) {
+    let place = d
+        .node
+        .and_then(|n| doc.nodes.get(n.index()))
+        .and_then(|n| n.copy_of)
+        .and_then(|c| c.library);
+    if let Some(place) = place {
+        let body = doc
+            .library_bodies
+            .get(place.body as usize)
+            .map_or("", String::as_str);
+        d.related
+            .push((d.span, format!("in the body of {body} line {}", place.line)));
+    }
 }
 
 /// A related note at the instance, and at each instance it is nested in.

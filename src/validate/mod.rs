@@ -212,15 +212,27 @@ pub fn check(
     file: Option<&std::path::Path>,
     config: &CheckConfig,
 ) -> Vec<Diagnostic> {
-    let base = file.map(|file| match file.parent() {
-        Some(dir) if !dir.as_os_str().is_empty() => dir,
-        _ => std::path::Path::new("."),
-    });
     let externs = if config.level >= Level::Deep {
         prototypes::externs::Externs::resolve(doc, file, config)
     } else {
         prototypes::externs::Externs::default()
     };
+    check_with(doc, source, file, config, externs)
+}
+
+/// [`check`] with the document's ExternProtoDeclares already resolved (deep level; empty
+/// below it).
+pub fn check_with(
+    doc: &Document,
+    source: &[u8],
+    file: Option<&std::path::Path>,
+    config: &CheckConfig,
+    externs: prototypes::externs::Externs,
+) -> Vec<Diagnostic> {
+    let base = file.map(|file| match file.parent() {
+        Some(dir) if !dir.as_os_str().is_empty() => dir,
+        _ => std::path::Path::new("."),
+    });
     let mut ctx = Ctx {
         doc,
         source,

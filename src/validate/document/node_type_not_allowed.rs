@@ -100,10 +100,15 @@ fn check_child(ctx: &mut Ctx, child: ChildRef, parent: &str, field: &str, accept
 }
 
 /// The node type a child counts as: its own, or for a ProtoInstance the type of the first
-/// node of its ProtoBody. None when it cannot be told (unknown names, external prototypes).
+/// node of its ProtoBody (for an external prototype, as instantiated from the library file
+/// at the deep level). None when it cannot be told (unknown names, external prototypes not
+/// resolved).
 fn node_type(doc: &Document, child: ChildRef, depth: usize) -> Option<&'static NodeDef> {
     match &doc.node(child.node).kind {
         NodeKind::Known { def, .. } => Some(def),
+        NodeKind::ProtoInstance { .. } if doc.instantiation_of(child.node).is_some() => doc
+            .built(child.node)
+            .and_then(|built| doc.node(built).def()),
         NodeKind::ProtoInstance { proto: Some(p), .. } if depth < MAX_PROTO_DEPTH => {
             let first = *doc.protos[*p].body.first()?;
             node_type(doc, first, depth + 1)

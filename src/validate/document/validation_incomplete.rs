@@ -3,27 +3,31 @@
 use crate::model::Span;
 use crate::report::Diagnostic;
 use crate::validate::prototypes::externs::Resolved;
-use crate::validate::Ctx;
+use crate::validate::texturing::files::{Resolution, Resolver};
+use crate::validate::{Ctx, Level};
 
 crate::declare_rule! {
     /// ## What it does
     /// Says which parts of a scene were not checked, so that a partial check never reads
     /// as "valid": Script code; shader source (below the standard level; from it on,
     /// what the GLSL compiler could not check: other languages, PackagedShader, sources
-    /// in network or, below deep, local files); prototypes the document declares but never
-    /// instantiates (their bodies are checked as written, with no values passed through
-    /// `IS`); ExternProtoDeclare bodies, which live in other files (at the deep level, one
-    /// whose url resolves to a ProtoDeclare in a local file of the tree has its interface
-    /// compared with it and is not listed); IMPORT/EXPORT; Inline scenes.
+    /// in network or, below deep, local files); the bodies of external prototypes that
+    /// x3dcheck cannot read; IMPORT/EXPORT; Inline scenes.
     ///
-    /// Each ProtoInstance of a ProtoDeclare is instantiated (19775-1 4.4.4) and every rule
-    /// checks the nodes it builds with the values it passes, so a prototype with an
-    /// instance is checked whole and gets no note here. A prototype with no instance in
-    /// the document builds nothing in this scene (4.4.4: the body is not part of the
-    /// transformation hierarchy; only instances are); but such a document is most often
-    /// a prototype library that other scenes instantiate through ExternProtoDeclare with
-    /// values x3dcheck does not see here, so the note stays: what its IS fields hold is
-    /// not checked.
+    /// Prototypes: each ProtoInstance of a ProtoDeclare is instantiated (19775-1 4.4.4)
+    /// and every rule checks the nodes it builds with the values it passes. A ProtoDeclare
+    /// with no instance in the document gets no note: it builds nothing in this scene
+    /// (4.4.4: a body is not part of the transformation hierarchy; only instances are), and
+    /// its body is checked as written (each node, each IS statement's names and types);
+    /// the values another scene passes to it are checked in that scene, where its
+    /// instances are. Below the deep level an ExternProtoDeclare's body is not looked for
+    /// ("its body is in another file"); at the deep level one whose url resolves to a
+    /// local file is instantiated from it, one whose local files exist without the
+    /// prototype is EXTERNPROTO_NOT_FOUND, and one whose url names only local files that do
+    /// not exist is URL_UNRESOLVED; what remains here is a url x3dcheck does not read: a
+    /// network URL (never fetched; a browser falls back to it when the local entries
+    /// before it are missing), a file outside the tree being checked, or a relative URL of
+    /// a document read from standard input.
     ///
     /// ## Why it matters
     /// A clean report should mean the whole scene is right. Where x3dcheck cannot look,
@@ -35,8 +39,8 @@ crate::declare_rule! {
     /// ```
     ///
     /// ## Clause
-    /// 19775-1 29 Scripting, 31 Programmable shaders, 4.4.4 Prototype semantics,
-    /// 9.4.2 Inline.
+    /// 19775-1 29 Scripting, 31 Programmable shaders, 4.4.4 Prototype semantics, 4.4.5
+    /// External prototype semantics, 9.2.1 URLs, 9.4.2 Inline.
     pub static VALIDATION_INCOMPLETE = {
         severity: Info,
         level: Fast,
@@ -73,26 +77,42 @@ fn check(ctx: &mut Ctx) {
             format!("{}: {what}", node.type_name()),
         ));
     }
-    let mut instantiated = vec![false; ctx.doc.protos.len()];
-    for instantiation in &ctx.doc.instantiations {
-        instantiated[instantiation.proto] = true;
-    }
+    let deep = ctx.config.level >= Level::Deep;
     for (index, proto) in ctx.doc.protos.iter().enumerate() {
-        // At the deep level an external prototype resolved to a local ProtoDeclare has its
-        // interface compared with it (EXTERNPROTO_INTERFACE_MISMATCH, PROTO_CYCLE).
-        let resolved = matches!(ctx.externs.get(index), Some(Resolved::Found { .. }));
-        let what = if instantiated[index] || (proto.external && resolved) {
+        if !proto.external {
             continue;
-        } else if proto.external {
+        }
+        let what = if !deep {
             format!(
                 "ExternProtoDeclare {}: its body is in another file and is not checked",
                 proto.name.text
             )
-        } else {
+        } else if let Some(Resolved::Unresolved) = ctx.externs.get(index) {
+            let resolver = Resolver::new(ctx.base, ctx.config.root.as_deref());
+            let unread = proto
+                .url
+                .iter()
+                .find_map(|url| match resolver.resolve(url) {
+                    Resolution::Network(_) => Some(format!("network URL \"{url}\" is not fetched")),
+                    Resolution::Outside(_) => Some(format!(
+                        "\"{url}\" is outside the directory tree being checked and is not read"
+                    )),
+                    Resolution::NoBase => Some(
+                        "relative URLs of a document read from standard input are not resolved"
+                            .to_string(),
+                    ),
+                    _ => None,
+                });
+            // Only missing local files: URL_UNRESOLVED.
+            let Some(unread) = unread else {
+                continue;
+            };
             format!(
-                "ProtoDeclare {}: no instance in this document, so the body is checked as written, without values passed through IS",
+                "ExternProtoDeclare {}: its body is not checked: {unread}",
                 proto.name.text
             )
+        } else {
+            continue;
         };
         found.push((proto.name.span, None, what));
     }

@@ -16,12 +16,14 @@
 //! unchecked. Instantiating a resolved prototype reads its body through
 //! [`Externs::declaration`].
 
+use std::collections::{HashMap, VecDeque};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use crate::config::CheckConfig;
 use crate::library::{Libraries, Library};
-use crate::model::{Document, ProtoDecl, Scope};
+use crate::limits::MAX_LIBRARY_FILES;
+use crate::model::{Document, ExternalPrototypes, LibraryFile, ProtoDecl, Scope};
 use crate::parse::KeepValues;
 use crate::validate::texturing::files::{Resolution, Resolver};
 
@@ -62,7 +64,7 @@ impl Externs {
         if !doc.protos.iter().any(|p| p.external) {
             return Externs::default();
         }
-        let Some(file) = file else {
+        let Some((tree, base)) = Tree::of(file, config) else {
             return Externs {
                 by_proto: doc
                     .protos
@@ -71,16 +73,14 @@ impl Externs {
                     .collect(),
             };
         };
-        let base = match file.parent() {
-            Some(dir) if !dir.as_os_str().is_empty() => dir,
-            _ => Path::new("."),
-        };
-        let tree = Tree {
-            root: config.root.clone().unwrap_or_else(|| base.to_path_buf()),
-            libraries: &config.libraries,
-            keep: config.keep_values(),
-        };
-        tree.externs(doc, base)
+        tree.externs(doc, &base)
+    }
+
+    /// Whether any ExternProtoDeclare resolved.
+    pub fn any_found(&self) -> bool {
+        self.by_proto
+            .iter()
+            .any(|r| matches!(r, Some(Resolved::Found { .. })))
     }
 
     /// What prototype `proto` (an ExternProtoDeclare) resolves to; None for a ProtoDeclare
@@ -117,6 +117,21 @@ pub struct Tree<'a> {
 }
 
 impl Tree<'_> {
+    /// The tree of the document read from `file` (None: standard input, whose relative
+    /// urls do not resolve), with the document's directory.
+    pub fn of<'c>(file: Option<&Path>, config: &'c CheckConfig) -> Option<(Tree<'c>, PathBuf)> {
+        let base = match file?.parent() {
+            Some(dir) if !dir.as_os_str().is_empty() => dir,
+            _ => Path::new("."),
+        };
+        let tree = Tree {
+            root: config.root.clone().unwrap_or_else(|| base.to_path_buf()),
+            libraries: &config.libraries,
+            keep: config.keep_values(),
+        };
+        Some((tree, base.to_path_buf()))
+    }
+
     /// The externs of `doc`, a document in directory `base` of the tree.
     pub fn externs(&self, doc: &Document, base: &Path) -> Externs {
         let resolver = Resolver::new(Some(base), Some(&self.root));
@@ -173,6 +188,116 @@ impl Tree<'_> {
             None => Resolved::Unresolved,
         }
     }
+}
+
+/// The library files a document's external prototypes reach, through the libraries' own
+/// ExternProtoDeclares too (at most [`MAX_LIBRARY_FILES`]), with what each prototype of
+/// each file resolves to. File 0 is the document, file `k ≥ 1` is `libraries[k - 1]`.
+pub struct Reached {
+    pub libraries: Vec<Arc<Library>>,
+    /// Per file, per prototype: the ProtoDeclare an ExternProtoDeclare resolves to.
+    pub resolved: Vec<Vec<Option<(usize, usize)>>>,
+    /// Where [`MAX_LIBRARY_FILES`] stopped the walk: (file, prototype) not followed.
+    pub exceeded: Option<(usize, usize)>,
+}
+
+impl Reached {
+    /// Walks from `doc` (read from `own`, canonical, when known), whose ExternProtoDeclares
+    /// resolved to `externs`; libraries' own resolve in `tree`.
+    pub fn walk(doc: &Document, externs: &Externs, tree: &Tree, own: Option<PathBuf>) -> Reached {
+        let mut reached = Reached {
+            libraries: Vec::new(),
+            resolved: Vec::new(),
+            exceeded: None,
+        };
+        let mut by_path: HashMap<PathBuf, usize> = own.into_iter().map(|p| (p, 0)).collect();
+        let mut pending = VecDeque::from([externs.clone()]);
+        while let Some(externs) = pending.pop_front() {
+            let file = reached.resolved.len();
+            let count = match file {
+                0 => doc.protos.len(),
+                _ => reached.libraries[file - 1]
+                    .document
+                    .as_ref()
+                    .map_or(0, |d| d.protos.len()),
+            };
+            let mut resolved = vec![None; count];
+            for (proto, slot) in resolved.iter_mut().enumerate() {
+                let Some(Resolved::Found {
+                    library,
+                    proto: target,
+                    ..
+                }) = externs.get(proto)
+                else {
+                    continue;
+                };
+                let Some(library) = library else {
+                    *slot = Some((file, *target));
+                    continue;
+                };
+                if let Some(&known) = by_path.get(&library.path) {
+                    *slot = Some((known, *target));
+                    continue;
+                }
+                let Some(library_doc) = &library.document else {
+                    continue;
+                };
+                if reached.libraries.len() + 1 >= MAX_LIBRARY_FILES {
+                    reached.exceeded.get_or_insert((file, proto));
+                    continue;
+                }
+                reached.libraries.push(library.clone());
+                let index = reached.libraries.len();
+                by_path.insert(library.path.clone(), index);
+                let base = library.path.parent().unwrap_or(Path::new("."));
+                // Files are numbered in the order they are found, and walked in that order.
+                pending.push_back(tree.externs(library_doc, base));
+                *slot = Some((index, *target));
+            }
+            reached.resolved.push(resolved);
+        }
+        reached
+    }
+
+    /// The resolution as the model's instantiation takes it; library names relative to
+    /// `base` (the checked document's directory).
+    pub fn prototypes(&self, base: Option<&Path>) -> ExternalPrototypes<'_> {
+        ExternalPrototypes {
+            libraries: self
+                .libraries
+                .iter()
+                .filter_map(|library| {
+                    Some(LibraryFile {
+                        doc: library.document.as_ref()?,
+                        text: &library.text,
+                        name: display_path(base, &library.path),
+                    })
+                })
+                .collect(),
+            resolved: self.resolved.clone(),
+        }
+    }
+}
+
+/// The document with the instances of its external prototypes instantiated from the
+/// library files their urls resolve to (`externs`), and the limits that instantiating
+/// reached; the document as it was, and None, when no external prototype resolves.
+pub fn instantiate(
+    doc: Document,
+    file: Option<&Path>,
+    config: &CheckConfig,
+    externs: &Externs,
+) -> (Document, Option<Vec<crate::diagnostic::Diagnostic>>) {
+    if !externs.any_found() {
+        return (doc, None);
+    }
+    let Some((tree, base)) = Tree::of(file, config) else {
+        return (doc, None);
+    };
+    let own = file.and_then(|f| f.canonicalize().ok());
+    let reached = Reached::walk(&doc, externs, &tree, own);
+    let (doc, found) = crate::model::instantiate_with(doc, &reached.prototypes(Some(&base)));
+    (doc, Some(found))
 }
 
 /// A library's path for messages: relative to the checked document's directory when it is

@@ -1,8 +1,12 @@
 //! PROTO_CYCLE: a prototype instantiates itself, directly or through other prototypes.
 
-use std::collections::{HashMap, HashSet};
+use std::collections::{HashMap, HashSet, VecDeque};
 use std::path::PathBuf;
 use std::sync::Arc;
+
+use petgraph::algo::tarjan_scc;
+use petgraph::graph::{DiGraph, NodeIndex};
+use petgraph::visit::EdgeRef;
 
 use super::definitions;
 use super::externs::{Externs, Resolved, Tree};
@@ -22,8 +26,12 @@ crate::declare_rule! {
     /// files external prototypes resolve to (see EXTERNPROTO_NOT_FOUND), so a cycle through
     /// a library is found too; a chain through a network URL is not followed.
     ///
-    /// One finding per cycle and prototype of this file on it, at the instance that
-    /// continues the cycle, with the chain in the message.
+    /// One finding per group of prototypes that instantiate each other (a strongly
+    /// connected component of the graph of prototypes and the instances in their
+    /// definitions, found with Tarjan's algorithm, so that no cycle is missed whatever
+    /// file it is entered through), at its first prototype of this file, at the instance
+    /// that continues the cycle, with the shortest such cycle in the message. A group with
+    /// no prototype of this file is reported when its own file is checked.
     ///
     /// ## Why it matters
     /// 4.4.4.3: "instantiation of a prototype inside its own definition is not permitted
@@ -145,15 +153,6 @@ impl Graph<'_, '_> {
     }
 }
 
-/// One step of the depth-first search: a prototype, the edge that led to it, and its
-/// successors still to visit.
-struct Frame {
-    key: Key,
-    via: Option<NodeId>,
-    successors: Vec<(Key, NodeId)>,
-    next: usize,
-}
-
 fn check(ctx: &mut Ctx) {
     if ctx.doc.protos.is_empty() {
         return;
@@ -208,81 +207,91 @@ fn check(ctx: &mut Ctx) {
     }
 }
 
-/// Depth-first search from each prototype of the checked file; a back edge closes a
-/// cycle, reported at its first prototype of the checked file.
+/// Every prototype reachable from this file's, with the instances that lead from one to
+/// the next; its strongly connected components (Tarjan's algorithm, `petgraph`) are the
+/// groups of prototypes that instantiate each other, each reported once, at its first
+/// prototype of the checked file, with the shortest cycle through it.
 fn search(graph: &mut Graph) -> Vec<Diagnostic> {
-    let mut done: HashSet<Key> = HashSet::new();
-    let mut on_stack: HashMap<Key, usize> = HashMap::new();
-    let mut reported: HashSet<Key> = HashSet::new();
-    let mut findings = Vec::new();
-    for proto in 0..graph.ctx.doc.protos.len() {
-        let root = (0, proto);
-        if graph.ctx.doc.protos[proto].external || done.contains(&root) {
-            continue;
+    let mut edges: DiGraph<Key, NodeId> = DiGraph::new();
+    let mut index: HashMap<Key, NodeIndex> = HashMap::new();
+    let mut pending = VecDeque::new();
+    for (proto, decl) in graph.ctx.doc.protos.iter().enumerate() {
+        if !decl.external {
+            index.insert((0, proto), edges.add_node((0, proto)));
+            pending.push_back((0, proto));
         }
-        let successors = graph.successors(root);
-        let mut stack = vec![Frame {
-            key: root,
-            via: None,
-            successors,
-            next: 0,
-        }];
-        on_stack.insert(root, 0);
-        while let Some(top) = stack.last_mut() {
-            let Some(&(next, instance)) = top.successors.get(top.next) else {
-                let finished = stack.pop().expect("the top frame");
-                on_stack.remove(&finished.key);
-                done.insert(finished.key);
-                continue;
-            };
-            top.next += 1;
-            if let Some(&start) = on_stack.get(&next) {
-                if let Some(d) = cycle(graph, &stack[start..], instance, &mut reported) {
-                    findings.push(d);
-                }
-                continue;
-            }
-            if done.contains(&next) {
-                continue;
-            }
-            let successors = graph.successors(next);
-            on_stack.insert(next, stack.len());
-            stack.push(Frame {
-                key: next,
-                via: Some(instance),
-                successors,
-                next: 0,
+    }
+    while let Some(key) = pending.pop_front() {
+        let from = index[&key];
+        for (next, instance) in graph.successors(key) {
+            let to = *index.entry(next).or_insert_with(|| {
+                pending.push_back(next);
+                edges.add_node(next)
             });
+            edges.add_edge(from, to, instance);
+        }
+    }
+    let mut findings = Vec::new();
+    for component in tarjan_scc(&edges) {
+        let cyclic = component.len() > 1 || edges.contains_edge(component[0], component[0]);
+        let first = component
+            .iter()
+            .copied()
+            .filter(|&n| edges[n].0 == 0)
+            .min_by_key(|&n| edges[n].1);
+        if let (true, Some(first)) = (cyclic, first) {
+            let members: HashSet<NodeIndex> = component.iter().copied().collect();
+            let steps = shortest_cycle(&edges, &members, first);
+            findings.push(cycle(graph, &edges, &steps));
         }
     }
     findings
 }
 
-/// The finding for the cycle `frames` closed by `closing` (an instance in the last
-/// frame's file back to the first frame), unless it passes through no prototype of the
-/// checked file or its first one was reported already.
-fn cycle(
-    graph: &Graph,
-    frames: &[Frame],
-    closing: NodeId,
-    reported: &mut HashSet<Key>,
-) -> Option<Diagnostic> {
-    let first = frames.iter().position(|f| f.key.0 == 0)?;
-    let key = frames[first].key;
-    if !reported.insert(key) {
-        return None;
+/// The shortest cycle from `start` back to it within `members`: the instances followed,
+/// each with the prototype it leads from.
+fn shortest_cycle(
+    edges: &DiGraph<Key, NodeId>,
+    members: &HashSet<NodeIndex>,
+    start: NodeIndex,
+) -> Vec<(NodeIndex, NodeId)> {
+    let mut came_from: HashMap<NodeIndex, (NodeIndex, NodeId)> = HashMap::new();
+    let mut queue = VecDeque::from([start]);
+    while let Some(at) = queue.pop_front() {
+        for edge in edges.edges(at) {
+            let next = edge.target();
+            if !members.contains(&next) {
+                continue;
+            }
+            if next == start {
+                let mut steps = vec![(at, *edge.weight())];
+                let mut current = at;
+                while current != start {
+                    let (previous, instance) = came_from[&current];
+                    steps.push((previous, instance));
+                    current = previous;
+                }
+                steps.reverse();
+                return steps;
+            }
+            if let std::collections::hash_map::Entry::Vacant(slot) = came_from.entry(next) {
+                slot.insert((at, *edge.weight()));
+                queue.push_back(next);
+            }
+        }
     }
-    // The instance leaving the first prototype of this file along the cycle.
-    let instance = frames.get(first + 1).and_then(|f| f.via).unwrap_or(closing);
-    let mut chain: Vec<String> = frames[first..]
-        .iter()
-        .chain(&frames[..first])
-        .map(|f| graph.label(f.key))
-        .collect();
+    Vec::new()
+}
+
+/// The finding for the cycle `steps` (from a prototype of the checked file back to it).
+fn cycle(graph: &Graph, edges: &DiGraph<Key, NodeId>, steps: &[(NodeIndex, NodeId)]) -> Diagnostic {
+    let (first, instance) = steps[0];
+    let key = edges[first];
+    let mut chain: Vec<String> = steps.iter().map(|&(n, _)| graph.label(edges[n])).collect();
     chain.push(graph.label(key));
     let doc = graph.ctx.doc;
     let proto = &doc.protos[key.1];
-    let message = if frames.len() == 1 {
+    let message = if steps.len() == 1 {
         format!(
             "ProtoDeclare `{}` instantiates itself in its own definition",
             proto.name.text
@@ -294,15 +303,13 @@ fn cycle(
             chain.join(" → ")
         )
     };
-    Some(
-        Diagnostic::new(&PROTO_CYCLE, doc.node(instance).name_span, message)
-            .node(instance)
-            .value(proto.name.text.clone())
-            .related(
-                proto.name.span,
-                format!("`{}` declared here", proto.name.text),
-            ),
-    )
+    Diagnostic::new(&PROTO_CYCLE, doc.node(instance).name_span, message)
+        .node(instance)
+        .value(proto.name.text.clone())
+        .related(
+            proto.name.span,
+            format!("`{}` declared here", proto.name.text),
+        )
 }
 
 #[cfg(test)]
@@ -369,8 +376,18 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("x3dcheck-chain-{}", std::process::id()));
         chain(&dir, count, true);
         let found = codes(&dir.join("f0.x3d"), Level::Deep);
-        let found: Vec<&str> = found.iter().map(|(code, _)| code.as_str()).collect();
-        assert_eq!(found, ["LIMIT_EXCEEDED"], "the cycle closes past the limit");
+        // The body's instance is also instantiated through the files, until the nesting
+        // limit: a LIMIT_EXCEEDED of its own.
+        let cycle: Vec<&str> = found
+            .iter()
+            .filter(|(_, message)| !message.contains("nest deeper"))
+            .map(|(code, _)| code.as_str())
+            .collect();
+        assert_eq!(cycle, ["LIMIT_EXCEEDED"], "the cycle closes past the limit");
+        assert!(
+            found.iter().any(|(_, m)| m.contains("(PROTO_CYCLE)")),
+            "{found:?}"
+        );
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

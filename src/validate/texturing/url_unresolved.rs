@@ -3,6 +3,7 @@
 use super::files::{url_fields, Resolution, Resolver};
 use crate::report::Diagnostic;
 use crate::validate::document::validation_incomplete::VALIDATION_INCOMPLETE;
+use crate::validate::prototypes::externs::Resolved;
 use crate::validate::shaders::source::is_source_text;
 use crate::validate::Ctx;
 
@@ -12,8 +13,10 @@ crate::declare_rule! {
     /// relative to the document's directory. Checked fields: `url` of every node that
     /// loads it with the scene (ImageTexture, MovieTexture, AudioClip, Inline, Script,
     /// shader parts and programs, 3D and cube-map textures, FontLibrary, …; not Anchor,
-    /// whose links are followed on demand, nor GeoMetadata) and Background's six image
-    /// urls.
+    /// whose links are followed on demand, nor GeoMetadata), Background's six image
+    /// urls, and the url of an ExternProtoDeclare (19775-1 4.4.5) whose entries are all
+    /// local files and none exists, or that has none: its instances build nothing (a
+    /// url with a network entry gets VALIDATION_INCOMPLETE: the browser falls back to it).
     ///
     /// - `%XX` escapes are decoded, `file:` URLs are local paths, a `#fragment` is
     ///   dropped, and a Windows backslash is also tried as `/`.
@@ -118,7 +121,44 @@ fn check(ctx: &mut Ctx) {
         };
         found.push(diagnostic.node(field.node));
     }
+    found.extend(extern_protos(ctx, &resolver));
     for diagnostic in found {
         ctx.report(diagnostic);
     }
+}
+
+/// ExternProtoDeclares whose url names only local files, none of which exists.
+fn extern_protos(ctx: &Ctx, resolver: &Resolver) -> Vec<Diagnostic> {
+    let mut found = Vec::new();
+    for (index, proto) in ctx.doc.protos.iter().enumerate() {
+        if !matches!(ctx.externs.get(index), Some(Resolved::Unresolved)) {
+            continue;
+        }
+        let resolutions: Vec<Resolution> = proto.url.iter().map(|u| resolver.resolve(u)).collect();
+        if !resolutions
+            .iter()
+            .all(|r| matches!(r, Resolution::Missing { .. }))
+        {
+            continue;
+        }
+        let name = &proto.name.text;
+        let listed: Vec<String> = proto.url.iter().map(|u| format!("\"{u}\"")).collect();
+        let message = if listed.is_empty() {
+            format!("ExternProtoDeclare `{name}` has no url: its instances build nothing")
+        } else {
+            format!(
+                "ExternProtoDeclare `{name}`: no readable file {} next to the document: its instances build nothing",
+                listed.join(" or ")
+            )
+        };
+        let case_hint = resolutions.iter().find_map(|r| match r {
+            Resolution::Missing {
+                case_differs: Some(name),
+                ..
+            } => Some(format!("write the name as `{name}`")),
+            _ => None,
+        });
+        found.push(Diagnostic::new(&URL_UNRESOLVED, proto.name.span, message).help_opt(case_hint));
+    }
+    found
 }
