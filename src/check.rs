@@ -5,7 +5,9 @@ use std::borrow::Cow;
 use std::path::Path;
 
 use crate::config::CheckConfig;
-use crate::model::Document;
+use crate::diagnostic::Diagnostic;
+use crate::library::Library;
+use crate::model::{Document, Encoding};
 use crate::parse;
 pub use crate::parse::Parsed;
 use crate::report::{resolve, FileReport, Stats};
@@ -55,10 +57,51 @@ fn check_decoded<'a>(path: &str, decoded: parse::Decoded<'a>, config: &CheckConf
         },
         None => parse::read_with(&text, config.keep_values()),
     };
-    let mut diagnostics = parsed.diagnostics;
+    let report = report_of(
+        path,
+        parsed.diagnostics,
+        parsed.encoding,
+        decoded.compressed,
+        parsed.document.as_ref(),
+        &text,
+        config,
+    );
+    Checked {
+        report,
+        document: parsed.document,
+        text,
+    }
+}
+
+/// The report of a file an Inline loads, from the file as the batch read and parsed it
+/// (once, in [`Libraries`](crate::library::Libraries)), checked as a scene of its own:
+/// with its own version, profile and directory. `path` names it in the report.
+pub fn check_library(path: &str, library: &Library, config: &CheckConfig) -> FileReport {
+    report_of(
+        path,
+        library.read_findings.clone(),
+        library.encoding,
+        library.compressed,
+        library.document.as_ref(),
+        &library.text,
+        config,
+    )
+}
+
+/// Runs the rules on a document read from `text`, after the findings of reading it, and
+/// resolves what is reported.
+fn report_of(
+    path: &str,
+    mut diagnostics: Vec<Diagnostic>,
+    encoding: Option<Encoding>,
+    compressed: bool,
+    doc: Option<&Document>,
+    text: &[u8],
+    config: &CheckConfig,
+) -> FileReport {
     let file = (path != STDIN_NAME).then(|| Path::new(path));
-    if let Some(doc) = &parsed.document {
-        diagnostics.extend(validate::check(doc, &text, file, config));
+    if let Some(doc) = doc {
+        diagnostics.extend(validate::check(doc, text, file, config));
     }
     diagnostics.retain(|d| config.enabled(d.rule.code) && d.rule.level <= config.level);
     for d in &mut diagnostics {
@@ -71,20 +114,14 @@ fn check_decoded<'a>(path: &str, decoded: parse::Decoded<'a>, config: &CheckConf
     if let Some(max) = config.max_diagnostics {
         diagnostics.truncate(max);
     }
-    let doc: Option<&Document> = parsed.document.as_ref();
-    let report = FileReport {
+    FileReport {
         path: path.to_string(),
-        encoding: parsed.encoding,
-        compressed: decoded.compressed,
+        encoding,
+        compressed,
         x3d_version: doc.and_then(|d| d.version_text.as_ref().map(|v| v.text.clone())),
         profile: doc.and_then(|d| d.profile.as_ref().map(|p| p.text.clone())),
-        diagnostics: resolve(&diagnostics, &text, doc),
+        diagnostics: resolve(&diagnostics, text, doc),
         truncated,
         stats: doc.map(Stats::of).unwrap_or_default(),
-    };
-    Checked {
-        report,
-        document: parsed.document,
-        text,
     }
 }

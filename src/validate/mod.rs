@@ -6,6 +6,7 @@ pub mod document;
 pub mod events;
 mod instances;
 pub mod lighting;
+pub mod networking;
 pub mod numbers;
 pub mod prototypes;
 mod registry;
@@ -54,6 +55,10 @@ pub struct Ctx<'a> {
     pub base: Option<&'a std::path::Path>,
     /// What each ExternProtoDeclare's url resolves to (deep level; empty below it).
     pub externs: prototypes::externs::Externs,
+    /// What each Inline's url resolves to (deep level; empty below it).
+    pub inlines: networking::inlines::Inlines,
+    /// What each IMPORT statement imports (deep level; empty below it).
+    pub imports: networking::imports::Imports,
     diagnostics: Vec<Diagnostic>,
     /// Folded findings: (code, node, field) → index in `diagnostics`.
     folded: HashMap<(&'static str, NodeId, String), usize>,
@@ -213,10 +218,16 @@ pub fn check(
         Some(dir) if !dir.as_os_str().is_empty() => dir,
         _ => std::path::Path::new("."),
     });
-    let externs = if config.level >= Level::Deep {
-        prototypes::externs::Externs::resolve(doc, file, config)
+    let (externs, inlines, imports) = if config.level >= Level::Deep {
+        let inlines = networking::inlines::Inlines::resolve(doc, file, config);
+        let imports = networking::imports::Imports::resolve(doc, &inlines);
+        (
+            prototypes::externs::Externs::resolve(doc, file, config),
+            inlines,
+            imports,
+        )
     } else {
-        prototypes::externs::Externs::default()
+        Default::default()
     };
     let mut ctx = Ctx {
         doc,
@@ -226,6 +237,8 @@ pub fn check(
         file,
         base,
         externs,
+        inlines,
+        imports,
         diagnostics: Vec::new(),
         folded: HashMap::new(),
         full: false,
