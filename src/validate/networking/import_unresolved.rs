@@ -14,8 +14,10 @@ crate::declare_rule! {
     /// the one the Inline loads: the first entry of its url naming a readable local file of
     /// the tree being checked, read as Inline files are (once per batch, checked as a
     /// scene of its own). An Inline whose file cannot be read (network URLs, files outside
-    /// the tree or missing, a document read from standard input) leaves the IMPORT
-    /// VALIDATION_INCOMPLETE, saying why.
+    /// the tree, a document read from standard input) leaves the IMPORT
+    /// VALIDATION_INCOMPLETE, saying why; one whose local file is missing is
+    /// URL_UNRESOLVED's finding. A VRML97 file has no EXPORT statement (14772-1 has none;
+    /// x3dcheck reports one there as VRML_MALFORMED), so nothing can be imported from it.
     ///
     /// The imported node takes the name `AS`, else `importedDEF`, in the importing scope:
     /// ROUTEs to and from it are checked against the exported node's type and fields like
@@ -62,7 +64,11 @@ fn check(ctx: &mut Ctx) {
         let inline = &import.inline_def;
         let imported = &import.imported_def;
         let diagnostic = match target {
-            ImportTarget::Node { .. } | ImportTarget::ExportUndefined => continue,
+            // A missing local file is URL_UNRESOLVED's finding at the Inline; a name exported
+            // but undefined is EXPORT_UNDEFINED's in the inlined file.
+            ImportTarget::Node { .. }
+            | ImportTarget::ExportUndefined
+            | ImportTarget::Unread(None) => continue,
             ImportTarget::NoInline(_) if inline.text.is_empty() => {
                 Diagnostic::new(&IMPORT_UNRESOLVED, inline.span, "IMPORT has no `inlineDEF`")
             }
@@ -101,7 +107,13 @@ fn check(ctx: &mut Ctx) {
             }
             ImportTarget::NotExported { library, exported } => {
                 let file = display_path(ctx.base, &library.path);
-                let help = if exported.is_empty() {
+                let vrml97 = library
+                    .document
+                    .as_ref()
+                    .is_some_and(|d| d.version == Some(crate::schema::Version::Vrml97));
+                let help = if vrml97 {
+                    Some(format!("{file} is VRML97, which has no EXPORT statement (14772-1): a browser imports nothing from it; write it as X3D (`#X3D V3.3 utf8`) to export nodes"))
+                } else if exported.is_empty() {
                     Some(format!("{file} has no EXPORT statement"))
                 } else {
                     let names = exported.iter().map(String::as_str);
@@ -129,11 +141,8 @@ fn check(ctx: &mut Ctx) {
                 .value(imported.text.clone())
                 .help_opt(help)
             }
-            ImportTarget::Unread(why) => {
-                let why = match why {
-                    Some(why) => why.text(),
-                    None => "its local files are missing (URL_UNRESOLVED)".to_string(),
-                };
+            ImportTarget::Unread(Some(why)) => {
+                let why = why.text();
                 Diagnostic::new(
                     &VALIDATION_INCOMPLETE,
                     import.span,
