@@ -27,7 +27,10 @@ crate::declare_rule! {
     /// An Inline with `load FALSE` counts: its file is named, and an event setting `load`
     /// TRUE loads it (19775-1 9.4.2). A cycle that does not pass through the checked file
     /// (this file loads `a`, which loads `b`, which loads `a`) is reported in those files'
-    /// own reports. A prototype instantiating itself within files is PROTO_CYCLE.
+    /// own reports. A prototype instantiating itself within files is PROTO_CYCLE; two
+    /// library files whose ExternProtoDeclares name each other are this rule's finding
+    /// as well, even when no prototype instantiates itself: following the catalogue, an
+    /// ExternProtoDeclare counts as loading the whole file it names.
     ///
     /// ## Why it matters
     /// Each loaded scene is a new copy of the inlined file's nodes (9.4.2), so a file that
