@@ -296,7 +296,9 @@ fn files_and_codes(output: &Output) -> Vec<(String, Vec<String>)> {
             let codes = f["diagnostics"].as_array().unwrap().iter();
             (
                 f["path"].as_str().unwrap().to_string(),
-                codes.map(|d| d["code"].as_str().unwrap().to_string()).collect(),
+                codes
+                    .map(|d| d["code"].as_str().unwrap().to_string())
+                    .collect(),
             )
         })
         .collect()
@@ -313,13 +315,20 @@ fn a_single_file_run_reports_its_inlined_files_under_their_own_paths() {
         files_and_codes(&deep),
         [
             ("scene.x3d".to_string(), vec![]),
-            ("parts/lamp.x3d".to_string(), vec!["NODE_UNKNOWN".to_string()]),
+            (
+                "parts/lamp.x3d".to_string(),
+                vec!["NODE_UNKNOWN".to_string()]
+            ),
         ]
     );
     // Its place is in its own text: line 2.
     assert_eq!(json(&deep)["files"][1]["diagnostics"][0]["line"], 2);
     let human = x3dcheck(&dir, &["--level", "deep", "--color", "never", "scene.x3d"]);
-    assert!(stdout(&human).contains("parts/lamp.x3d:2:2"), "{}", stdout(&human));
+    assert!(
+        stdout(&human).contains("parts/lamp.x3d:2:2"),
+        "{}",
+        stdout(&human)
+    );
     // Below the deep level nothing is read.
     let standard = x3dcheck(&dir, &["--format", "json", "scene.x3d"]);
     assert_eq!(files_and_codes(&standard).len(), 1);
@@ -332,11 +341,21 @@ fn an_inlined_file_the_batch_lists_is_reported_once() {
         &[("scene.x3d", INLINING), ("parts/lamp.x3d", INLINED)],
     );
     let output = x3dcheck(&dir, &["--level", "deep", "--format", "json", "."]);
-    let files: Vec<String> = files_and_codes(&output).into_iter().map(|(p, _)| p).collect();
+    let files: Vec<String> = files_and_codes(&output)
+        .into_iter()
+        .map(|(p, _)| p)
+        .collect();
     assert_eq!(files.len(), 2, "{files:?}");
     let named = x3dcheck(
         &dir,
-        &["--level", "deep", "--format", "json", "parts/../parts/lamp.x3d", "scene.x3d"],
+        &[
+            "--level",
+            "deep",
+            "--format",
+            "json",
+            "parts/../parts/lamp.x3d",
+            "scene.x3d",
+        ],
     );
     assert_eq!(files_and_codes(&named).len(), 2);
 }

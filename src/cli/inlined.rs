@@ -45,10 +45,7 @@ pub struct Batch<'a> {
 
 /// Checks the inlined files the batch does not list, round after round; Err for a file
 /// whose configuration is wrong or whose check failed (reported as not checked).
-pub fn check_inlined(
-    batch: &Batch,
-    resolver: &mut Resolver,
-) -> Vec<Result<InlinedReport, String>> {
+pub fn check_inlined(batch: &Batch, resolver: &mut Resolver) -> Vec<Result<InlinedReport, String>> {
     let mut outcomes = Vec::new();
     if batch.libraries.inlined().is_empty() {
         return outcomes;
@@ -144,7 +141,10 @@ mod tests {
     #[test]
     fn names_are_relative_to_the_working_directory() {
         let cwd = Path::new("/work/main");
-        assert_eq!(display_name(cwd, Path::new("/work/main/a/b.x3d")), "a/b.x3d");
+        assert_eq!(
+            display_name(cwd, Path::new("/work/main/a/b.x3d")),
+            "a/b.x3d"
+        );
         assert_eq!(
             display_name(cwd, Path::new("/work/shared/c.x3d")),
             "../shared/c.x3d"

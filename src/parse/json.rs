@@ -1481,7 +1481,10 @@ mod tests {
         assert_eq!(d.imports.len(), 1);
         let import = &d.imports[0];
         assert_eq!(
-            (import.inline_def.text.as_str(), import.local_name().text.as_str()),
+            (
+                import.inline_def.text.as_str(),
+                import.local_name().text.as_str()
+            ),
             ("I", "N")
         );
         assert_eq!(d.exports.len(), 1);

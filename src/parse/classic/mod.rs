@@ -444,7 +444,8 @@ impl<'s> Reader<'s> {
     fn import_export(&mut self, keyword: Token<'s>) {
         let import = keyword.text == "IMPORT";
         let names = if import {
-            self.dotted("IMPORT").map(|(inline, exported)| (inline, Some(exported)))
+            self.dotted("IMPORT")
+                .map(|(inline, exported)| (inline, Some(exported)))
         } else {
             self.expect_name("a node name after EXPORT")
                 .map(|local| (local, None))

@@ -8,8 +8,8 @@
 
 use crate::library::Library;
 use crate::model::{Document, NodeId, NodeKind, Route, Scope};
-use crate::validate::Ctx;
 use crate::schema::{self, AccessType, FieldType, Version};
+use crate::validate::Ctx;
 
 /// Which way an event flows through a field.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]

@@ -45,7 +45,9 @@ fn check(ctx: &mut Ctx) {
     let mut reported = 0;
     for route in &doc.routes {
         for (attribute, name) in [("fromNode", &route.from_node), ("toNode", &route.to_node)] {
-            if route_node(doc, route.scope, &name.text).is_none() && !imported(ctx, route, &name.text) {
+            if route_node(doc, route.scope, &name.text).is_none()
+                && !imported(ctx, route, &name.text)
+            {
                 let suggest = reported < MAX_SUGGESTIONS;
                 ctx.report(diagnostic(doc, route, attribute, name, suggest));
                 reported += 1;

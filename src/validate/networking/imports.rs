@@ -16,10 +16,7 @@ use crate::model::{Document, Import, NodeId, Scope};
 #[derive(Clone, Debug)]
 pub enum ImportTarget {
     /// The exported node, in the inlined file.
-    Node {
-        library: Arc<Library>,
-        node: NodeId,
-    },
+    Node { library: Arc<Library>, node: NodeId },
     /// The inlineDEF names no node of the scope, or one that is no Inline: what it names.
     NoInline(Option<String>),
     /// The inlined file exports no such name: the names it exports.

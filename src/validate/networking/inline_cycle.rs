@@ -212,7 +212,12 @@ fn path_back(loads: &mut Loads, start: &Arc<Library>, own: &Path) -> Option<Vec<
         let library = loads.library(&path);
         for next in loads.of(&library) {
             if !reached.contains_key(&next) {
-                reached.insert(next.clone(), Reached { from: Some(path.clone()) });
+                reached.insert(
+                    next.clone(),
+                    Reached {
+                        from: Some(path.clone()),
+                    },
+                );
                 queue.push_back(next);
             }
         }
@@ -222,6 +227,8 @@ fn path_back(loads: &mut Loads, start: &Arc<Library>, own: &Path) -> Option<Vec<
 
 /// A file's name for the chain.
 fn name(path: &Path) -> String {
-    path.file_name()
-        .map_or_else(|| path.display().to_string(), |n| n.to_string_lossy().into_owned())
+    path.file_name().map_or_else(
+        || path.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    )
 }

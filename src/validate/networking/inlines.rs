@@ -49,8 +49,7 @@ impl Unreached {
                 format!("\"{url}\" is outside the directory tree being checked and is not read")
             }
             Unreached::NoBase => {
-                "relative URLs of a document read from standard input are not resolved"
-                    .to_string()
+                "relative URLs of a document read from standard input are not resolved".to_string()
             }
             Unreached::Data => "a scene in a data: URL is not checked".to_string(),
         }
