@@ -5,7 +5,9 @@ use std::borrow::Cow;
 use std::path::Path;
 
 use crate::config::CheckConfig;
-use crate::model::Document;
+use crate::diagnostic::Diagnostic;
+use crate::library::Library;
+use crate::model::{Document, Encoding};
 use crate::parse;
 pub use crate::parse::Parsed;
 use crate::report::{resolve, FileReport, Stats};
@@ -59,37 +61,86 @@ fn check_decoded<'a>(path: &str, decoded: parse::Decoded<'a>, config: &CheckConf
     };
     let mut diagnostics = parsed.diagnostics;
     let file = (path != STDIN_NAME).then(|| Path::new(path));
-    let mut document = parsed.document;
     let deep = config.level >= Level::Deep;
-    if let Some(doc) = document.take() {
-        // External prototypes are resolved at the deep level, and for the renderer (after
-        // the check, so that --render does not change the report).
-        let externs = if deep || config.render {
-            Externs::resolve(&doc, file, config)
-        } else {
-            Externs::default()
-        };
-        let mut doc = doc;
+    // External prototypes are resolved at the deep level, and for the renderer (after the
+    // check, so that --render does not change the report).
+    let mut externs = Externs::default();
+    let mut document = parsed.document.map(|doc| {
+        if !(deep || config.render) {
+            return doc;
+        }
+        externs = Externs::resolve(&doc, file, config);
         if deep {
-            doc = instantiate_externals(doc, file, config, &externs, &mut diagnostics);
-        }
-        let externs_for_rules = if deep {
-            externs.clone()
+            instantiate_externals(doc, file, config, &externs, &mut diagnostics)
         } else {
-            Externs::default()
-        };
-        diagnostics.extend(validate::check_with(
-            &doc,
-            &text,
-            file,
-            config,
-            externs_for_rules,
-        ));
-        if !deep && config.render {
-            let mut limits = Vec::new();
-            doc = instantiate_externals(doc, file, config, &externs, &mut limits);
+            doc
         }
-        document = Some(doc);
+    });
+    let externs_for_rules = if deep {
+        externs.clone()
+    } else {
+        Externs::default()
+    };
+    let report = report_of(
+        path,
+        diagnostics,
+        parsed.encoding,
+        decoded.compressed,
+        document.as_ref(),
+        &text,
+        config,
+        externs_for_rules,
+    );
+    if !deep && config.render {
+        if let Some(doc) = document.take() {
+            let mut limits = Vec::new();
+            document = Some(instantiate_externals(doc, file, config, &externs, &mut limits));
+        }
+    }
+    Checked {
+        report,
+        document,
+        text,
+    }
+}
+
+/// The report of a file an Inline loads, from the file as the batch read and parsed it
+/// (once, in [`Libraries`](crate::library::Libraries)), checked as a scene of its own:
+/// with its own version, profile and directory. `path` names it in the report.
+pub fn check_library(path: &str, library: &Library, config: &CheckConfig) -> FileReport {
+    report_of(
+        path,
+        library.read_findings.clone(),
+        library.encoding,
+        library.compressed,
+        library.document.as_ref(),
+        &library.text,
+        config,
+        match &library.document {
+            Some(doc) if config.level >= Level::Deep => {
+                Externs::resolve(doc, Some(Path::new(path)), config)
+            }
+            _ => Externs::default(),
+        },
+    )
+}
+
+/// Runs the rules on a document read from `text`, after the findings of reading it, and
+/// resolves what is reported.
+#[allow(clippy::too_many_arguments)] // what reading gave, and what the rules need
+fn report_of(
+    path: &str,
+    mut diagnostics: Vec<Diagnostic>,
+    encoding: Option<Encoding>,
+    compressed: bool,
+    doc: Option<&Document>,
+    text: &[u8],
+    config: &CheckConfig,
+    externs: Externs,
+) -> FileReport {
+    let file = (path != STDIN_NAME).then(|| Path::new(path));
+    if let Some(doc) = doc {
+        diagnostics.extend(validate::check_with(doc, text, file, config, externs));
     }
 
     diagnostics.retain(|d| config.enabled(d.rule.code) && d.rule.level <= config.level);
@@ -103,21 +154,15 @@ fn check_decoded<'a>(path: &str, decoded: parse::Decoded<'a>, config: &CheckConf
     if let Some(max) = config.max_diagnostics {
         diagnostics.truncate(max);
     }
-    let doc: Option<&Document> = document.as_ref();
-    let report = FileReport {
+    FileReport {
         path: path.to_string(),
-        encoding: parsed.encoding,
-        compressed: decoded.compressed,
+        encoding,
+        compressed,
         x3d_version: doc.and_then(|d| d.version_text.as_ref().map(|v| v.text.clone())),
         profile: doc.and_then(|d| d.profile.as_ref().map(|p| p.text.clone())),
-        diagnostics: resolve(&diagnostics, &text, doc),
+        diagnostics: resolve(&diagnostics, text, doc),
         truncated,
         stats: doc.map(Stats::of).unwrap_or_default(),
-    };
-    Checked {
-        report,
-        document,
-        text,
     }
 }
 

@@ -6,6 +6,7 @@
 
 mod color;
 mod discover;
+mod inlined;
 mod merge;
 mod progress;
 mod read;
@@ -207,8 +208,11 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
         .stdin_filename
         .as_ref()
         .map_or(STDIN_NAME.to_string(), |name| name.display().to_string());
-    let discover::Found { inputs, mut failed } =
-        discover::find_inputs(&args.paths, args.shard, &args.exclude, &mut resolver)?;
+    let discover::Found {
+        inputs,
+        mut failed,
+        listed,
+    } = discover::find_inputs(&args.paths, args.shard, &args.exclude, &mut resolver)?;
     if args.show_files {
         let list: String = inputs
             .iter()
@@ -283,8 +287,18 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
             .collect()
     });
     progress.finish();
+    // The files Inlines load that no input is: checked from the files read for the
+    // Inlines, after the inputs.
+    let batch = inlined::Batch {
+        libraries: &libraries,
+        listed: &listed,
+        shard: args.shard,
+        format: text_format,
+        color,
+    };
+    let inlined = pool.install(|| inlined::check_inlined(&batch, &mut resolver));
 
-    let mut reports = Vec::with_capacity(outcomes.len());
+    let mut reports = Vec::with_capacity(outcomes.len() + inlined.len());
     let mut fail_levels = Vec::with_capacity(outcomes.len());
     let mut text = String::new();
     for (outcome, config) in outcomes.into_iter().zip(&configs) {
@@ -297,6 +311,19 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
                 text.push_str(&checked.text);
                 reports.push(checked.report);
                 fail_levels.push(config.fail_on);
+            }
+            Err(message) => {
+                eprintln!("x3dcheck: {message}");
+                failed = true;
+            }
+        }
+    }
+    for outcome in inlined {
+        match outcome {
+            Ok(checked) => {
+                text.push_str(&checked.text);
+                reports.push(checked.report);
+                fail_levels.push(checked.effective.fail_on);
             }
             Err(message) => {
                 eprintln!("x3dcheck: {message}");

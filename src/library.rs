@@ -1,20 +1,26 @@
-//! Prototype libraries: the files ExternProtoDeclare statements name, read and parsed once
-//! per batch however many scenes name them.
+//! Files other scenes load: the prototype libraries ExternProtoDeclare statements name and
+//! the scenes Inline nodes name, read and parsed once per batch however many scenes name
+//! them.
 //!
 //! A [`Libraries`] cache is shared by every file of a batch (the command line puts one
 //! handle into each file's [`CheckConfig`](crate::config::CheckConfig)); files are checked in
-//! parallel, and a library two of them need at once is read by one while the other waits
-//! for it. A library is read like an input (any encoding, gzip, within
-//! [`MAX_INPUT_BYTES`](crate::limits::MAX_INPUT_BYTES)) and parsed, never checked: its own
-//! findings are those of checking it as a scene. Only the deep level reads libraries, and
-//! only files inside the tree being checked (see `validate::prototypes::externs`).
+//! parallel, and a file two of them need at once is read by one while the other waits
+//! for it. A file is read like an input (any encoding, gzip, within
+//! [`MAX_INPUT_BYTES`](crate::limits::MAX_INPUT_BYTES)) and parsed here, not checked: the
+//! scenes that load it read its prototypes, exports and Inlines. An inlined file's own
+//! findings are those of checking it as a scene of its own, with its own version and
+//! profile: the command line checks every inlined file the batch does not list from the
+//! parsed file kept here ([`Libraries::inlined`], [`crate::check::check_library`]). Only
+//! the deep level reads these files, and only inside the tree being checked (see
+//! `validate::prototypes::externs` and `validate::networking::inlines`).
 
-use std::collections::HashMap;
+use std::collections::{BTreeMap, HashMap};
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex, OnceLock};
 
+use crate::diagnostic::Diagnostic;
 use crate::limits::MAX_INPUT_BYTES;
-use crate::model::{Document, Span};
+use crate::model::{Document, Encoding, Span};
 use crate::parse::{self, KeepValues};
 use crate::read::{self, Contents};
 
@@ -30,6 +36,11 @@ pub struct Library {
     /// Why there is no document: the file could not be read, is too large, or is not a
     /// scene.
     pub failure: Option<String>,
+    /// What decoding and reading it reported (the first findings of its own report).
+    pub read_findings: Vec<Diagnostic>,
+    pub encoding: Option<Encoding>,
+    /// Whether it was gzip-compressed.
+    pub compressed: bool,
 }
 
 impl Library {
@@ -56,6 +67,9 @@ impl Library {
             text: Vec::new(),
             document: None,
             failure: Some(failure),
+            read_findings: Vec::new(),
+            encoding: None,
+            compressed: false,
         };
         let bytes = match read::read_path(path, MAX_INPUT_BYTES) {
             Ok(Contents::Bytes(bytes)) => bytes,
@@ -65,8 +79,15 @@ impl Library {
             Err(message) => return failed(message),
         };
         let decoded = parse::decode(&bytes);
+        let compressed = decoded.compressed;
         if let Some(failure) = decoded.failure {
-            return failed(failure.message);
+            return Library {
+                failure: Some(failure.message.clone()),
+                text: decoded.text.into_owned(),
+                read_findings: vec![failure],
+                compressed,
+                ..failed(String::new())
+            };
         }
         let text = decoded.text.into_owned();
         let parsed = parse::read_with(&text, keep);
@@ -79,6 +100,9 @@ impl Library {
             text,
             document: parsed.document,
             failure,
+            read_findings: parsed.diagnostics,
+            encoding: parsed.encoding,
+            compressed,
         }
     }
 }
@@ -91,6 +115,8 @@ type Slot = Arc<OnceLock<Arc<Library>>>;
 #[derive(Clone, Default)]
 pub struct Libraries {
     read: Arc<Mutex<HashMap<PathBuf, Slot>>>,
+    /// The files read as Inline scenes, each with the tree it was reached in.
+    inlined: Arc<Mutex<BTreeMap<PathBuf, PathBuf>>>,
 }
 
 impl std::fmt::Debug for Libraries {
@@ -113,6 +139,34 @@ impl Libraries {
         };
         slot.get_or_init(|| Arc::new(Library::read(path, keep)))
             .clone()
+    }
+
+    /// [`Libraries::get`] for a file an Inline loads, inside the tree `root`: the batch
+    /// will check it as a scene of its own ([`Libraries::inlined`]).
+    pub fn get_inlined(&self, path: &Path, root: &Path, keep: KeepValues) -> Arc<Library> {
+        self.inlined
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .entry(path.to_path_buf())
+            .or_insert_with(|| root.to_path_buf());
+        self.get(path, keep)
+    }
+
+    /// The files read as Inline scenes so far, by path, each with its tree and its
+    /// contents: (canonical path, root, library).
+    pub fn inlined(&self) -> Vec<(PathBuf, PathBuf, Arc<Library>)> {
+        let inlined = self
+            .inlined
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .clone();
+        inlined
+            .into_iter()
+            .map(|(path, root)| {
+                let library = self.get(&path, KeepValues::All);
+                (path, root, library)
+            })
+            .collect()
     }
 
     /// How many files were read (for tests of the cache).

@@ -278,3 +278,84 @@ fn nothing_found_is_an_error() {
     assert!(stderr.contains("no X3D files found in t"), "{stderr}");
     assert!(output.stdout.is_empty());
 }
+
+/// A scene inlining `parts/lamp.x3d`, whose own finding (an unknown node) must be
+/// reported once, under its own path.
+const INLINING: &str = "<X3D profile='Immersive' version='4.0'><Scene>\
+    <Inline url='\"parts/lamp.x3d\"'/><Transform><Inline url='\"parts/lamp.x3d\"'/></Transform>\
+    </Scene></X3D>";
+const INLINED: &str = "<X3D profile='Interchange' version='3.3'><Scene>\n<Bogus/>\n</Scene></X3D>";
+
+/// Each file of a JSON report with the codes found in it.
+fn files_and_codes(output: &Output) -> Vec<(String, Vec<String>)> {
+    json(output)["files"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| {
+            let codes = f["diagnostics"].as_array().unwrap().iter();
+            (
+                f["path"].as_str().unwrap().to_string(),
+                codes
+                    .map(|d| d["code"].as_str().unwrap().to_string())
+                    .collect(),
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn a_single_file_run_reports_its_inlined_files_under_their_own_paths() {
+    let dir = scratch(
+        "inlined-single",
+        &[("scene.x3d", INLINING), ("parts/lamp.x3d", INLINED)],
+    );
+    let deep = x3dcheck(&dir, &["--level", "deep", "--format", "json", "scene.x3d"]);
+    assert_eq!(
+        files_and_codes(&deep),
+        [
+            ("scene.x3d".to_string(), vec![]),
+            (
+                "parts/lamp.x3d".to_string(),
+                vec!["NODE_UNKNOWN".to_string()]
+            ),
+        ]
+    );
+    // Its place is in its own text: line 2.
+    assert_eq!(json(&deep)["files"][1]["diagnostics"][0]["line"], 2);
+    let human = x3dcheck(&dir, &["--level", "deep", "--color", "never", "scene.x3d"]);
+    assert!(
+        stdout(&human).contains("parts/lamp.x3d:2:2"),
+        "{}",
+        stdout(&human)
+    );
+    // Below the deep level nothing is read.
+    let standard = x3dcheck(&dir, &["--format", "json", "scene.x3d"]);
+    assert_eq!(files_and_codes(&standard).len(), 1);
+}
+
+#[test]
+fn an_inlined_file_the_batch_lists_is_reported_once() {
+    let dir = scratch(
+        "inlined-listed",
+        &[("scene.x3d", INLINING), ("parts/lamp.x3d", INLINED)],
+    );
+    let output = x3dcheck(&dir, &["--level", "deep", "--format", "json", "."]);
+    let files: Vec<String> = files_and_codes(&output)
+        .into_iter()
+        .map(|(p, _)| p)
+        .collect();
+    assert_eq!(files.len(), 2, "{files:?}");
+    let named = x3dcheck(
+        &dir,
+        &[
+            "--level",
+            "deep",
+            "--format",
+            "json",
+            "parts/../parts/lamp.x3d",
+            "scene.x3d",
+        ],
+    );
+    assert_eq!(files_and_codes(&named).len(), 2);
+}

@@ -47,6 +47,9 @@ const SNIFF_BYTES: u64 = 64 * 1024;
 pub struct Found {
     pub inputs: Vec<Input>,
     pub failed: bool,
+    /// Every file the arguments name or the walks find, of every shard: an Inline's file
+    /// among them is reported as an input, not as an inlined file (`inlined.rs`).
+    pub listed: Vec<PathBuf>,
 }
 
 /// The inputs in argument order, each directory's files sorted by path; with a shard, only
@@ -61,6 +64,7 @@ pub fn find_inputs(
     let mut found = Found {
         inputs: Vec::new(),
         failed: false,
+        listed: Vec::new(),
     };
     let mut seen = HashSet::new();
     let mut stdin_taken = false;
@@ -83,6 +87,7 @@ pub fn find_inputs(
         };
         if !meta.is_dir() {
             any = true;
+            found.listed.push(path.clone());
             if shard.is_none_or(|s| s.holds(path)) && first_time(&mut seen, path) {
                 found.inputs.push(Input::File {
                     path: path.clone(),
@@ -95,6 +100,7 @@ pub fn find_inputs(
         let excludes = Excludes::new(exclude, config.as_deref());
         let mut files = walk(path, excludes, &mut found);
         any |= !files.is_empty();
+        found.listed.extend(files.iter().cloned());
         if let Some(shard) = shard {
             files.retain(|file| shard.holds(file.strip_prefix(path).unwrap_or(file)));
         }

@@ -554,6 +554,18 @@ impl Builder {
         self.doc.routes.push(route);
     }
 
+    /// Adds an IMPORT statement in the current scope.
+    pub fn add_import(&mut self, mut import: Import) {
+        import.scope = self.scope();
+        self.doc.imports.push(import);
+    }
+
+    /// Adds an EXPORT statement in the current scope.
+    pub fn add_export(&mut self, mut export: Export) {
+        export.scope = self.scope();
+        self.doc.exports.push(export);
+    }
+
     /// The nodes still open, innermost last (for readers that stop early on bad input).
     pub fn open_nodes(&self) -> &[NodeId] {
         &self.open

@@ -329,6 +329,44 @@ pub struct Route {
     pub scope: Scope,
 }
 
+/// An IMPORT statement (19775-1 4.9.2): `IMPORT inlineDEF.importedDEF AS name`, the XML
+/// and JSON `IMPORT` with `inlineDEF`, `importedDEF` and `AS`.
+#[derive(Clone, Debug)]
+pub struct Import {
+    /// The DEF name of the Inline whose file exports the node.
+    pub inline_def: Named,
+    /// The name the inlined file exports the node under.
+    pub imported_def: Named,
+    pub as_name: Option<Named>,
+    pub span: Span,
+    pub scope: Scope,
+}
+
+impl Import {
+    /// The name the node takes in this scene: `AS`, else `importedDEF`.
+    pub fn local_name(&self) -> &Named {
+        self.as_name.as_ref().unwrap_or(&self.imported_def)
+    }
+}
+
+/// An EXPORT statement (19775-1 4.9.3): `EXPORT localDEF AS name`, the XML and JSON
+/// `EXPORT` with `localDEF` and `AS`.
+#[derive(Clone, Debug)]
+pub struct Export {
+    /// The DEF name of the exported node in this file.
+    pub local_def: Named,
+    pub as_name: Option<Named>,
+    pub span: Span,
+    pub scope: Scope,
+}
+
+impl Export {
+    /// The name importing scenes name the node by: `AS`, else `localDEF`.
+    pub fn exported_name(&self) -> &Named {
+        self.as_name.as_ref().unwrap_or(&self.local_def)
+    }
+}
+
 #[derive(Clone, Debug)]
 pub struct ComponentStatement {
     pub name: Named,
@@ -373,8 +411,10 @@ pub struct Document {
     pub scene: Vec<ChildRef>,
     pub routes: Vec<Route>,
     pub protos: Vec<ProtoDecl>,
-    /// IMPORT/EXPORT statements: counted, not checked.
-    pub imports_exports: Vec<Span>,
+    /// IMPORT statements, in document order.
+    pub imports: Vec<Import>,
+    /// EXPORT statements, in document order.
+    pub exports: Vec<Export>,
     /// Content of the X3D root and head that X3D gives no meaning (not read further).
     pub ignored: Vec<IgnoredContent>,
     /// DEF names per scope, each with the first node that took it.
@@ -403,7 +443,8 @@ impl Document {
             scene: Vec::new(),
             routes: Vec::new(),
             protos: Vec::new(),
-            imports_exports: Vec::new(),
+            imports: Vec::new(),
+            exports: Vec::new(),
             ignored: Vec::new(),
             defs: HashMap::new(),
             copies: 0,

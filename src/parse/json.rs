@@ -724,10 +724,7 @@ impl<'t, 's> JsonReader<'t, 's> {
             "ROUTE" => self.route(key, value),
             "ProtoDeclare" => self.proto_declare(key, value, false),
             "ExternProtoDeclare" => self.proto_declare(key, value, true),
-            "IMPORT" | "EXPORT" => {
-                let member = self.member_span(key, value);
-                self.builder.doc_mut().imports_exports.push(member);
-            }
+            "IMPORT" | "EXPORT" => self.import_export(key, value),
             n if n.starts_with('#') => {}
             n if n.starts_with('@') || n.starts_with('-') => {
                 let place = ctx.describe();
@@ -766,6 +763,49 @@ impl<'t, 's> JsonReader<'t, 's> {
             scope: Scope::Scene,
         };
         self.builder.add_route(route);
+    }
+
+    /// `{"IMPORT": {"@inlineDEF", "@importedDEF", "@AS"}}` and `{"EXPORT": {"@localDEF",
+    /// "@AS"}}` (19776-5).
+    fn import_export(&mut self, key: usize, value: usize) {
+        let span = self.member_span(key, value);
+        let statement = self.t.str(key).into_owned();
+        if self.t.kind(value) != Kind::Object {
+            let found = value::describe(self.t, value);
+            self.syntax(
+                self.t.full_span(value),
+                format!("`{statement}` takes an object, found {found}"),
+            );
+            return;
+        }
+        self.duplicate_keys(value, |_| true);
+        let mut get = |name: &str| {
+            self.named(value, name).unwrap_or(Named {
+                text: String::new(),
+                span,
+            })
+        };
+        if statement == "IMPORT" {
+            let inline_def = get("@inlineDEF");
+            let imported_def = get("@importedDEF");
+            let as_name = self.named(value, "@AS");
+            self.builder.add_import(Import {
+                inline_def,
+                imported_def,
+                as_name,
+                span,
+                scope: Scope::Scene,
+            });
+        } else {
+            let local_def = get("@localDEF");
+            let as_name = self.named(value, "@AS");
+            self.builder.add_export(Export {
+                local_def,
+                as_name,
+                span,
+                scope: Scope::Scene,
+            });
+        }
     }
 
     fn proto_declare(&mut self, key: usize, value: usize, external: bool) {
@@ -1431,14 +1471,24 @@ mod tests {
     fn head_and_statements() {
         let source = r##"{ "X3D": { "encoding": "UTF-8", "@profile": "Interchange", "@version": "3.3",
             "head": { "component": [ { "@name": "Shape", "@level": 4 } ], "unit": [ {"@category": "length"} ], "meta": [ {}, {} ] },
-            "Scene": { "-children": [ { "IMPORT": { "@inlineDEF": "I" } }, { "EXPORT": {} } ] } } }"##;
+            "Scene": { "-children": [ { "IMPORT": { "@inlineDEF": "I", "@importedDEF": "E", "@AS": "N" } }, { "EXPORT": {} } ] } } }"##;
         let d = doc(source);
         assert_eq!(d.version, Some(Version::V3_3));
         assert_eq!(d.head.components.len(), 1);
         assert_eq!(d.head.components[0].name.text, "Shape");
         assert_eq!(d.head.components[0].level.map(|l| l.0), Some(4));
         assert_eq!((d.head.units.len(), d.head.metas), (1, 2));
-        assert_eq!(d.imports_exports.len(), 2);
+        assert_eq!(d.imports.len(), 1);
+        let import = &d.imports[0];
+        assert_eq!(
+            (
+                import.inline_def.text.as_str(),
+                import.local_name().text.as_str()
+            ),
+            ("I", "N")
+        );
+        assert_eq!(d.exports.len(), 1);
+        assert_eq!(d.exports[0].exported_name().text, "");
     }
 
     #[test]

@@ -414,8 +414,30 @@ impl<'s> XmlReader<'s> {
                 self.route(attrs, element);
                 Frame::Other
             }
-            (Context::Nodes(_), "IMPORT" | "EXPORT") => {
-                self.builder.doc_mut().imports_exports.push(element);
+            (Context::Nodes(_), "IMPORT") => {
+                let missing = || Named {
+                    text: String::new(),
+                    span: element,
+                };
+                self.builder.add_import(Import {
+                    inline_def: named_attr(attrs, "inlineDEF").unwrap_or_else(missing),
+                    imported_def: named_attr(attrs, "importedDEF").unwrap_or_else(missing),
+                    as_name: named_attr(attrs, "AS"),
+                    span: element,
+                    scope: Scope::Scene,
+                });
+                Frame::Other
+            }
+            (Context::Nodes(_), "EXPORT") => {
+                self.builder.add_export(Export {
+                    local_def: named_attr(attrs, "localDEF").unwrap_or(Named {
+                        text: String::new(),
+                        span: element,
+                    }),
+                    as_name: named_attr(attrs, "AS"),
+                    span: element,
+                    scope: Scope::Scene,
+                });
                 Frame::Other
             }
             (Context::Nodes(_), "ProtoDeclare") => {

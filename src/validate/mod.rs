@@ -6,6 +6,7 @@ pub mod document;
 pub mod events;
 mod instances;
 pub mod lighting;
+pub mod networking;
 pub mod numbers;
 pub mod prototypes;
 mod registry;
@@ -57,6 +58,10 @@ pub struct Ctx<'a> {
     pub externs: prototypes::externs::Externs,
     /// The shader analysis, made by the first rule that needs it ([`shaders::analysis`]).
     shaders: Option<std::rc::Rc<shaders::analysis::Analysis>>,
+    /// What each Inline's url resolves to (deep level; empty below it).
+    pub inlines: networking::inlines::Inlines,
+    /// What each IMPORT statement imports (deep level; empty below it).
+    pub imports: networking::imports::Imports,
     diagnostics: Vec<Diagnostic>,
     /// Folded findings: (code, node, field) → index in `diagnostics`.
     folded: HashMap<(&'static str, NodeId, String), usize>,
@@ -215,7 +220,7 @@ pub fn check(
     let externs = if config.level >= Level::Deep {
         prototypes::externs::Externs::resolve(doc, file, config)
     } else {
-        prototypes::externs::Externs::default()
+        Default::default()
     };
     check_with(doc, source, file, config, externs)
 }
@@ -233,6 +238,13 @@ pub fn check_with(
         Some(dir) if !dir.as_os_str().is_empty() => dir,
         _ => std::path::Path::new("."),
     });
+    let (inlines, imports) = if config.level >= Level::Deep {
+        let inlines = networking::inlines::Inlines::resolve(doc, file, config);
+        let imports = networking::imports::Imports::resolve(doc, &inlines);
+        (inlines, imports)
+    } else {
+        Default::default()
+    };
     let mut ctx = Ctx {
         doc,
         source,
@@ -242,6 +254,8 @@ pub fn check_with(
         base,
         externs,
         shaders: None,
+        inlines,
+        imports,
         diagnostics: Vec::new(),
         folded: HashMap::new(),
         full: false,

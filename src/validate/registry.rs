@@ -5,7 +5,8 @@
 use std::sync::LazyLock;
 
 use super::{
-    document, events, lighting, prototypes, rendering, shaders, shape, texturing, Check, Rule,
+    document, events, lighting, networking, prototypes, rendering, shaders, shape, texturing,
+    Check, Rule,
 };
 
 /// Every rule with its check function (None for those reported while reading).
@@ -19,6 +20,7 @@ pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {
         events::RULES,
         prototypes::RULES,
         shaders::RULES,
+        networking::RULES,
     ]
     .concat()
 });

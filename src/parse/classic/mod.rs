@@ -439,27 +439,49 @@ impl<'s> Reader<'s> {
         Some((node, field))
     }
 
-    /// IMPORT and EXPORT (19776-2 4.3.2.14–15): checked for shape, kept as a span.
+    /// IMPORT and EXPORT (19776-2 4.3.2.14–15): `IMPORT inline.exported [AS name]`,
+    /// `EXPORT local [AS name]`.
     fn import_export(&mut self, keyword: Token<'s>) {
-        let end = if keyword.text == "IMPORT" {
-            self.dotted("IMPORT").map(|(_, field)| field.span.end)
+        let import = keyword.text == "IMPORT";
+        let names = if import {
+            self.dotted("IMPORT")
+                .map(|(inline, exported)| (inline, Some(exported)))
         } else {
             self.expect_name("a node name after EXPORT")
-                .map(|n| n.span.end)
+                .map(|local| (local, None))
         };
-        let Some(mut end) = end else {
+        let Some((first, exported)) = names else {
             self.recover_statement();
             return;
         };
+        let mut end = exported.as_ref().unwrap_or(&first).span.end;
+        let mut as_name = None;
         if self.lexer.peek().is_id("AS") {
             self.lexer.next();
             match self.expect_name("a name after AS") {
-                Some(name) => end = name.span.end,
+                Some(name) => {
+                    end = name.span.end;
+                    as_name = Some(name);
+                }
                 None => self.recover_statement(),
             }
         }
         let span = Span::new(keyword.start, end as usize);
-        self.builder.doc_mut().imports_exports.push(span);
+        match exported {
+            Some(imported_def) => self.builder.add_import(Import {
+                inline_def: first,
+                imported_def,
+                as_name,
+                span,
+                scope: Scope::Scene,
+            }),
+            None => self.builder.add_export(Export {
+                local_def: first,
+                as_name,
+                span,
+                scope: Scope::Scene,
+            }),
+        }
     }
 
     /// `PROTO Name [ interface ] { body }` or `EXTERNPROTO Name [ interface ] url`

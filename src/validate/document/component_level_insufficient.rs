@@ -164,7 +164,6 @@ const STATEMENT_LEVELS: [(&str, &str, u8); 4] = [
 /// first use, with the count.
 fn statements(ctx: &mut Ctx, profile: &profiles::Profile) {
     let doc = ctx.doc;
-    let source = ctx.source;
     let declared = |component: &str| {
         doc.head
             .components
@@ -186,21 +185,8 @@ fn statements(ctx: &mut Ctx, profile: &profiles::Profile) {
             (kind, p.span)
         })
         .collect();
-    for span in &doc.imports_exports {
-        let text = source.get(span.range()).unwrap_or_default();
-        let text = text
-            .strip_prefix(b"<")
-            .or_else(|| text.strip_prefix(b"\""))
-            .unwrap_or(text);
-        uses.push((
-            if text.starts_with(b"IMPORT") {
-                "IMPORT"
-            } else {
-                "EXPORT"
-            },
-            *span,
-        ));
-    }
+    uses.extend(doc.imports.iter().map(|i| ("IMPORT", i.span)));
+    uses.extend(doc.exports.iter().map(|e| ("EXPORT", e.span)));
     uses.sort_by_key(|(_, span)| *span);
     for (kind, component, level) in STATEMENT_LEVELS {
         let mut found = uses.iter().filter(|(k, _)| *k == kind);

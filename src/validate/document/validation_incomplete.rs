@@ -2,6 +2,7 @@
 
 use crate::model::Span;
 use crate::report::Diagnostic;
+use crate::validate::networking::inlines::InlineTarget;
 use crate::validate::prototypes::externs::Resolved;
 use crate::validate::texturing::files::{Resolution, Resolver};
 use crate::validate::{Ctx, Level};
@@ -12,7 +13,12 @@ crate::declare_rule! {
     /// as "valid": Script code; shader source (below the standard level; from it on,
     /// what the GLSL compiler could not check: other languages, PackagedShader, sources
     /// in network or, below deep, local files); the bodies of external prototypes that
-    /// x3dcheck cannot read; IMPORT/EXPORT; Inline scenes.
+    /// x3dcheck cannot read; Inline scenes and IMPORT statements below the deep level,
+    /// which reads the inlined files; at the deep level, an Inline whose local file is no
+    /// X3D or VRML scene (glTF, which X3D 4 Inlines may load), and an IMPORT whose Inline's
+    /// file is out of reach (network URLs, files outside the tree or missing, standard
+    /// input: the Inline itself is noted by URL_UNRESOLVED). A local Inline's file is
+    /// checked as a scene of its own at the deep level and gets no note.
     ///
     /// Prototypes: each ProtoInstance of a ProtoDeclare is instantiated (19775-1 4.4.4)
     /// and every rule checks the nodes it builds with the values it passes. A ProtoDeclare
@@ -67,7 +73,10 @@ fn check(ctx: &mut Ctx) {
             }
             "shader source is not checked"
         } else if node.is_a("Inline") {
-            "the inlined scene is not checked"
+            match inline_note(ctx, id) {
+                Some(what) => what,
+                None => continue,
+            }
         } else {
             continue;
         };
@@ -122,12 +131,39 @@ fn check(ctx: &mut Ctx) {
             found.push((*span, Some(*node), message.clone()));
         }
     }
-    for &span in &ctx.doc.imports_exports {
-        found.push((span, None, "IMPORT/EXPORT is not checked".to_string()));
+    // At the deep level IMPORT_UNRESOLVED resolves each IMPORT, and notes those whose
+    // Inline's file is out of reach.
+    if ctx.config.level < Level::Deep {
+        for import in &ctx.doc.imports {
+            found.push((
+                import.span,
+                None,
+                format!(
+                    "IMPORT {}.{}: the inlined file is read, and the import resolved, at the deep level only",
+                    import.inline_def.text, import.imported_def.text
+                ),
+            ));
+        }
     }
     for (span, node, message) in found {
         let mut diagnostic = Diagnostic::new(&VALIDATION_INCOMPLETE, span, message);
         diagnostic.node = node;
         ctx.report(diagnostic);
+    }
+}
+
+/// What is not checked of an Inline's scene: below the deep level, all of it; at the deep
+/// level, a local file that is no scene x3dcheck reads (glTF, say). Files out of reach
+/// (network URLs, outside the tree, standard input) are URL_UNRESOLVED's notes; a file
+/// read is checked as a scene of its own.
+fn inline_note(ctx: &Ctx, id: crate::model::NodeId) -> Option<&'static str> {
+    if ctx.config.level < Level::Deep {
+        return Some("the inlined scene is read and checked at the deep level only");
+    }
+    match ctx.inlines.get(id)? {
+        InlineTarget::Loaded { library, .. } if library.document.is_none() => {
+            Some("its file is no X3D or VRML scene x3dcheck reads, and is not checked")
+        }
+        _ => None,
     }
 }

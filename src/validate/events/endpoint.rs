@@ -6,8 +6,10 @@
 //! `x_changed` (its output) (19775-1 4.4.2.2). Nodes whose fields cannot be known (unknown
 //! types, instances of undeclared prototypes) resolve to [`Lookup::Unchecked`].
 
+use crate::library::Library;
 use crate::model::{Document, NodeId, NodeKind, Route, Scope};
 use crate::schema::{self, AccessType, FieldType, Version};
+use crate::validate::Ctx;
 
 /// Which way an event flows through a field.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
@@ -79,11 +81,65 @@ pub fn route_node(doc: &Document, scope: Scope, name: &str) -> Option<NodeId> {
     doc.defs.get(&(scope, name.to_string())).copied()
 }
 
-/// Both ends' nodes of a ROUTE, when both resolve.
-pub fn route_nodes(doc: &Document, route: &Route) -> Option<(NodeId, NodeId)> {
+/// The node a ROUTE end names: DEF'd in this document, or (deep level) a node of an
+/// inlined file that an IMPORT of the ROUTE's scope brings in (19775-1 4.9.2).
+pub struct End<'a> {
+    pub doc: &'a Document,
+    pub node: NodeId,
+    /// The version of the document the node is in.
+    pub version: Version,
+    /// The inlined file an imported node is in.
+    pub imported_from: Option<&'a Library>,
+}
+
+impl End<'_> {
+    /// The node, for a diagnostic's path: None for an imported node (it is in another file).
+    pub fn local(&self) -> Option<NodeId> {
+        self.imported_from.is_none().then_some(self.node)
+    }
+
+    /// The node's type for messages, saying where an imported node is from.
+    pub fn label(&self) -> String {
+        let label = type_label(self.doc, self.node);
+        match self.imported_from {
+            None => label,
+            Some(library) => {
+                let file = library.path.file_name().unwrap_or_default();
+                format!("{label} (imported from {})", file.to_string_lossy())
+            }
+        }
+    }
+
+    /// What `name` means on the node.
+    pub fn lookup(&self, name: &str) -> Lookup {
+        lookup(self.doc, self.version, self.node, name)
+    }
+}
+
+/// The node a ROUTE end named `name` in `scope` stands for.
+pub fn route_end<'a>(ctx: &'a Ctx, scope: Scope, name: &str) -> Option<End<'a>> {
+    if let Some(node) = route_node(ctx.doc, scope, name) {
+        return Some(End {
+            doc: ctx.doc,
+            node,
+            version: ctx.version,
+            imported_from: None,
+        });
+    }
+    let (library, doc, node) = ctx.imports.node(ctx.doc, scope, name)?;
+    Some(End {
+        doc,
+        node,
+        version: doc.schema_version(),
+        imported_from: Some(library),
+    })
+}
+
+/// Both ends of a ROUTE, when both resolve.
+pub fn route_ends<'a>(ctx: &'a Ctx, route: &Route) -> Option<(End<'a>, End<'a>)> {
     Some((
-        route_node(doc, route.scope, &route.from_node.text)?,
-        route_node(doc, route.scope, &route.to_node.text)?,
+        route_end(ctx, route.scope, &route.from_node.text)?,
+        route_end(ctx, route.scope, &route.to_node.text)?,
     ))
 }
 

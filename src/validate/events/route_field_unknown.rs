@@ -2,10 +2,9 @@
 //! send (fromField) or receive (toField) events.
 
 use super::endpoint::{
-    did_you_mean, lookup, not_input_output_text, only_in_text, route_node, type_label, Direction,
-    Lookup,
+    did_you_mean, not_input_output_text, only_in_text, route_end, Direction, End, Lookup,
 };
-use crate::model::{Named, NodeId};
+use crate::model::Named;
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -44,6 +43,7 @@ crate::declare_rule! {
 
 fn check(ctx: &mut Ctx) {
     let doc = ctx.doc;
+    let mut found = Vec::new();
     for route in &doc.routes {
         let ends = [
             (&route.from_node, &route.from_field, Direction::Out),
@@ -51,30 +51,34 @@ fn check(ctx: &mut Ctx) {
         ];
         for (node_name, field, direction) in ends {
             // An undefined node is ROUTE_NODE_UNDEFINED's finding.
-            if let Some(node) = route_node(doc, route.scope, &node_name.text) {
-                if let Some(d) = problem(ctx, node, field, direction) {
-                    ctx.report(d);
-                }
+            if let Some(end) = route_end(ctx, route.scope, &node_name.text) {
+                found.extend(problem(&end, field, direction));
             }
         }
     }
+    for diagnostic in found {
+        ctx.report(diagnostic);
+    }
 }
 
-fn problem(ctx: &Ctx, node: NodeId, field: &Named, direction: Direction) -> Option<Diagnostic> {
+fn problem(end: &End, field: &Named, direction: Direction) -> Option<Diagnostic> {
     let attribute = match direction {
         Direction::Out => "fromField",
         Direction::In => "toField",
     };
     let diagnostic = |message: String| {
-        Diagnostic::new(&ROUTE_FIELD_UNKNOWN, field.span, message)
-            .node(node)
-            .value(field.text.clone())
+        let diagnostic =
+            Diagnostic::new(&ROUTE_FIELD_UNKNOWN, field.span, message).value(field.text.clone());
+        match end.local() {
+            Some(node) => diagnostic.node(node),
+            None => diagnostic,
+        }
     };
     if field.text.is_empty() {
         return Some(diagnostic(format!("ROUTE has no `{attribute}`")));
     }
-    let label = type_label(ctx.doc, node);
-    match lookup(ctx.doc, ctx.version, node, &field.text) {
+    let label = end.label();
+    match end.lookup(&field.text) {
         Lookup::Unchecked => None,
         Lookup::Missing {
             candidates,

@@ -10,8 +10,10 @@ crate::declare_rule! {
     /// Reports a ROUTE whose `fromNode` or `toNode` is missing or names no node DEF'd in
     /// the ROUTE's own name scope: the Scene for ROUTEs in the Scene, the ProtoBody for
     /// ROUTEs inside a ProtoDeclare (a ROUTE cannot reach across that boundary). The DEF
-    /// may come before or after the ROUTE. Names brought in by an IMPORT statement are
-    /// not reported: the inlined scene is not read.
+    /// may come before or after the ROUTE. A name an IMPORT statement of the scope brings
+    /// in (its `AS`, else its `importedDEF`; 19775-1 4.9.2) is a node name too: whether the
+    /// inlined file exports it is IMPORT_UNRESOLVED's finding, at the deep level, where the
+    /// inlined file is read.
     ///
     /// ## Why it matters
     /// Browsers drop a ROUTE whose node they cannot find, so the animation or interaction
@@ -43,7 +45,9 @@ fn check(ctx: &mut Ctx) {
     let mut reported = 0;
     for route in &doc.routes {
         for (attribute, name) in [("fromNode", &route.from_node), ("toNode", &route.to_node)] {
-            if route_node(doc, route.scope, &name.text).is_none() && !imported(ctx, &name.text) {
+            if route_node(doc, route.scope, &name.text).is_none()
+                && !imported(ctx, route, &name.text)
+            {
                 let suggest = reported < MAX_SUGGESTIONS;
                 ctx.report(diagnostic(doc, route, attribute, name, suggest));
                 reported += 1;
@@ -96,18 +100,13 @@ fn diagnostic(
     .help_opt(help)
 }
 
-/// Whether an IMPORT statement may bring the name in: its text quotes the name (as its
-/// `AS` or `importedDEF`). The statements are kept as spans only.
-fn imported(ctx: &Ctx, name: &str) -> bool {
-    if name.is_empty() {
-        return false;
-    }
-    ctx.doc.imports_exports.iter().any(|span| {
-        let text = ctx.source.get(span.range()).unwrap_or_default();
-        let text = String::from_utf8_lossy(text);
-        text.contains("IMPORT")
-            && ["'", "\""]
-                .iter()
-                .any(|q| text.contains(&format!("{q}{name}{q}")))
-    })
+/// Whether an IMPORT statement of the ROUTE's scope brings the name in (its `AS`, else its
+/// `importedDEF`). Whether the inlined file exports it is IMPORT_UNRESOLVED's finding (deep).
+fn imported(ctx: &Ctx, route: &Route, name: &str) -> bool {
+    !name.is_empty()
+        && ctx
+            .doc
+            .imports
+            .iter()
+            .any(|i| i.scope == route.scope && i.local_name().text == name)
 }

@@ -1,6 +1,6 @@
 //! ROUTE_TYPE_MISMATCH: a ROUTE connects fields of different types.
 
-use super::endpoint::{lookup, route_nodes, type_label, Lookup};
+use super::endpoint::{route_ends, End, Lookup};
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -37,17 +37,18 @@ crate::declare_rule! {
 
 fn check(ctx: &mut Ctx) {
     let doc = ctx.doc;
+    let mut found = Vec::new();
     for route in &doc.routes {
-        let Some((from, to)) = route_nodes(doc, route) else {
+        let Some((from, to)) = route_ends(ctx, route) else {
             continue;
         };
-        let field_type = |node, name: &str| match lookup(doc, ctx.version, node, name) {
+        let field_type = |end: &End, name: &str| match end.lookup(name) {
             Lookup::Found(field) => field.ty,
             Lookup::Missing { .. } | Lookup::Unchecked => None,
         };
         let (Some(from_type), Some(to_type)) = (
-            field_type(from, &route.from_field.text),
-            field_type(to, &route.to_field.text),
+            field_type(&from, &route.from_field.text),
+            field_type(&to, &route.to_field.text),
         ) else {
             continue;
         };
@@ -58,19 +59,23 @@ fn check(ctx: &mut Ctx) {
             "ROUTE connects `{}.{}` ({}, {from_type}) to `{}.{}` ({}, {to_type}): both ends need the same type",
             route.from_node.text,
             route.from_field.text,
-            type_label(doc, from),
+            from.label(),
             route.to_node.text,
             route.to_field.text,
-            type_label(doc, to),
+            to.label(),
         );
-        ctx.report(
-            Diagnostic::new(&ROUTE_TYPE_MISMATCH, route.to_field.span, message)
-                .node(to)
-                .value(to_type.as_str())
-                .related(
-                    route.from_field.span,
-                    format!("{from_type} event from here"),
-                ),
-        );
+        let diagnostic = Diagnostic::new(&ROUTE_TYPE_MISMATCH, route.to_field.span, message)
+            .value(to_type.as_str())
+            .related(
+                route.from_field.span,
+                format!("{from_type} event from here"),
+            );
+        found.push(match to.local() {
+            Some(node) => diagnostic.node(node),
+            None => diagnostic,
+        });
+    }
+    for diagnostic in found {
+        ctx.report(diagnostic);
     }
 }

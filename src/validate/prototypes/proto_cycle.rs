@@ -340,8 +340,10 @@ mod tests {
     }
 
     fn codes(path: &std::path::Path, level: Level) -> Vec<(String, String)> {
+        // These files also load one another (INLINE_CYCLE's finding, and its own limit).
         let config = CheckConfig {
             level,
+            ignore: ["INLINE_CYCLE".to_string()].into(),
             ..CheckConfig::default()
         };
         let source = std::fs::read(path).unwrap();

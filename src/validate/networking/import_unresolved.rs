@@ -1,0 +1,171 @@
+//! IMPORT_UNRESOLVED: an IMPORT names no Inline, or a name its file does not export.
+
+use super::imports::ImportTarget;
+use crate::report::Diagnostic;
+use crate::validate::document::validation_incomplete::VALIDATION_INCOMPLETE;
+use crate::validate::prototypes::externs::display_path;
+use crate::validate::{suggest, Ctx};
+
+crate::declare_rule! {
+    /// ## What it does
+    /// At the deep level, reports an IMPORT statement whose `inlineDEF` names no Inline
+    /// node DEF'd in the statement's name scope, or whose `importedDEF` is not a name the
+    /// inlined file EXPORTs (an EXPORT's `AS`, else its `localDEF`). The inlined file is
+    /// the one the Inline loads: the first entry of its url naming a readable local file of
+    /// the tree being checked, read as Inline files are (once per batch, checked as a
+    /// scene of its own). An Inline whose file cannot be read (network URLs, files outside
+    /// the tree, a document read from standard input) leaves the IMPORT
+    /// VALIDATION_INCOMPLETE, saying why; one whose local file is missing is
+    /// URL_UNRESOLVED's finding. A VRML97 file has no EXPORT statement (14772-1 has none;
+    /// x3dcheck reports one there as VRML_MALFORMED), so nothing can be imported from it.
+    ///
+    /// The imported node takes the name `AS`, else `importedDEF`, in the importing scope:
+    /// ROUTEs to and from it are checked against the exported node's type and fields like
+    /// any other ROUTE (ROUTE_FIELD_UNKNOWN, ROUTE_TYPE_MISMATCH). Below the deep level the
+    /// name is taken on trust (ROUTE_NODE_UNDEFINED does not report it).
+    ///
+    /// ## Why it matters
+    /// A browser that cannot find the Inline or the exported node imports nothing: the
+    /// ROUTEs naming the imported node are dropped, and the interaction they wire between
+    /// the scene and its inlined part does nothing.
+    ///
+    /// ## Example
+    /// ```xml
+    /// <Inline DEF='Lamp' url='"lamp.x3d"'/>
+    /// <IMPORT inlineDEF='Lamp' importedDEF='Switch' AS='LampSwitch'/>
+    /// ```
+    /// where `lamp.x3d` has no `<EXPORT localDEF='…' AS='Switch'/>` (nor an EXPORT of a
+    /// node DEF'd `Switch` without `AS`).
+    ///
+    /// ## Use instead
+    /// Import a name the file exports, or EXPORT the node in the inlined file.
+    ///
+    /// ## Clause
+    /// 19775-1 4.9.2 IMPORT semantics and 4.9.3 EXPORT semantics, 9.4.2 Inline; the
+    /// statements as encoded: 19776-1 (XML) `IMPORT` element with `inlineDEF`, `importedDEF`
+    /// and `AS`, 19776-2 4.3.2.14 (ClassicVRML) `IMPORT inlineDEF.importedDEF AS name`,
+    /// 19776-5 (JSON) `{"IMPORT": {"@inlineDEF", "@importedDEF", "@AS"}}`.
+    pub static IMPORT_UNRESOLVED = {
+        severity: Error,
+        level: Deep,
+        clause: "4.9.2",
+        versions: "all",
+        check: Some(check),
+    }
+}
+
+fn check(ctx: &mut Ctx) {
+    let doc = ctx.doc;
+    let mut found = Vec::new();
+    for (index, import) in doc.imports.iter().enumerate() {
+        let Some(target) = ctx.imports.get(index) else {
+            continue;
+        };
+        let inline = &import.inline_def;
+        let imported = &import.imported_def;
+        let diagnostic = match target {
+            // A missing local file is URL_UNRESOLVED's finding at the Inline; a name exported
+            // but undefined is EXPORT_UNDEFINED's in the inlined file.
+            ImportTarget::Node { .. }
+            | ImportTarget::ExportUndefined
+            | ImportTarget::Unread(None) => continue,
+            ImportTarget::NoInline(_) if inline.text.is_empty() => {
+                Diagnostic::new(&IMPORT_UNRESOLVED, inline.span, "IMPORT has no `inlineDEF`")
+            }
+            ImportTarget::NoInline(Some(type_name)) => Diagnostic::new(
+                &IMPORT_UNRESOLVED,
+                inline.span,
+                format!(
+                    "IMPORT inlineDEF `{}` names a {type_name}, not an Inline",
+                    inline.text
+                ),
+            )
+            .value(inline.text.clone()),
+            ImportTarget::NoInline(None) => {
+                let mut names: Vec<&str> = doc
+                    .defs
+                    .iter()
+                    .filter(|((scope, _), id)| {
+                        *scope == import.scope && doc.node(**id).is_a("Inline")
+                    })
+                    .map(|((_, n), _)| n.as_str())
+                    .collect();
+                names.sort_unstable();
+                Diagnostic::new(
+                    &IMPORT_UNRESOLVED,
+                    inline.span,
+                    format!(
+                        "IMPORT inlineDEF `{}` names no Inline DEF'd in its scope",
+                        inline.text
+                    ),
+                )
+                .value(inline.text.clone())
+                .help_opt(
+                    suggest::did_you_mean(&inline.text, names)
+                        .map(|c| format!("did you mean `{c}`?")),
+                )
+            }
+            ImportTarget::NotExported { library, exported } => {
+                let file = display_path(ctx.base, &library.path);
+                let vrml97 = library
+                    .document
+                    .as_ref()
+                    .is_some_and(|d| d.version == Some(crate::schema::Version::Vrml97));
+                let help = if vrml97 {
+                    Some(format!("{file} is VRML97, which has no EXPORT statement (14772-1): a browser imports nothing from it; write it as X3D (`#X3D V3.3 utf8`) to export nodes"))
+                } else if exported.is_empty() {
+                    Some(format!("{file} has no EXPORT statement"))
+                } else {
+                    let names = exported.iter().map(String::as_str);
+                    suggest::did_you_mean(&imported.text, names)
+                        .map(|c| format!("did you mean `{c}`?"))
+                        .or_else(|| {
+                            Some(format!(
+                                "{file} exports {}",
+                                exported
+                                    .iter()
+                                    .map(|n| format!("`{n}`"))
+                                    .collect::<Vec<_>>()
+                                    .join(", ")
+                            ))
+                        })
+                };
+                Diagnostic::new(
+                    &IMPORT_UNRESOLVED,
+                    imported.span,
+                    format!(
+                        "IMPORT {}.{}: {file}, which Inline `{}` loads, exports no `{}`",
+                        inline.text, imported.text, inline.text, imported.text
+                    ),
+                )
+                .value(imported.text.clone())
+                .help_opt(help)
+            }
+            ImportTarget::Unread(Some(why)) => {
+                let why = why.text();
+                Diagnostic::new(
+                    &VALIDATION_INCOMPLETE,
+                    import.span,
+                    format!(
+                        "IMPORT {}.{} is not checked: the file of Inline `{}` is not read: {why}",
+                        inline.text, imported.text, inline.text
+                    ),
+                )
+            }
+            ImportTarget::NotScene { library } => Diagnostic::new(
+                &VALIDATION_INCOMPLETE,
+                import.span,
+                format!(
+                    "IMPORT {}.{} is not checked: {} is no X3D or VRML scene x3dcheck reads",
+                    inline.text,
+                    imported.text,
+                    display_path(ctx.base, &library.path)
+                ),
+            ),
+        };
+        found.push(diagnostic);
+    }
+    for diagnostic in found {
+        ctx.report(diagnostic);
+    }
+}
