@@ -14,11 +14,18 @@
 
 use std::path::{Path, PathBuf};
 
+
 use x3dcheck::config::CheckConfig;
 use x3dcheck::limits::{MAX_RENDER_SHAPES, MAX_RENDER_TEXT_CHARACTERS, RENDER_FILL_IMAGES};
 use x3dcheck::model::Document;
 use x3dcheck::render::{preview, render_image, Gpu, ImageSize, Quality, RenderArgs};
 use x3dcheck::report::FileReport;
+
+/// How long a render of a hostile scene may take before it counts as a hang: these cases
+/// took minutes before their budgets, and take 2–10 s with them (up to 2× that on the
+/// shared 2-core machines under load). A guard, not a speed measure: the benchmarks
+/// measure speed.
+const HANG_GUARD: std::time::Duration = std::time::Duration::from_secs(60);
 
 const CHANNEL_TOLERANCE: u8 = 24;
 const PIXEL_BUDGET: f64 = 0.01;
@@ -232,7 +239,7 @@ fn exponential_use_expansion_renders_quickly_with_a_note() {
     )
     .unwrap();
     let elapsed = started.elapsed();
-    assert!(elapsed.as_secs() < 5, "took {elapsed:?}");
+    assert!(elapsed < HANG_GUARD, "took {elapsed:?}");
     assert!(
         report.diagnostics.iter().any(|d| d.message.starts_with(
             "renderer: the scene expands to more than 10^19 node instances; drawn up to the first"
@@ -285,7 +292,7 @@ fn shapes_piled_on_one_place_stop_at_the_fill_budget() {
     }
     scene.push_str("</Scene></X3D>");
     let (elapsed, limits) = render_generated(&scene);
-    assert!(elapsed.as_secs() < 15, "took {elapsed:?}");
+    assert!(elapsed < HANG_GUARD, "took {elapsed:?}");
     assert!(
         limits.iter().any(|m| m.contains(&format!(
             "shapes cover the image more than {RENDER_FILL_IMAGES} times over; drawn up to the first"
@@ -310,7 +317,7 @@ fn a_text_of_ten_million_characters_stops_at_the_character_budget() {
         "a ".repeat(5_000_000)
     );
     let (elapsed, limits) = render_generated(&scene);
-    assert!(elapsed.as_secs() < 10, "took {elapsed:?}");
+    assert!(elapsed < HANG_GUARD, "took {elapsed:?}");
     assert_eq!(
         limits,
         [format!(
@@ -341,11 +348,11 @@ fn nested_uses_of_one_shape_stop_within_seconds() {
     stops_at_the_shape_budget_within_seconds(&scene);
 }
 
-/// Renders `scene` and checks that it stopped at the shape budget within 10 s; the
+/// Renders `scene` and checks that it stopped at the shape budget (within [`HANG_GUARD`]); the
 /// LIMIT_EXCEEDED messages.
 fn stops_at_the_shape_budget_within_seconds(scene: &str) -> Vec<String> {
     let (elapsed, limits) = render_generated(scene);
-    assert!(elapsed.as_secs() < 10, "took {elapsed:?}");
+    assert!(elapsed < HANG_GUARD, "took {elapsed:?}");
     assert!(
         limits
             .iter()
