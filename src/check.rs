@@ -94,7 +94,13 @@ fn check_decoded<'a>(path: &str, decoded: parse::Decoded<'a>, config: &CheckConf
     if !deep && config.render {
         if let Some(doc) = document.take() {
             let mut limits = Vec::new();
-            document = Some(instantiate_externals(doc, file, config, &externs, &mut limits));
+            document = Some(instantiate_externals(
+                doc,
+                file,
+                config,
+                &externs,
+                &mut limits,
+            ));
         }
     }
     Checked {

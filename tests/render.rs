@@ -14,7 +14,6 @@
 
 use std::path::{Path, PathBuf};
 
-
 use x3dcheck::config::CheckConfig;
 use x3dcheck::limits::{MAX_RENDER_SHAPES, MAX_RENDER_TEXT_CHARACTERS, RENDER_FILL_IMAGES};
 use x3dcheck::model::Document;

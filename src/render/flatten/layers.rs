@@ -133,7 +133,8 @@ impl Walker<'_> {
             // A layer without a viewpoint binds the X3D default one, as a browser does (a
             // LayoutLayer has its own fixed view).
             for (planned, viewpoint) in plan.iter().zip(viewpoints.iter_mut()) {
-                let layout = matches!(planned, Planned::Layer(id) if type_is(doc, *id, "LayoutLayer"));
+                let layout =
+                    matches!(planned, Planned::Layer(id) if type_is(doc, *id, "LayoutLayer"));
                 if viewpoint.is_none() && !layout {
                     *viewpoint = Some(camera::default_viewpoint());
                 }
