@@ -10,6 +10,7 @@ pub mod numbers;
 pub mod prototypes;
 mod registry;
 pub mod rendering;
+pub mod scripting;
 pub mod shape;
 pub mod suggest;
 pub mod texturing;
@@ -54,6 +55,8 @@ pub struct Ctx<'a> {
     pub base: Option<&'a std::path::Path>,
     /// What each ExternProtoDeclare's url resolves to (deep level; empty below it).
     pub externs: prototypes::externs::Externs,
+    /// The code of each Script, read and parsed when a rule first asks ([`Ctx::scripts`]).
+    scripts: std::cell::OnceCell<scripting::Scripts>,
     diagnostics: Vec<Diagnostic>,
     /// Folded findings: (code, node, field) → index in `diagnostics`.
     folded: HashMap<(&'static str, NodeId, String), usize>,
@@ -65,6 +68,12 @@ pub struct Ctx<'a> {
 pub const FOLDED_INDICES: usize = 10;
 
 impl Ctx<'_> {
+    /// The Scripts' code, read and parsed on first use (never for a document whose rules
+    /// do not ask, and at no cost beyond a look at each node for one without Scripts).
+    pub fn scripts(&self) -> &scripting::Scripts {
+        self.scripts.get_or_init(|| scripting::Scripts::read(self))
+    }
+
     pub fn report(&mut self, diagnostic: Diagnostic) {
         if self.has_room() {
             self.diagnostics.push(diagnostic);
@@ -226,6 +235,7 @@ pub fn check(
         file,
         base,
         externs,
+        scripts: std::cell::OnceCell::new(),
         diagnostics: Vec::new(),
         folded: HashMap::new(),
         full: false,

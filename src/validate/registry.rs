@@ -4,7 +4,9 @@
 
 use std::sync::LazyLock;
 
-use super::{document, events, lighting, prototypes, rendering, shape, texturing, Check, Rule};
+use super::{
+    document, events, lighting, prototypes, rendering, scripting, shape, texturing, Check, Rule,
+};
 
 /// Every rule with its check function (None for those reported while reading).
 pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {
@@ -16,6 +18,7 @@ pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {
         texturing::RULES,
         events::RULES,
         prototypes::RULES,
+        scripting::RULES,
     ]
     .concat()
 });

@@ -8,7 +8,9 @@ use crate::validate::Ctx;
 crate::declare_rule! {
     /// ## What it does
     /// Says which parts of a scene were not checked, so that a partial check never reads
-    /// as "valid": Script code; shader source; prototypes the document declares but never
+    /// as "valid": Script code below the standard level, and from it the Script code that
+    /// is not ECMAScript, is on the network, or is in a `.js` file below the deep level
+    /// (see SCRIPT_SYNTAX_ERROR); shader source; prototypes the document declares but never
     /// instantiates (their bodies are checked as written, with no values passed through
     /// `IS`); ExternProtoDeclare bodies, which live in other files (at the deep level, one
     /// whose url resolves to a ProtoDeclare in a local file of the tree has its interface
@@ -49,14 +51,17 @@ fn check(ctx: &mut Ctx) {
     // The nodes as written: a copy made for a prototype instance is the same Script.
     for (id, node) in ctx.doc.iter().take(ctx.doc.written_nodes().len()) {
         let what = if node.is_a("Script") {
-            "Script code is not checked"
+            match crate::validate::scripting::unchecked(ctx, id) {
+                Some(why) => why,
+                None => continue,
+            }
         } else if node.is_a("X3DShaderNode")
             || node.is_a("ShaderPart")
             || node.is_a("ShaderProgram")
         {
-            "shader source is not checked"
+            "shader source is not checked".to_string()
         } else if node.is_a("Inline") {
-            "the inlined scene is not checked"
+            "the inlined scene is not checked".to_string()
         } else {
             continue;
         };
