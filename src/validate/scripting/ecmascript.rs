@@ -31,7 +31,30 @@ pub struct Parsed {
     pub dynamic: bool,
 }
 
-pub fn parse(code: &str) -> Parsed {
+/// Parses `code` on a thread with a stack deep enough for any nesting code of its length
+/// can write (see [`crate::limits::MAX_SCRIPT_BYTES`]), or says why it was not parsed.
+pub fn parse(code: &str) -> Result<Parsed, String> {
+    use crate::limits::{MAX_SCRIPT_BYTES, SCRIPT_STACK_BASE, SCRIPT_STACK_PER_BYTE};
+    if code.len() > MAX_SCRIPT_BYTES {
+        return Err(format!(
+            "is {} KiB long, more than the {} KiB x3dcheck parses, and is not checked",
+            code.len() >> 10,
+            MAX_SCRIPT_BYTES >> 10
+        ));
+    }
+    let stack = SCRIPT_STACK_BASE + code.len() * SCRIPT_STACK_PER_BYTE;
+    std::thread::scope(|scope| {
+        std::thread::Builder::new()
+            .name("x3dcheck-script".into())
+            .stack_size(stack)
+            .spawn_scoped(scope, || parse_here(code))
+            .map_err(|e| format!("could not be parsed: no thread to parse it ({e})"))?
+            .join()
+            .map_err(|_| "could not be parsed: the parser failed".to_string())
+    })
+}
+
+fn parse_here(code: &str) -> Parsed {
     let allocator = Allocator::default();
     let options = ParseOptions {
         allow_return_outside_function: false,
@@ -192,7 +215,8 @@ mod tests {
             "function a(v) { inner = 1; }\nvar b = function () {}, c;\nlet {d, e: [f]} = x;\n\
              g = h = function () {};\nthis.i = 1;\nif (x) { function j() {} } else { var k; }\n\
              for (var l in x) {}\ntry { var m; } catch (e) { var n; }\nclass O {}",
-        );
+        )
+        .unwrap();
         assert!(parsed.error.is_none(), "{:?}", parsed.error);
         let mut names: Vec<&str> = parsed.names.iter().map(String::as_str).collect();
         names.sort_unstable();
@@ -201,19 +225,33 @@ mod tests {
             ["O", "a", "b", "c", "d", "f", "g", "h", "i", "j", "k", "l", "m", "n"]
         );
         assert!(!parsed.dynamic);
-        assert!(parse("with (x) { var a; }").dynamic);
+        assert!(parse("with (x) { var a; }").unwrap().dynamic);
     }
 
     #[test]
     fn syntax_errors_have_their_place() {
         let code = "function f() {\n  x = ;\n}";
-        let error = parse(code).error.unwrap();
+        let error = parse(code).unwrap().error.unwrap();
         assert_eq!(&code[error.start..], ";\n}");
         // Not a module: `import` is an error, and so is a top-level return.
-        assert!(parse("import x from 'y';").error.is_some());
-        assert!(parse("return 1;").error.is_some());
+        let error = |code: &str| parse(code).unwrap().error;
+        assert!(error("import x from 'y';").is_some());
+        assert!(error("return 1;").is_some());
         // Non-strict code: `with` and octal literals parse.
-        assert!(parse("with (Math) { x = PI; } y = 010;").error.is_none());
-        assert!(parse("function f() {").error.is_some());
+        assert!(error("with (Math) { x = PI; } y = 010;").is_none());
+        assert!(error("function f() {").is_some());
+    }
+
+    /// The parser recurses per nesting level: code nested as deep as its length allows
+    /// parses without overflowing the stack, whatever thread checks it.
+    #[test]
+    fn the_deepest_nesting_does_not_overflow() {
+        let n = crate::limits::MAX_SCRIPT_BYTES / 2 - 4;
+        for (open, close) in [("[", "]"), ("(", ")"), ("{", "}"), ("!", ""), ("a?b:", "c")] {
+            let code = format!("x={}{}", open.repeat(n / open.len()), close.repeat(n / open.len()));
+            let code = &code[..code.len().min(crate::limits::MAX_SCRIPT_BYTES)];
+            assert!(parse(code).is_ok(), "{open}");
+        }
+        assert!(parse(&"x".repeat(crate::limits::MAX_SCRIPT_BYTES + 1)).is_err());
     }
 }

@@ -59,7 +59,13 @@ pub struct ParsedCode {
 impl ParsedCode {
     /// The code as parsed.
     pub fn code(&self) -> &str {
-        match &self.place {
+        self.place.code()
+    }
+}
+
+impl Place {
+    fn code(&self) -> &str {
+        match self {
             Place::Document(mapped) => &mapped.text,
             Place::Elsewhere { code, .. } => code,
         }
@@ -204,7 +210,7 @@ fn look_at(ctx: &Ctx, candidate: &Candidate, resolver: &mut Option<Resolver>) ->
         let code = candidate
             .text
             .slice(start + scheme.len(), candidate.text.len());
-        return Look::Code(parse_in_document(code));
+        return parse_in_document(code);
     }
     let shown = shown(trimmed);
     if let Some(language) = other_language(&lower, trimmed) {
@@ -213,7 +219,7 @@ fn look_at(ctx: &Ctx, candidate: &Candidate, resolver: &mut Option<Resolver>) ->
         ));
     }
     if candidate.content {
-        return Look::Code(parse_in_document(candidate.text.clone()));
+        return parse_in_document(candidate.text.clone());
     }
     if data_url::is_data_url(trimmed) {
         return data(trimmed, candidate.span);
@@ -261,19 +267,23 @@ fn other_language(lower: &str, text: &str) -> Option<&'static str> {
     }
 }
 
-fn parse_in_document(code: Mapped) -> ParsedCode {
-    ParsedCode {
-        result: ecmascript::parse(&code.text),
-        place: Place::Document(code),
+fn parse_in_document(code: Mapped) -> Look {
+    parsed(Place::Document(code))
+}
+
+fn parsed(place: Place) -> Look {
+    match ecmascript::parse(place.code()) {
+        Ok(result) => Look::Code(ParsedCode { result, place }),
+        Err(why) => Look::Unknown(format!("its code {why}")),
     }
 }
 
 /// A data: URL: JavaScript by its MIME type is parsed, anything else is not code.
 fn data(url: &str, entry: Span) -> Look {
-    let Ok(parsed) = ::data_url::DataUrl::process(url) else {
+    let Ok(data_url) = ::data_url::DataUrl::process(url) else {
         return Look::Nothing;
     };
-    let mime = parsed.mime_type();
+    let mime = data_url.mime_type();
     let subtype = mime.subtype.to_ascii_lowercase();
     if !subtype.contains("javascript") && !subtype.contains("ecmascript") {
         return Look::Unknown(format!(
@@ -283,17 +293,14 @@ fn data(url: &str, entry: Span) -> Look {
             mime.subtype
         ));
     }
-    let Ok((bytes, _)) = parsed.decode_to_vec() else {
+    let Ok((bytes, _)) = data_url.decode_to_vec() else {
         return Look::Nothing;
     };
     let code = String::from_utf8_lossy(&bytes).into_owned();
-    Look::Code(ParsedCode {
-        result: ecmascript::parse(&code),
-        place: Place::Elsewhere {
-            entry,
-            name: "the data: URL's code".to_string(),
-            code,
-        },
+    parsed(Place::Elsewhere {
+        entry,
+        name: "the data: URL's code".to_string(),
+        code,
     })
 }
 
@@ -312,13 +319,10 @@ fn file(ctx: &Ctx, path: &Path, url: &str, entry: Span) -> Look {
     match crate::read::read_path(path, crate::limits::MAX_INPUT_BYTES) {
         Ok(crate::read::Contents::Bytes(bytes)) => {
             let code = String::from_utf8_lossy(&bytes).into_owned();
-            Look::Code(ParsedCode {
-                result: ecmascript::parse(&code),
-                place: Place::Elsewhere {
-                    entry,
-                    name: format!("`{name}`"),
-                    code,
-                },
+            parsed(Place::Elsewhere {
+                entry,
+                name: format!("`{name}`"),
+                code,
             })
         }
         Ok(crate::read::Contents::TooLarge) => Look::Unknown(format!(
