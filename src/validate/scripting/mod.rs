@@ -121,12 +121,7 @@ struct Candidate {
     content: bool,
 }
 
-fn read_script(
-    ctx: &Ctx,
-    id: NodeId,
-    node: &Node,
-    resolver: &mut Option<Resolver>,
-) -> ScriptCode {
+fn read_script(ctx: &Ctx, id: NodeId, node: &Node, resolver: &mut Option<Resolver>) -> ScriptCode {
     let mut code = ScriptCode {
         node: id,
         parsed: Vec::new(),

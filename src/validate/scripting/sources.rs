@@ -324,14 +324,18 @@ mod tests {
 
     #[test]
     fn xml_attribute_strings_decode_both_levels() {
-        let doc = r#""javascript: f(&quot;x&quot;, \"y\")&#10;g()" 'z.js'"#;
+        // `&quot;` alone would end the MFString string: a quote of the code is `\&quot;`.
+        let doc = r#""javascript: f(\&quot;x\&quot;, \"y\")&#10;g()" 'z.js'"#;
         let entries = xml_attribute_strings(doc.as_bytes(), whole(doc));
         assert_eq!(entries.len(), 1);
         assert_eq!(entries[0].text.text, "javascript: f(\"x\", \"y\")\ng()");
         let text = &entries[0].text;
         assert_eq!(origin(doc, text, text.text.find('\n').unwrap(), 1), "&#10;");
         assert_eq!(origin(doc, text, 14, 1), "&quot;");
-        assert_eq!(&doc[entries[0].span.range()], &doc[..doc.find(" 'z").unwrap()]);
+        assert_eq!(
+            &doc[entries[0].span.range()],
+            &doc[..doc.find(" 'z").unwrap()]
+        );
         // A literal line break in an attribute is a space.
         let doc = "\"a\nb\" \"c.js\"";
         let entries = xml_attribute_strings(doc.as_bytes(), whole(doc));
@@ -349,7 +353,10 @@ mod tests {
         assert_eq!(entries[0].text.text, "ecmascript: a(\"é\")\n");
         assert_eq!(entries[1].text.text, "b😀");
         let text = &entries[0].text;
-        assert_eq!(origin(doc, text, text.text.find('é').unwrap(), 2), r"\u00e9");
+        assert_eq!(
+            origin(doc, text, text.text.find('é').unwrap(), 2),
+            r"\u00e9"
+        );
         assert_eq!(origin(doc, text, text.text.find('\n').unwrap(), 1), r"\n");
         let code = json_source_code(doc.as_bytes(), whole(doc));
         assert_eq!(code.text, "ecmascript: a(\"é\")\n\nb😀");

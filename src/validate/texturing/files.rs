@@ -142,8 +142,8 @@ impl Resolver {
                 "kambiscript:",
                 "compiled:",
             ]
-                .iter()
-                .any(|s| lower.starts_with(s))
+            .iter()
+            .any(|s| lower.starts_with(s))
             {
                 Resolution::Inline
             } else {
