@@ -75,6 +75,17 @@ pub const MAX_ENTITY_EXPANSION: usize = 1 << 20;
 /// here too.
 pub const MAX_ENTITY_NESTING: usize = 16;
 
+/// The longest piece of Script code parsed (bytes). oxc's parser recurses once per nesting
+/// level and has no depth limit of its own, so each parse runs on a thread whose stack can
+/// hold the deepest nesting code of this length can write ([`SCRIPT_STACK_PER_BYTE`] per
+/// byte); longer code is not parsed (VALIDATION_INCOMPLETE).
+pub const MAX_SCRIPT_BYTES: usize = 1 << 19;
+/// Stack reserved per byte of Script code (measured: a nesting level costs well under this),
+/// on top of [`SCRIPT_STACK_BASE`]. Reserved, not used: pages are touched only as deep as
+/// the code nests.
+pub const SCRIPT_STACK_PER_BYTE: usize = 2048;
+pub const SCRIPT_STACK_BASE: usize = 8 << 20;
+
 /// Prototype library files (the files ExternProtoDeclares name, and those their
 /// ExternProtoDeclares name, …) followed from one document at the deep level when looking
 /// for prototypes that instantiate themselves. Real libraries name a few others at most.

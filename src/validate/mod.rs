@@ -12,6 +12,7 @@ pub mod prototypes;
 mod registry;
 pub mod rendering;
 pub mod shaders;
+pub mod scripting;
 pub mod shape;
 pub mod suggest;
 pub mod texturing;
@@ -62,6 +63,8 @@ pub struct Ctx<'a> {
     pub inlines: networking::inlines::Inlines,
     /// What each IMPORT statement imports (deep level; empty below it).
     pub imports: networking::imports::Imports,
+    /// The code of each Script, read and parsed when a rule first asks ([`Ctx::scripts`]).
+    scripts: std::cell::OnceCell<scripting::Scripts>,
     diagnostics: Vec<Diagnostic>,
     /// Folded findings: (code, node, field) → index in `diagnostics`.
     folded: HashMap<(&'static str, NodeId, String), usize>,
@@ -73,6 +76,12 @@ pub struct Ctx<'a> {
 pub const FOLDED_INDICES: usize = 10;
 
 impl Ctx<'_> {
+    /// The Scripts' code, read and parsed on first use (never for a document whose rules
+    /// do not ask, and at no cost beyond a look at each node for one without Scripts).
+    pub fn scripts(&self) -> &scripting::Scripts {
+        self.scripts.get_or_init(|| scripting::Scripts::read(self))
+    }
+
     pub fn report(&mut self, diagnostic: Diagnostic) {
         if self.has_room() {
             self.diagnostics.push(diagnostic);
@@ -256,6 +265,7 @@ pub fn check_with(
         shaders: None,
         inlines,
         imports,
+        scripts: std::cell::OnceCell::new(),
         diagnostics: Vec::new(),
         folded: HashMap::new(),
         full: false,

@@ -5,8 +5,8 @@
 use std::sync::LazyLock;
 
 use super::{
-    document, events, lighting, networking, prototypes, rendering, shaders, shape, texturing,
-    Check, Rule,
+    document, events, lighting, networking, prototypes, rendering, scripting, shaders, shape,
+    texturing, Check, Rule,
 };
 
 /// Every rule with its check function (None for those reported while reading).
@@ -21,6 +21,7 @@ pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {
         prototypes::RULES,
         shaders::RULES,
         networking::RULES,
+        scripting::RULES,
     ]
     .concat()
 });

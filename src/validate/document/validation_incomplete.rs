@@ -10,7 +10,9 @@ use crate::validate::{Ctx, Level};
 crate::declare_rule! {
     /// ## What it does
     /// Says which parts of a scene were not checked, so that a partial check never reads
-    /// as "valid": Script code; shader source (below the standard level; from it on,
+    /// as "valid": Script code below the standard level, and from it the Script code that
+    /// is not ECMAScript, is on the network, or is in a `.js` file below the deep level
+    /// (see SCRIPT_SYNTAX_ERROR); shader source (below the standard level; from it on,
     /// what the GLSL compiler could not check: other languages, PackagedShader, sources
     /// in network or, below deep, local files); the bodies of external prototypes that
     /// x3dcheck cannot read; Inline scenes and IMPORT statements below the deep level,
@@ -61,7 +63,10 @@ fn check(ctx: &mut Ctx) {
     // The nodes as written: a copy made for a prototype instance is the same Script.
     for (id, node) in ctx.doc.iter().take(ctx.doc.written_nodes().len()) {
         let what = if node.is_a("Script") {
-            "Script code is not checked"
+            match crate::validate::scripting::unchecked(ctx, id) {
+                Some(why) => why,
+                None => continue,
+            }
         } else if node.is_a("X3DShaderNode")
             || node.is_a("ShaderPart")
             || node.is_a("ShaderProgram")
@@ -71,10 +76,10 @@ fn check(ctx: &mut Ctx) {
             if ctx.config.level >= crate::diagnostic::Level::Standard {
                 continue;
             }
-            "shader source is not checked"
+            "shader source is not checked".to_string()
         } else if node.is_a("Inline") {
             match inline_note(ctx, id) {
-                Some(what) => what,
+                Some(what) => what.to_string(),
                 None => continue,
             }
         } else {

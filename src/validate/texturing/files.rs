@@ -4,7 +4,8 @@
 //! Decisions, documented in the rules that use them:
 //! - Network URLs (`http:`, `https:`, `ftp:`, `urn:` and any other scheme) are never
 //!   fetched. Inline content (`data:`, and `ecmascript:`/`javascript:`/`vrmlscript:` code
-//!   in Script and shader urls) has nothing to resolve.
+//!   in Script and shader urls, Castle Game Engine's `castlescript:`/`kambiscript:` and
+//!   `compiled:`) has nothing to resolve.
 //! - `file:` URLs are local paths (`file:///abs`, `file://localhost/abs`, `file:rel`);
 //!   `%XX` escapes are decoded (the written form is tried too); a fragment (`#Viewpoint`)
 //!   or query is dropped; a backslash is tried as `/` as well (Windows exporters).
@@ -132,9 +133,17 @@ impl Resolver {
         let url = url.trim();
         let Some(path) = local_path(url) else {
             let lower = url.to_ascii_lowercase();
-            return if ["data:", "ecmascript:", "javascript:", "vrmlscript:"]
-                .iter()
-                .any(|s| lower.starts_with(s))
+            return if [
+                "data:",
+                "ecmascript:",
+                "javascript:",
+                "vrmlscript:",
+                "castlescript:",
+                "kambiscript:",
+                "compiled:",
+            ]
+            .iter()
+            .any(|s| lower.starts_with(s))
             {
                 Resolution::Inline
             } else {

@@ -23,9 +23,9 @@ crate::declare_rule! {
     /// - Network URLs (`http:`, `https:`, `ftp:`, `urn:`, …) are never fetched: a field
     ///   with no local file but a network entry gets VALIDATION_INCOMPLETE instead, as does
     ///   a relative URL of a document read from standard input.
-    /// - `data:` URLs and script code (`ecmascript:`, `javascript:`, `vrmlscript:`, or a
-    ///   CDATA section, which the XML encoding adds as a url entry) need no file, nor
-    ///   GLSL written in a shader part's url entry.
+    /// - `data:` URLs and script code (`ecmascript:`, `javascript:`, `vrmlscript:`,
+    ///   `castlescript:`, `compiled:`, or a CDATA section, which the XML encoding adds as a
+    ///   url entry) need no file, nor GLSL written in a shader part's url entry.
     /// - Files are read only inside the allowed tree: the directory given as the checking
     ///   root (the tree the user named on the command line), else the document's own
     ///   directory. `..` and symlinks are resolved first; an entry that leaves the tree is

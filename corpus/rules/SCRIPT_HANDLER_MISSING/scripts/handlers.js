@@ -1,0 +1,3 @@
+function set_fraction(value, time) {
+  print(value);
+}

@@ -1,0 +1,3 @@
+function initialize() {
+  print('loaded');
+}
