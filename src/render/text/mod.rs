@@ -228,7 +228,8 @@ fn style(doc: &Document, text: NodeId, notes: &mut Vec<String>) -> Option<Style>
         ));
     }
     let size = f64::from(float_of("size", 1.0));
-    if !(size > 0.0) {
+    // NaN too is not positive.
+    if size.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
         notes.push("Text whose FontStyle size is not positive is not drawn".into());
         return None;
     }

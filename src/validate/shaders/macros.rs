@@ -255,11 +255,8 @@ fn call_depth(tokens: &[&str], is_macro: impl Fn(&str) -> bool) -> u32 {
                 }
                 stack.push(call);
             }
-            ")" => {
-                if stack.pop() == Some(true) {
-                    calls = calls.saturating_sub(1);
-                }
-            }
+            // The guard pops for every ")"; only a macro call's closes a call.
+            ")" if stack.pop() == Some(true) => calls = calls.saturating_sub(1),
             _ => {}
         }
     }

@@ -223,10 +223,9 @@ fn embedded(file: &[u8], span: Span, name: &str) -> Option<Found> {
             _ => return None,
         };
         (text, span.range().start)
-    } else if raw.starts_with("<![CDATA[") {
+    } else if let Some(inner) = raw.strip_prefix("<![CDATA[") {
         // Each CDATA section is one url entry (as Titania writes an MFString of sources);
         // the first is the one a browser loads.
-        let inner = &raw["<![CDATA[".len()..];
         let end = inner.find("]]>").unwrap_or(inner.len());
         let start = span.range().start + "<![CDATA[".len();
         let text = inner[..end].to_string();
