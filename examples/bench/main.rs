@@ -837,6 +837,34 @@ fn footnotes(out: &mut String, rows: &[Row], notes: &[String], timer: &Timer) {
     }
 }
 
+/// The share of the report's files with a VALIDATION_INCOMPLETE that is not about a network
+/// URL or a language other than ECMAScript and GLSL (by the words of those notes).
+fn incomplete_share(json: &Value) -> String {
+    let Some(files) = json["files"].as_array() else {
+        return "—".to_string();
+    };
+    let within_reach = |message: &str| {
+        !(message.contains("network URL")
+            || message.contains(", which x3dcheck does not check")
+            || (message.contains("language \"") && !message.contains("language \"\"")))
+    };
+    let incomplete = files
+        .iter()
+        .filter(|file| {
+            file["diagnostics"].as_array().is_some_and(|found| {
+                found.iter().any(|d| {
+                    d["code"] == "VALIDATION_INCOMPLETE"
+                        && d["message"].as_str().is_some_and(within_reach)
+                })
+            })
+        })
+        .count();
+    format!(
+        "{incomplete} ({:.1}%)",
+        100.0 * incomplete as f64 / files.len().max(1) as f64
+    )
+}
+
 /// `--corpus DIR`: the whole directory per level in one x3dcheck run (all cores).
 fn corpus_bench(
     out: &mut String,
@@ -860,9 +888,9 @@ fn corpus_bench(
     );
     let _ = writeln!(
         out,
-        "| level | files | time (median) | files/s | MB/s | CPU use | peak RSS | errors | warnings | infos | hints | exit |"
+        "| level | files | time (median) | files/s | MB/s | CPU use | peak RSS | errors | warnings | infos | hints | incomplete | exit |"
     );
-    let _ = writeln!(out, "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|");
+    let _ = writeln!(out, "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|");
     let report = scratch.join("report.json");
     let stderr = scratch.join("stderr.txt");
     let jobs = jobs.map(|n| n.to_string());
@@ -885,7 +913,7 @@ fn corpus_bench(
         let Some(json) = json else {
             let _ = writeln!(
                 out,
-                "| {level} | — | — | — | — | — | — | — | — | — | — | {} ({}) |",
+                "| {level} | — | — | — | — | — | — | — | — | — | — | — | {} ({}) |",
                 warm.code.unwrap_or(-1),
                 measure::head(&stderr, 1)
             );
@@ -903,7 +931,7 @@ fn corpus_bench(
         let checked = count("files");
         let _ = writeln!(
             out,
-            "| {level} | {checked} | {} | {:.0} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            "| {level} | {checked} | {} | {:.0} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
             seconds(median),
             checked as f64 / median,
             throughput(bytes, median),
@@ -913,6 +941,7 @@ fn corpus_bench(
             count("warnings"),
             count("infos"),
             count("hints"),
+            incomplete_share(&json),
             warm.code.map_or("signal".to_string(), |c| c.to_string()),
         );
     }
@@ -920,7 +949,9 @@ fn corpus_bench(
         out,
         "\nOne x3dcheck run per level over the whole directory ({}); time: median wall clock of {runs} \
          runs after one warm-up run; CPU use: (user + system CPU time) / wall time, of {} cores; \
-         MB = 10⁶ bytes of .x3d/.x3dj/.json files; exit 2 means some file could not be checked.",
+         MB = 10⁶ bytes of .x3d/.x3dj/.json files; incomplete: the share of files with a \
+         VALIDATION_INCOMPLETE that is not about a network URL or another language (issue 16's \
+         measure); exit 2 means some file could not be checked.",
         jobs.as_ref()
             .map_or("all cores".to_string(), |n| format!("-j {n}")),
         cores()

@@ -146,15 +146,7 @@ fn check(ctx: &mut Ctx) {
         return;
     };
     let mut loads = Loads {
-        tree: Tree {
-            root: ctx
-                .config
-                .root
-                .clone()
-                .unwrap_or_else(|| base.to_path_buf()),
-            libraries: &ctx.config.libraries,
-            keep: ctx.config.keep_values(),
-        },
+        tree: Tree::in_dir(base, ctx.config),
         loads: HashMap::new(),
         exceeded: false,
     };

@@ -124,12 +124,16 @@ impl Tree<'_> {
             Some(dir) if !dir.as_os_str().is_empty() => dir,
             _ => Path::new("."),
         };
-        let tree = Tree {
+        Some((Tree::in_dir(base, config), base.to_path_buf()))
+    }
+
+    /// The tree of a document in directory `base`: the checking root, else `base`.
+    pub fn in_dir<'c>(base: &Path, config: &'c CheckConfig) -> Tree<'c> {
+        Tree {
             root: config.root.clone().unwrap_or_else(|| base.to_path_buf()),
             libraries: &config.libraries,
             keep: config.keep_values(),
-        };
-        Some((tree, base.to_path_buf()))
+        }
     }
 
     /// The externs of `doc`, a document in directory `base` of the tree.

@@ -160,15 +160,7 @@ fn check(ctx: &mut Ctx) {
     // Library files are followed at the deep level only, from a file with a directory.
     let deep = ctx.config.level >= Level::Deep && ctx.doc.protos.iter().any(|p| p.external);
     let tree = match (deep, ctx.base) {
-        (true, Some(base)) => Some(Tree {
-            root: ctx
-                .config
-                .root
-                .clone()
-                .unwrap_or_else(|| base.to_path_buf()),
-            libraries: &ctx.config.libraries,
-            keep: ctx.config.keep_values(),
-        }),
+        (true, Some(base)) => Some(Tree::in_dir(base, ctx.config)),
         _ => None,
     };
     let own_path = ctx.file.and_then(|f| f.canonicalize().ok());

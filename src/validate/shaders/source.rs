@@ -99,32 +99,12 @@ pub fn data_text(url: &str) -> Option<Result<(String, usize), String>> {
             }
         }
     } else {
-        percent_decode(body)
+        crate::validate::texturing::files::percent_decoded(body)
     };
     Some(Ok((
         String::from_utf8_lossy(&bytes).into_owned(),
         lead + comma + 1,
     )))
-}
-
-/// `%XX` escapes decoded; a `%` not followed by two hex digits stays as it is.
-fn percent_decode(text: &str) -> Vec<u8> {
-    let bytes = text.as_bytes();
-    let mut out = Vec::with_capacity(bytes.len());
-    let mut i = 0;
-    while i < bytes.len() {
-        let hex = |b: u8| (b as char).to_digit(16);
-        if bytes[i] == b'%' && i + 2 < bytes.len() {
-            if let (Some(h), Some(l)) = (hex(bytes[i + 1]), hex(bytes[i + 2])) {
-                out.push((h * 16 + l) as u8);
-                i += 3;
-                continue;
-            }
-        }
-        out.push(bytes[i]);
-        i += 1;
-    }
-    out
 }
 
 /// Finds the source of a ShaderPart or ShaderProgram. `resolver` is given at the deep

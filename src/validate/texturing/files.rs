@@ -241,8 +241,13 @@ fn scheme(url: &str) -> Option<&str> {
     (valid && scheme.len() > 1).then_some(scheme)
 }
 
-/// `%XX` escapes decoded to bytes; malformed escapes are kept as written.
+/// `%XX` escapes decoded (a path's); malformed escapes are kept as written.
 fn percent_decode(text: &str) -> OsString {
+    bytes_to_os(percent_decoded(text))
+}
+
+/// `%XX` escapes decoded to bytes; a `%` not followed by two hex digits stays as written.
+pub(crate) fn percent_decoded(text: &str) -> Vec<u8> {
     let bytes = text.as_bytes();
     let mut out = Vec::with_capacity(bytes.len());
     let mut i = 0;
@@ -258,7 +263,7 @@ fn percent_decode(text: &str) -> OsString {
         out.push(bytes[i]);
         i += 1;
     }
-    bytes_to_os(out)
+    out
 }
 
 #[cfg(unix)]
