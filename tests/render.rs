@@ -223,21 +223,7 @@ fn exponential_use_expansion_renders_quickly_with_a_note() {
         ));
     }
     scene.push_str("<Shape><Box/></Shape></Scene></X3D>");
-    let started = std::time::Instant::now();
-    let x3dcheck::check::Checked {
-        mut report,
-        document: doc,
-        ..
-    } = x3dcheck::check::check_document("laughs.x3d", scene.as_bytes(), &CheckConfig::default());
-    render_image(
-        &args(),
-        Path::new("laughs.x3d"),
-        scene.as_bytes(),
-        doc.as_ref(),
-        &mut report,
-    )
-    .unwrap();
-    let elapsed = started.elapsed();
+    let (elapsed, report) = check_and_render("laughs.x3d", &scene);
     assert!(elapsed < HANG_GUARD, "took {elapsed:?}");
     assert!(
         report.diagnostics.iter().any(|d| d.message.starts_with(
@@ -255,27 +241,33 @@ fn exponential_use_expansion_renders_quickly_with_a_note() {
 /// Checks and renders a generated scene at 160×120: the time both took and the report's
 /// LIMIT_EXCEEDED messages.
 fn render_generated(scene: &str) -> (std::time::Duration, Vec<String>) {
-    let started = std::time::Instant::now();
-    let x3dcheck::check::Checked {
-        mut report,
-        document: doc,
-        ..
-    } = x3dcheck::check::check_document("scene.x3d", scene.as_bytes(), &CheckConfig::default());
-    render_image(
-        &args(),
-        Path::new("scene.x3d"),
-        scene.as_bytes(),
-        doc.as_ref(),
-        &mut report,
-    )
-    .unwrap();
+    let (elapsed, report) = check_and_render("scene.x3d", scene);
     let limits = report
         .diagnostics
         .iter()
         .filter(|d| d.code == "LIMIT_EXCEEDED")
         .map(|d| d.message.clone())
         .collect();
-    (started.elapsed(), limits)
+    (elapsed, limits)
+}
+
+/// Checks and renders `scene` as the command line does, with the time both took.
+fn check_and_render(name: &str, scene: &str) -> (std::time::Duration, FileReport) {
+    let started = std::time::Instant::now();
+    let x3dcheck::check::Checked {
+        mut report,
+        document: doc,
+        ..
+    } = x3dcheck::check::check_document(name, scene.as_bytes(), &CheckConfig::default());
+    render_image(
+        &args(),
+        Path::new(name),
+        scene.as_bytes(),
+        doc.as_ref(),
+        &mut report,
+    )
+    .unwrap();
+    (started.elapsed(), report)
 }
 
 #[test]
