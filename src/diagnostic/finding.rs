@@ -1,7 +1,7 @@
 //! One finding: which rule, where (a byte span and, when known, the node it concerns),
 //! what, and the details a tool needs (MF element index, offending value, a suggestion).
 
-use super::{NodeId, Rule, Severity, Span};
+use super::{Fix, NodeId, Rule, Severity, Span};
 
 #[derive(Clone, Debug)]
 pub struct Diagnostic {
@@ -23,6 +23,9 @@ pub struct Diagnostic {
     pub related: Vec<(Span, String)>,
     /// How many findings this one stands for (repeats folded into one).
     pub count: usize,
+    /// The edits that resolve the finding, where the rule knows them (boxed: most
+    /// findings have none, and diagnostics are many).
+    pub fix: Option<Box<Fix>>,
 }
 
 impl Diagnostic {
@@ -39,6 +42,7 @@ impl Diagnostic {
             help: None,
             related: Vec::new(),
             count: 1,
+            fix: None,
         }
     }
 
@@ -69,6 +73,11 @@ impl Diagnostic {
 
     pub fn related(mut self, span: Span, label: impl Into<String>) -> Diagnostic {
         self.related.push((span, label.into()));
+        self
+    }
+
+    pub fn fix(mut self, fix: Fix) -> Diagnostic {
+        self.fix = Some(Box::new(fix));
         self
     }
 

@@ -5,9 +5,11 @@
 //! without importing `validate` or `check`.
 
 mod finding;
+mod fix;
 mod rule;
 
 pub use finding::Diagnostic;
+pub use fix::{Applicability, Edit, Fix};
 pub use rule::{Level, Rule, Severity};
 
 /// A byte range in the input. Line and column are computed only for reported diagnostics.
