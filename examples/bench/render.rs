@@ -137,9 +137,13 @@ pub fn speed(
     );
     let _ = writeln!(
         out,
-        "| what | time (median) | min–max | peak RSS | vs view3dscene |"
+        "| what | time (median) | min–max | peak RSS | RSS / file size (target < 2×) | vs view3dscene |"
     );
-    let _ = writeln!(out, "|---|--:|--:|--:|--:|");
+    let _ = writeln!(out, "|---|--:|--:|--:|--:|--:|");
+    let file_size = fs::metadata(scene)
+        .map_err(|e| format!("{}: {e}", scene.display()))?
+        .len();
+    let ratio_of = |samples: &[Sample]| peak_bytes(samples).map(|p| p as f64 / file_size as f64);
     for (i, (what, samples)) in rows.iter().enumerate() {
         let median = median_wall(samples);
         let (low, high) = wall_range(samples);
@@ -150,11 +154,12 @@ pub fn speed(
         };
         let _ = writeln!(
             out,
-            "| {what} | {} | {}–{} | {} | {ratio} |",
+            "| {what} | {} | {}–{} | {} | {} | {ratio} |",
             seconds(median),
             seconds_bare(low),
             seconds_bare(high),
             peak_bytes(samples).map_or(memory_na(timer), |p| format!("{:.0} MB", mb(p))),
+            ratio_of(samples).map_or(memory_na(timer), |r| format!("{r:.2}×")),
         );
     }
     let _ = writeln!(
@@ -182,6 +187,29 @@ pub fn speed(
                 "- – `--render` under a fifth of view3dscene's time: not measured"
             );
         }
+    }
+    let ratios: Vec<Option<f64>> = rows[..presets].iter().map(|(_, s)| ratio_of(s)).collect();
+    if ratios.iter().all(Option::is_some) {
+        let listed: Vec<String> = PRESETS
+            .iter()
+            .zip(&ratios)
+            .map(|(&q, r)| format!("{} {:.2}×", name(q), r.unwrap_or(f64::NAN)))
+            .collect();
+        let _ = writeln!(
+            out,
+            "- {} `--render` peak memory < 2× file size at every preset: {}",
+            if ratios.iter().all(|r| r.is_some_and(|r| r < 2.0)) {
+                "✓"
+            } else {
+                "✗"
+            },
+            listed.join(", ")
+        );
+    } else {
+        let _ = writeln!(
+            out,
+            "- – `--render` peak memory < 2× file size: not measured"
+        );
     }
     for note in notes {
         let _ = writeln!(out, "- {note}");

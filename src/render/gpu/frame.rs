@@ -5,10 +5,10 @@
 use wgpu::util::DeviceExt;
 
 use super::pipelines::{PipelineKey, Pipelines, COLOR_FORMAT, DEPTH_FORMAT, VERTEX_SLOTS};
-use super::resources::{upload_mesh, MeshBuffers, TextureBindings};
+use super::resources::{upload_indices, upload_mesh, MeshBuffers, TextureBindings};
 use super::uniforms::{draw_uniform, globals, GpuDraw};
 use super::{GpuError, Shading};
-use crate::render::draw_list::{DrawList, Mesh, Textures};
+use crate::render::draw_list::{DrawList, Mesh, Primitive};
 
 #[derive(Copy, Clone)]
 pub struct Target {
@@ -139,9 +139,14 @@ pub async fn draw(
         contents: &[0u8; 16],
         usage: wgpu::BufferUsages::VERTEX,
     });
-    // Everything a draw call refers to exists before the pass begins.
+    // Each draw's pipeline and textures exist before the first pass begins; its vertex
+    // buffers are made for the first pass that draws it and freed after its last, and
+    // each pass gets only its own part of the indices, so the GPU holds about one pass's
+    // meshes at a time rather than the whole scene (on a software driver, in the
+    // process's own memory).
     let mut draws = Vec::with_capacity(order.len());
     let mut scissors = Vec::with_capacity(order.len());
+    let mut counts = Vec::with_capacity(order.len());
     for &(l, m) in &order {
         let mesh = &mut list.layers[l].meshes[m];
         let key = PipelineKey::of(mesh);
@@ -152,7 +157,8 @@ pub async fn draw(
             Some(viewport) => intersect(rects[l], viewport.pixels(target.width, target.height)),
             None => rects[l],
         });
-        draws.push((key, textures, upload_mesh(device, mesh)));
+        counts.push(draw_size(mesh));
+        draws.push((key, textures));
     }
     let background = list
         .layers
@@ -179,7 +185,7 @@ pub async fn draw(
         if w == 0 || h == 0 || (count == 0 && layer.background.is_none()) {
             continue;
         }
-        for (n, pieces) in cut_passes(&draws[slots.clone()], target.pass_indices)
+        for (n, pieces) in cut(counts[slots.clone()].iter().copied(), target.pass_indices)
             .into_iter()
             .enumerate()
         {
@@ -193,6 +199,14 @@ pub async fn draw(
             passes.push((l, n == 0, pieces));
         }
     }
+    // The last pass drawing each slot: its buffers are freed once that pass is done.
+    let mut last_pass = vec![0; order.len()];
+    for (n, (_, _, pieces)) in passes.iter().enumerate() {
+        for piece in pieces {
+            last_pass[piece.slot] = n;
+        }
+    }
+    let mut uploaded: Vec<Option<MeshBuffers>> = (0..order.len()).map(|_| None).collect();
     let starts_layer: Vec<bool> = passes.iter().map(|(_, first, _)| *first).collect();
     let mut encoder = device.create_command_encoder(&Default::default());
     if passes.is_empty() {
@@ -201,7 +215,8 @@ pub async fn draw(
     }
     for (n, (l, first_of_layer, pieces)) in passes.into_iter().enumerate() {
         if n > 0 {
-            // The previous pass is finished before this one is recorded.
+            // The previous pass is finished before this one is recorded, and what only
+            // it used is freed.
             queue.submit([std::mem::replace(
                 &mut encoder,
                 device.create_command_encoder(&Default::default()),
@@ -210,6 +225,29 @@ pub async fn draw(
             device
                 .poll(wgpu::PollType::wait_indefinitely())
                 .map_err(|e| GpuError::Failed(e.to_string()))?;
+            for (slot, &last) in last_pass.iter().enumerate() {
+                if last == n - 1 && uploaded[slot].is_some() {
+                    uploaded[slot] = None;
+                    let (l, m) = order[slot];
+                    drop(std::mem::take(&mut list.layers[l].meshes[m].indices));
+                }
+            }
+        }
+        // This pass's buffers: the vertices of meshes it draws first, its indices.
+        let mut index_buffers = Vec::with_capacity(pieces.len());
+        for piece in &pieces {
+            let (l, m) = order[piece.slot];
+            let mesh = &mut list.layers[l].meshes[m];
+            if uploaded[piece.slot].is_none() {
+                uploaded[piece.slot] = Some(upload_mesh(device, mesh));
+            }
+            index_buffers.push(match uploaded[piece.slot] {
+                Some(MeshBuffers::Surface { .. }) => Some(upload_indices(
+                    device,
+                    &mesh.indices[piece.range.start as usize..piece.range.end as usize],
+                )),
+                _ => None,
+            });
         }
         let last_of_layer = starts_layer.get(n + 1).is_none_or(|&starts| starts);
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
@@ -258,7 +296,7 @@ pub async fn draw(
             pass.draw(0..3, 0..1);
         }
         let mut scissor = rects[l];
-        for Piece { slot, range } in pieces {
+        for (Piece { slot, range }, indices) in pieces.into_iter().zip(&index_buffers) {
             let [sx, sy, sw, sh] = scissors[slot];
             if sw == 0 || sh == 0 {
                 continue;
@@ -267,14 +305,12 @@ pub async fn draw(
                 scissor = scissors[slot];
                 pass.set_scissor_rect(sx, sy, sw, sh);
             }
-            let (key, textures, buffers) = &draws[slot];
+            let (key, textures) = &draws[slot];
             pass.set_pipeline(pipelines.get(*key));
             pass.set_bind_group(1, &draw_group, &[(slot * stride) as u32]);
             pass.set_bind_group(2, bindings.group(textures), &[]);
-            match buffers {
-                MeshBuffers::Surface {
-                    vertices, indices, ..
-                } => {
+            match (&uploaded[slot], indices) {
+                (Some(MeshBuffers::Surface { vertices }), Some(indices)) => {
                     for (i, buffer) in vertices.iter().enumerate().take(VERTEX_SLOTS) {
                         pass.set_vertex_buffer(
                             i as u32,
@@ -282,13 +318,14 @@ pub async fn draw(
                         );
                     }
                     pass.set_index_buffer(indices.slice(..), wgpu::IndexFormat::Uint32);
-                    pass.draw_indexed(range, 0, 0..1);
+                    pass.draw_indexed(0..range.end - range.start, 0, 0..1);
                 }
-                MeshBuffers::Stroke { ends, colors, .. } => {
+                (Some(MeshBuffers::Stroke { ends, colors }), _) => {
                     pass.set_vertex_buffer(0, ends.slice(..));
                     pass.set_vertex_buffer(1, colors.slice(..));
                     pass.draw(0..6, range);
                 }
+                _ => unreachable!("every piece's buffers were made above"),
             }
         }
     }
@@ -306,9 +343,11 @@ pub async fn draw(
 /// At most this many indices (or line and point instances, six vertices each) go into
 /// one render pass by default. A software rasterizer keeps every binned triangle of a
 /// pass until the pass ends, several times the meshes' own size for millions of
-/// triangles; passes of this size, each finished before the next begins, bound that (the
-/// benchmark scene, balanced: 434 MB peak against 882 MB in one pass, and no slower).
-pub const PASS_INDICES: u32 = 3 << 18;
+/// triangles; passes of this size, each finished before the next begins, bound that.
+/// Measured on the benchmark scene (balanced, 800×600, with buffers made per pass):
+/// 358 MB peak with passes of 786,432 indices, 235 MB with 196,608, 223 MB with 98,304;
+/// the image is the same.
+pub const PASS_INDICES: u32 = 3 << 16;
 
 /// A draw call: part of one mesh's indices (or stroke instances).
 struct Piece {
@@ -316,21 +355,19 @@ struct Piece {
     range: std::ops::Range<u32>,
 }
 
-/// The draws cut into passes of at most `limit` indices (whole triangles; a triangle or
-/// stroke larger than the limit gets a pass of its own), in order; at least one pass,
-/// empty for a layer without meshes.
-fn cut_passes(draws: &[(PipelineKey, Textures, MeshBuffers)], limit: u32) -> Vec<Vec<Piece>> {
-    cut(
-        draws.iter().map(|(_, _, buffers)| match buffers {
-            MeshBuffers::Surface { index_count, .. } => (*index_count, 3, 1),
-            MeshBuffers::Stroke { instances, .. } => (*instances, 1, 6),
-        }),
-        limit,
-    )
+/// A draw's size for [`cut`]: a surface's indices (whole triangles), or a stroke's
+/// instances (six indices each).
+fn draw_size(mesh: &Mesh) -> (u32, u32, u32) {
+    match mesh.primitive {
+        Primitive::Triangles => (mesh.indices.len() as u32, 3, 1),
+        primitive => ((mesh.indices.len() / primitive.arity()) as u32, 1, 6),
+    }
 }
 
-/// [`passes`] of draws given as (count, unit, weight): `count` indices or instances,
-/// never cut within `unit` of them, each `weight` indices.
+/// The draws cut into passes of at most `limit` indices (whole triangles; a triangle or
+/// stroke larger than the limit gets a pass of its own), in order; at least one pass,
+/// empty for a layer without meshes. Draws are given as (count, unit, weight): `count`
+/// indices or instances, never cut within `unit` of them, each `weight` indices.
 fn cut(draws: impl Iterator<Item = (u32, u32, u32)>, limit: u32) -> Vec<Vec<Piece>> {
     let mut passes = Vec::new();
     let mut current = Vec::new();

@@ -167,36 +167,38 @@ fn upload(
     (gpu_texture.create_view(&Default::default()), sampler)
 }
 
-/// A mesh's buffers on the GPU.
+/// A mesh's vertex data on the GPU (its indices are uploaded per pass: see
+/// [`upload_indices`]).
 pub enum MeshBuffers {
-    /// Triangles: one buffer per vertex slot (None: the constant zero buffer), indices.
+    /// Triangles: one buffer per vertex slot (None: the constant zero buffer).
     Surface {
         vertices: Box<[Option<wgpu::Buffer>; VERTEX_SLOTS]>,
-        indices: wgpu::Buffer,
-        index_count: u32,
     },
     /// Lines and points: per instance its two ends and their colours.
     Stroke {
         ends: wgpu::Buffer,
         colors: wgpu::Buffer,
-        instances: u32,
     },
 }
 
-/// Uploads a mesh's arrays and frees them: on a software driver the GPU copy lives in
-/// the same memory, so keeping both would double the peak.
+fn buffer(device: &wgpu::Device, bytes: &[u8], usage: wgpu::BufferUsages) -> wgpu::Buffer {
+    device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: None,
+        contents: bytes,
+        usage,
+    })
+}
+
+/// Uploads a mesh's vertex arrays and frees them (a surface keeps its indices, uploaded
+/// per pass): on a software driver the GPU copy lives in the same memory, so keeping both
+/// would double the peak.
 pub fn upload_mesh(device: &wgpu::Device, mesh: &mut Mesh) -> MeshBuffers {
-    let buffer = |bytes: &[u8], usage| {
-        device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: None,
-            contents: bytes,
-            usage,
-        })
-    };
     if mesh.primitive != Primitive::Triangles {
-        return upload_stroke(mesh, |bytes| buffer(bytes, wgpu::BufferUsages::VERTEX));
+        return upload_stroke(mesh, |bytes| {
+            buffer(device, bytes, wgpu::BufferUsages::VERTEX)
+        });
     }
-    let vertex = |bytes: &[u8]| Some(buffer(bytes, wgpu::BufferUsages::VERTEX));
+    let vertex = |bytes: &[u8]| Some(buffer(device, bytes, wgpu::BufferUsages::VERTEX));
     let mut vertices: [Option<wgpu::Buffer>; VERTEX_SLOTS] = Default::default();
     vertices[0] = vertex(bytemuck::cast_slice(&std::mem::take(&mut mesh.positions)));
     vertices[1] = mesh
@@ -217,25 +219,29 @@ pub fn upload_mesh(device: &wgpu::Device, mesh: &mut Mesh) -> MeshBuffers {
     {
         *slot = vertex(bytemuck::cast_slice(&set));
     }
-    let indices = std::mem::take(&mut mesh.indices);
     MeshBuffers::Surface {
         vertices: Box::new(vertices),
-        index_count: indices.len() as u32,
-        indices: buffer(bytemuck::cast_slice(&indices), wgpu::BufferUsages::INDEX),
     }
+}
+
+/// The index buffer of one pass's part of a surface.
+pub fn upload_indices(device: &wgpu::Device, indices: &[u32]) -> wgpu::Buffer {
+    buffer(
+        device,
+        bytemuck::cast_slice(indices),
+        wgpu::BufferUsages::INDEX,
+    )
 }
 
 /// Lines and points as instances: a segment's two ends (a point twice), in index order.
 fn upload_stroke(mesh: &mut Mesh, buffer: impl Fn(&[u8]) -> wgpu::Buffer) -> MeshBuffers {
-    let per = mesh.primitive.arity();
     let (ends, colors) = stroke_instances(mesh);
     drop(std::mem::take(&mut mesh.positions));
     mesh.colors = None;
-    let instances = (std::mem::take(&mut mesh.indices).len() / per) as u32;
+    drop(std::mem::take(&mut mesh.indices));
     MeshBuffers::Stroke {
         ends: buffer(bytemuck::cast_slice(&ends)),
         colors: buffer(bytemuck::cast_slice(&colors)),
-        instances,
     }
 }
 
