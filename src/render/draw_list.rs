@@ -289,10 +289,9 @@ pub struct Material {
     /// occlusionStrength in [0, 1].
     pub occlusion_strength: f32,
     /// X3D 3.x tables 17.2/17.3: a three- or four-component texture replaces the colour
-    /// (else, and always in 4.x, the texture multiplies it: 17.2.2.3 mixTexture).
+    /// and sets aside the Color node (else, and always in 4.x, the texture multiplies
+    /// it: 17.2.2.3 mixTexture). Its alpha always multiplies 1 − transparency.
     pub texture_replaces_rgb: bool,
-    /// X3D 3.x: a two- or four-component texture's alpha replaces 1 − transparency.
-    pub texture_replaces_alpha: bool,
 }
 
 /// A texture as a material samples it: the image, and the mesh's coordinate set.

@@ -327,7 +327,7 @@ fn stage_mode(mode: u32, a1: vec4<f32>, a2: vec4<f32>, diffuse_alpha: f32) -> ve
         case 13u: { return vec4<f32>(a1.rgb + a1.a * a2.rgb, a1.a); }    // MODULATEALPHA_ADDCOLOR
         case 14u: { return vec4<f32>((1.0 - a1.a) * a2.rgb + a1.rgb, a1.a); } // MODULATEINVALPHA_ADDCOLOR
         case 15u: { return vec4<f32>((vec3<f32>(1.0) - a1.rgb) * a2.rgb + vec3<f32>(a1.a), a1.a); } // MODULATEINVCOLOR_ADDALPHA
-        case 16u: { return a2; }                                         // OFF: the stage does nothing
+        case 16u: { return a2; }                                         // OFF: see mix_texture
         case 17u: { return a1; }                                         // SELECTARG1
         case 18u: { return a2; }                                         // SELECTARG2
         case 19u: {                                                      // DOTPRODUCT3
@@ -341,7 +341,11 @@ fn stage_mode(mode: u32, a1: vec4<f32>, a2: vec4<f32>, diffuse_alpha: f32) -> ve
 // mixTexture (17.2.2.3): the main texture applied to `color`. `specular` is the specular
 // colour (the SPECULAR source).
 // X3D 3.x lets a single RGB(A) texture replace the colour; Gouraud shading (`lit`) has
-// lit with white instead and multiplies.
+// lit with white instead and multiplies. Such a texture also sets aside the Color or
+// ColorRGBA node (11.4.2, 11.4.3: "RGB or RGBA textures take precedence over colours"),
+// so its alpha modulates the material's 1 − transparency (17.2.2.3: "The Material's
+// transparency field modulates the alpha in the texture"; A = AT in Table 17.3 is the
+// transparency 0 case).
 fn mix_texture(color: vec4<f32>, specular: vec3<f32>, m: Material, samples: StageSamples, lit: bool) -> vec4<f32> {
     let count = draw.misc.w;
     if count == 0u {
@@ -349,8 +353,9 @@ fn mix_texture(color: vec4<f32>, specular: vec3<f32>, m: Material, samples: Stag
     }
     if count == 1u && draw.stages[0].x == 0u && draw.stages[0].z == 0u && draw.stages[0].w == 0u {
         let t = samples.s[0];
-        let rgb = select(color.rgb * t.rgb, t.rgb, m.extra.y != 0.0 && !lit);
-        let a = select(color.a * t.a, t.a, m.extra.z != 0.0);
+        let replaces = m.extra.y != 0.0;
+        let rgb = select(color.rgb * t.rgb, t.rgb, replaces && !lit);
+        let a = select(color.a, m.diffuse_alpha.a, replaces) * t.a;
         return vec4<f32>(rgb, a);
     }
     var current = color;
@@ -369,8 +374,10 @@ fn mix_texture(color: vec4<f32>, specular: vec3<f32>, m: Material, samples: Stag
         } else if stage.w == 2u {
             a1 = vec4<f32>(a1.a);
         }
-        let rgb = stage_mode(stage.x, a1, a2, color.a);
-        let alpha = stage_mode(stage.y, a1, a2, color.a);
+        // OFF turns the stage off: the previous stage's result passes on, whatever
+        // the stage's source names.
+        let rgb = select(stage_mode(stage.x, a1, a2, color.a), current, stage.x == 16u);
+        let alpha = select(stage_mode(stage.y, a1, a2, color.a), current, stage.y == 16u);
         current = clamp(vec4<f32>(rgb.rgb, alpha.a), vec4<f32>(0.0), vec4<f32>(1.0));
     }
     return current;

@@ -266,10 +266,10 @@ impl Walker<'_> {
         };
         if replaces {
             // 17.2.2.2 (3.x tables 17.2 and 17.3): an RGB texture replaces the diffuse
-            // colour, a texture with alpha replaces the transparency.
+            // colour (and the Color node, 11.4.2); its alpha, as every texture's,
+            // modulates 1 − transparency (17.2.2.3's text; the shader's mix_texture).
             for m in std::iter::once(&mut look.front).chain(look.back.as_mut()) {
                 m.texture_replaces_rgb = loaded.channels >= 3;
-                m.texture_replaces_alpha = loaded.channels == 2 || loaded.channels == 4;
             }
         }
         look.textures.push(TextureUse {
@@ -573,7 +573,6 @@ pub fn default_unlit() -> Material {
         normal_scale: 1.0,
         occlusion_strength: 1.0,
         texture_replaces_rgb: false,
-        texture_replaces_alpha: false,
     }
 }
 

@@ -84,7 +84,7 @@ fn gpu_material(m: &Material) -> GpuMaterial {
         extra: [
             m.occlusion_strength,
             f32::from(u8::from(m.texture_replaces_rgb)),
-            f32::from(u8::from(m.texture_replaces_alpha)),
+            0.0,
             0.0,
         ],
     }
