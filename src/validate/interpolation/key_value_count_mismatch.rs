@@ -37,15 +37,20 @@ crate::declare_rule! {
     /// ```
     ///
     /// ## Clause
-    /// 19775-1 19.3.1 X3DInterpolatorNode ("one complete set of values for each key"),
-    /// 19.4.1 ColorInterpolator, 19.4.6 OrientationInterpolator and 19.4.7
-    /// PositionInterpolator ("shall contain exactly as many values as in the key field"),
-    /// 19.4.2 CoordinateInterpolator and 19.4.5 NormalInterpolator ("shall be an integer
-    /// multiple of the number of key frames"), 19.4.10 SplinePositionInterpolator ("The
-    /// keyValue, keyVelocity, and key fields shall each have the same number of values").
-    /// Reading: the spline clauses' "same number" is not applied to an empty keyVelocity,
-    /// which is the default and which 19.2.4 fills in from the key values. No keys with
-    /// values is reported (no integer multiple of zero is non-zero).
+    /// 19775-1 19.3.1 X3DInterpolatorNode ("the keyValue field contains values for the
+    /// target field, one complete set of values for each key"); 19.4.6
+    /// OrientationInterpolator ("shall contain exactly as many rotations as there are key
+    /// frames in the key field") and 19.4.7 PositionInterpolator ("shall contain exactly
+    /// as many values as in the key field"); 19.4.2 CoordinateInterpolator ("The number of
+    /// coordinates in the keyValue field shall be an integer multiple of the number of key
+    /// frames in the key field"); 19.4.10 SplinePositionInterpolator ("The keyValue,
+    /// keyVelocity, and key fields shall each have the same number of values").
+    /// Readings: the other single-output interpolators are held to 19.3.1's one set per
+    /// key, which for them is one value; NormalInterpolator and CoordinateInterpolator2D,
+    /// which output arrays like CoordinateInterpolator, to its integer multiple. The
+    /// spline clauses' "same number" is not applied to an empty keyVelocity, the default,
+    /// from which 19.2.4 computes the velocities. Values with no keys are reported (no
+    /// integer multiple of zero is non-zero).
     pub static KEY_VALUE_COUNT_MISMATCH = {
         severity: Error,
         level: Standard,
@@ -89,7 +94,11 @@ fn check(ctx: &mut Ctx) {
         let type_name = node.type_name();
         if let Some((values, span)) = tuples(ctx, id, "keyValue") {
             let wrong = if ARRAY_OUTPUT.contains(&type_name) {
-                if keys == 0 { values != 0 } else { values % keys != 0 }
+                if keys == 0 {
+                    values != 0
+                } else {
+                    values % keys != 0
+                }
             } else {
                 values != keys
             };

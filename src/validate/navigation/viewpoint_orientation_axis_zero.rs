@@ -44,7 +44,7 @@ crate::declare_rule! {
 fn check(ctx: &mut Ctx) {
     let mut found = Vec::new();
     for (id, node) in ctx.doc.iter() {
-        if !node.is_a("X3DViewpointNode") || node.is_connected("orientation") {
+        if !is_viewpoint(node) || node.is_connected("orientation") {
             continue;
         }
         let Some(entry) = node.entry("orientation") else {
@@ -68,4 +68,14 @@ fn check(ctx: &mut Ctx) {
             .help("give the axis the view turns about, e.g. `0 1 0` to turn left or right; `0 0 1 0` (the default) for no rotation"),
         );
     }
+}
+
+/// An X3DViewpointNode. The 3.0 and 3.1 object models list no such type among
+/// Viewpoint's ancestors, so the node types are named as well.
+fn is_viewpoint(node: &crate::model::Node) -> bool {
+    node.is_a("X3DViewpointNode")
+        || matches!(
+            node.type_name(),
+            "Viewpoint" | "OrthoViewpoint" | "GeoViewpoint"
+        )
 }
