@@ -5,7 +5,9 @@
 pub mod document;
 pub mod events;
 mod instances;
+pub mod interpolation;
 pub mod lighting;
+pub mod navigation;
 pub mod networking;
 pub mod numbers;
 pub mod prototypes;

@@ -5,8 +5,8 @@
 use std::sync::LazyLock;
 
 use super::{
-    document, events, lighting, networking, prototypes, rendering, scripting, shaders, shape,
-    texturing, Check, Rule,
+    document, events, interpolation, lighting, navigation, networking, prototypes, rendering,
+    scripting, shaders, shape, texturing, Check, Rule,
 };
 
 /// Every rule with its check function (None for those reported while reading).
@@ -22,6 +22,8 @@ pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {
         shaders::RULES,
         networking::RULES,
         scripting::RULES,
+        interpolation::RULES,
+        navigation::RULES,
     ]
     .concat()
 });
