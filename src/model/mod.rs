@@ -11,6 +11,7 @@ mod header;
 mod instantiate;
 pub mod rules;
 pub mod texture_mapping;
+pub mod units;
 mod value;
 
 pub use crate::diagnostic::{NodeId, Span};

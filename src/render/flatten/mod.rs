@@ -24,7 +24,7 @@ use glam::{DMat4, DVec3, DVec4};
 use super::draw_list::{DrawList, Light, Viewport, MAX_CLIP_PLANES};
 use super::fields::{boolean, floats};
 use crate::model::bounds::{local_transform, Bounds};
-use crate::model::{Document, NodeId};
+use crate::model::{units, Document, NodeId};
 use crate::validate::texturing::data_url;
 use place::Pending;
 
@@ -42,6 +42,12 @@ use crate::limits::{
 pub fn primitive_budget(width: u32, height: u32) -> usize {
     (u64::from(width) * u64::from(height) * RENDER_PRIMITIVES_PER_PIXEL)
         .clamp(MIN_RENDER_PRIMITIVES, MAX_RENDER_PRIMITIVES) as usize
+}
+
+/// The transformation at the root of a file's scene: its UNIT length factor as a uniform
+/// scale (see [`crate::model::units`]; its angles are converted as values).
+fn scene_root(doc: &Document) -> DMat4 {
+    DMat4::from_scale(DVec3::splat(doc.units().length))
 }
 
 /// Something in the scene that is not drawn, or drawn approximately.
@@ -160,6 +166,8 @@ struct Context<'d> {
 }
 
 pub fn flatten(doc: &Document, options: &Options) -> Result<Flattened, String> {
+    let converted = units::in_base_units(doc);
+    let doc = converted.as_ref().unwrap_or(doc);
     let mut walker = Walker {
         options,
         notes: Vec::new(),
@@ -527,10 +535,13 @@ impl Walker<'_> {
                 }
             };
             let url = data_url::shown(url);
-            let Some(inlined) = crate::parse::read(&bytes).document else {
+            let Some(mut inlined) = crate::parse::read(&bytes).document else {
                 reasons.push(format!("{url}: not an X3D document"));
                 continue;
             };
+            if let Some(converted) = units::in_base_units(&inlined) {
+                inlined = converted;
+            }
             let serial = self.documents;
             self.documents += 1;
             self.inline_stack.push(key);
@@ -540,6 +551,7 @@ impl Walker<'_> {
                 base: &base,
             };
             let roots: Vec<NodeId> = inlined.scene.iter().map(|c| c.node).collect();
+            let world = world * scene_root(&inlined);
             self.walk_children(inner, &roots, world, scope, depth);
             self.inline_stack.pop();
             return;
