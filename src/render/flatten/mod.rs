@@ -9,6 +9,7 @@ mod appearance;
 mod camera;
 mod environment;
 mod fill;
+mod hanim;
 mod layers;
 mod layout;
 mod lights;
@@ -394,6 +395,8 @@ impl Walker<'_> {
                 self.walk_children(context, &kids("children"), turned, scope, depth);
             }
             "Inline" => self.inline(context, id, world, scope, depth),
+            "HAnimHumanoid" => self.humanoid(context, id, world, scope, depth),
+            "HAnimJoint" => self.joint(context, id, world, scope, depth),
             "Shape" => self.shape(context, id, world, scope),
             _ if def.is_a("X3DViewportNode") => {
                 let inner = self.viewport_scope(doc, id, scope);
