@@ -14,6 +14,7 @@ mod layers;
 mod layout;
 mod lights;
 mod place;
+mod screen_group;
 mod shape;
 mod text;
 
@@ -403,14 +404,7 @@ impl Walker<'_> {
                 self.walk_children(context, &kids("children"), world, &inner, depth);
             }
             "LayoutGroup" => self.layout_group(context, id, world, scope, depth),
-            "ScreenGroup" => {
-                self.note(
-                    context,
-                    id,
-                    "ScreenGroup: drawn as a Group, not scaled to pixels (36.4.5)".into(),
-                );
-                self.walk_children(context, &kids("children"), world, scope, depth);
-            }
+            "ScreenGroup" => self.screen_group(context, id, world, scope, depth),
             "LayerSet" => self.note(
                 context,
                 id,
