@@ -165,7 +165,7 @@ fontStyle FontStyle { style "BOLDITALIC" } } } }"#;
             "{name}"
         );
         let transform = doc.nodes_of_type("Transform").next().expect("a Transform");
-        assert!(doc.value_of(transform, "style").is_none(), "{name}");
+        assert!(doc.node(transform).entry("style").is_none(), "{name}");
         assert!(
             parsed.diagnostics.is_empty(),
             "{name}: {:?}",

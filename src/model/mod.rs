@@ -67,7 +67,7 @@ impl NodeKind {
     /// The schema type, for a known node.
     pub fn def(&self) -> Option<&'static NodeDef> {
         match self {
-            NodeKind::Known { def, .. } => Some(def),
+            NodeKind::Known { def, .. } => Some(*def),
             _ => None,
         }
     }

@@ -113,9 +113,9 @@ pub fn in_base_units(doc: &Document) -> Option<Document> {
                 }
                 FieldType::SFFloat | FieldType::MFFloat => {
                     if LENGTH_VALUES.contains(&(type_name, name)) {
-                        scale(values, units.length);
+                        scale(values.as_mut_slice(), units.length);
                     } else if ANGLE_FIELDS.contains(&name) {
-                        scale(values, units.angle);
+                        scale(values.as_mut_slice(), units.angle);
                     }
                 }
                 _ => {}

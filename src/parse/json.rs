@@ -45,7 +45,7 @@ use crate::model::builder::{Limit, Parent};
 use crate::model::rules::FIELD_DUPLICATE;
 use crate::model::*;
 use crate::parse::KeepValues;
-use crate::schema::{AccessType, FieldType, Scalar, Version};
+use crate::schema::{AccessType, FieldType, NodeDef, Scalar, Version};
 
 /// Reads an X3D JSON document.
 pub fn read(source: &[u8]) -> Parsed {

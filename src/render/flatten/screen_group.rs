@@ -29,9 +29,9 @@ impl Walker<'_> {
     ) {
         let (_, rotation, origin) = world.to_scale_rotation_translation();
         let (width, height) = self.layer.pixels;
-        let pixel = match (self.layer.layout, &self.viewpoint) {
+        let pixel = match (self.layer.layout, self.viewpoint.clone()) {
             (Some(surface), _) => Some(surface.unit_per_pixel),
-            (None, Some(viewpoint)) => pixel_size(viewpoint, origin, width, height),
+            (None, Some(viewpoint)) => pixel_size(&viewpoint, origin, width, height),
             (None, None) => {
                 self.note(
                     context,
