@@ -134,3 +134,42 @@ fn the_real_pairs_give_one_model() {
     let problems = compare("Fox", ("xml", &xml), ("classic", &classic));
     assert!(problems.is_empty(), "{}", problems.join("\n"));
 }
+
+/// FontStyle's `style` field (15.4.1) is a field in every encoding, where the XML and JSON
+/// readers drop the HTML attribute `style` of other nodes (19776-1, -5).
+#[test]
+fn font_style_style_arrives_from_every_encoding() {
+    let xml = br#"<X3D profile='Immersive' version='4.0'><Scene>
+<Transform style='color: red'><Shape><Text string='"a"'>
+<FontStyle style='BOLDITALIC'/></Text></Shape></Transform></Scene></X3D>"#;
+    let json = br#"{"X3D": {"@profile": "Immersive", "@version": "4.0", "Scene": {"-children": [
+{"Transform": {"@style": "color: red", "-children": [{"Shape": {"-geometry": {"Text": {
+"@string": ["a"], "-fontStyle": {"FontStyle": {"@style": "BOLDITALIC"}}}}}}]}}]}}}"#;
+    let classic = br#"#X3D V4.0 utf8
+PROFILE Immersive
+Transform { children Shape { geometry Text { string "a"
+fontStyle FontStyle { style "BOLDITALIC" } } } }"#;
+    for (name, source) in [
+        ("XML", &xml[..]),
+        ("JSON", &json[..]),
+        ("ClassicVRML", &classic[..]),
+    ] {
+        let parsed = x3dcheck::parse::read(source);
+        let doc = parsed
+            .document
+            .unwrap_or_else(|| panic!("{name} reads: {:?}", parsed.diagnostics));
+        let font_style = doc.nodes_of_type("FontStyle").next().expect("a FontStyle");
+        assert_eq!(
+            doc.string_of(font_style, "style").as_deref(),
+            Some("BOLDITALIC"),
+            "{name}"
+        );
+        let transform = doc.nodes_of_type("Transform").next().expect("a Transform");
+        assert!(doc.node(transform).entry("style").is_none(), "{name}");
+        assert!(
+            parsed.diagnostics.is_empty(),
+            "{name}: {:?}",
+            parsed.diagnostics
+        );
+    }
+}

@@ -665,7 +665,8 @@ fn what_layering_and_layout_do_not_draw_is_noted() {
     for expected in [
         "renderer: Layer is drawn only in LayerSet.layers (35.2.3)",
         "renderer: LayoutGroup outside a LayoutLayer: drawn as a Group, its Layout is not applied (36.2.1)",
-        "renderer: ScreenGroup: drawn as a Group, not scaled to pixels (36.4.5)",
+        "renderer: ScreenGroup without a Viewpoint: sized in pixels as seen from the default \
+         Viewpoint (0 0 10), not from the framing camera (36.4.5)",
         "renderer: only one LayerSet is allowed (35.2.2): this one is not drawn",
         "renderer: LayoutLayer: its Viewpoint is not used; the layer is drawn in its layout's 2D coordinates (36.2.1)",
     ] {

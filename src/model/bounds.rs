@@ -265,11 +265,15 @@ pub fn visit_scene(
         .all(|c| walker.visit(c.node, &Affine::IDENTITY, 0, &mut visit))
 }
 
-/// The transformation a node applies to its children: Transform and CADPart fields, the
-/// identity for every other node. None when a value is not finite.
+/// The transformation a node applies to its children: the Transform fields of Transform,
+/// CADPart and the H-Anim nodes that have them (HAnimHumanoid, HAnimJoint, HAnimSite,
+/// 26.3), the identity for every other node. None when a value is not finite.
 pub fn local_transform(doc: &Document, node: NodeId) -> Option<Affine> {
     let name = doc.node(node).type_name();
-    if name != "Transform" && name != "CADPart" {
+    if !matches!(
+        name,
+        "Transform" | "CADPart" | "HAnimHumanoid" | "HAnimJoint" | "HAnimSite"
+    ) {
         return Some(Affine::IDENTITY);
     }
     let vec3 = |field: &str, default: [f64; 3]| -> [f64; 3] {

@@ -11,6 +11,7 @@ mod header;
 mod instantiate;
 pub mod rules;
 pub mod texture_mapping;
+pub mod units;
 mod value;
 
 pub use crate::diagnostic::{NodeId, Span};
@@ -60,6 +61,24 @@ pub enum NodeKind {
     ProtoInstance { name: String, proto: Option<usize> },
     /// A name no version of the schema knows.
     Unknown { name: String },
+}
+
+impl NodeKind {
+    /// The schema type, for a known node.
+    pub fn def(&self) -> Option<&'static NodeDef> {
+        match self {
+            NodeKind::Known { def, .. } => Some(*def),
+            _ => None,
+        }
+    }
+}
+
+/// Whether an XML attribute or JSON `@` member of this name on a node of type `def` is one
+/// of the HTML attributes any X3D 4 element may carry (`class`, `id`, `style`; 19776-1 and
+/// -5) and no field. `style` is also a field, of FontStyle and ScreenFontStyle (15.4.1,
+/// 36.4.4): there it is the field.
+pub fn is_html_attribute(def: Option<&NodeDef>, name: &str) -> bool {
+    matches!(name, "class" | "id" | "style") && def.is_none_or(|d| d.field(name).is_none())
 }
 
 /// Where a node was defined: the Scene, a ProtoBody, a ProtoInterface field's initial
@@ -164,10 +183,7 @@ pub struct Instantiation {
 
 impl Node {
     pub fn def(&self) -> Option<&'static NodeDef> {
-        match self.kind {
-            NodeKind::Known { def, .. } => Some(def),
-            _ => None,
-        }
+        self.kind.def()
     }
 
     /// The type name as the document wrote it.

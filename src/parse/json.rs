@@ -45,7 +45,7 @@ use crate::model::builder::{Limit, Parent};
 use crate::model::rules::FIELD_DUPLICATE;
 use crate::model::*;
 use crate::parse::KeepValues;
-use crate::schema::{AccessType, FieldType, Scalar, Version};
+use crate::schema::{AccessType, FieldType, NodeDef, Scalar, Version};
 
 /// Reads an X3D JSON document.
 pub fn read(source: &[u8]) -> Parsed {
@@ -264,16 +264,7 @@ struct JsonReader<'t, 's> {
 fn is_node_statement_key(key: &str) -> bool {
     matches!(
         key,
-        "@DEF"
-            | "@USE"
-            | "@containerField"
-            | "@class"
-            | "@id"
-            | "@style"
-            | "IS"
-            | "field"
-            | "fieldValue"
-            | "#sourceCode"
+        "@DEF" | "@USE" | "@containerField" | "IS" | "field" | "fieldValue" | "#sourceCode"
     )
 }
 
@@ -893,7 +884,6 @@ impl<'t, 's> JsonReader<'t, 's> {
             );
             return;
         }
-        self.duplicate_keys(value, |k| !k.starts_with('@') || is_node_statement_key(k));
         let is_proto_instance = name == "ProtoInstance";
         let kind = if is_proto_instance {
             let proto_name = t
@@ -908,12 +898,20 @@ impl<'t, 's> JsonReader<'t, 's> {
         } else {
             self.builder.node_kind(&name)
         };
+        let def = kind.def();
+        let html_attribute = |k: &str| {
+            k.strip_prefix('@')
+                .is_some_and(|a| is_html_attribute(def, a))
+        };
+        self.duplicate_keys(value, |k| {
+            !k.starts_with('@') || is_node_statement_key(k) || html_attribute(k)
+        });
 
         if let Some((use_key, use_value)) = t.get(value, "@USE") {
             let Some(use_name) = self.string_member(use_key, use_value) else {
                 return;
             };
-            self.use_extras(value, use_key, &use_name, is_proto_instance);
+            self.use_extras(value, use_key, &use_name, is_proto_instance, def);
             let element_type = (!is_proto_instance).then_some(name.as_ref());
             self.builder
                 .use_node(&use_name, element_type, node_span, ctx.parent());
@@ -934,7 +932,8 @@ impl<'t, 's> JsonReader<'t, 's> {
                     }
                 }
                 // A repeated `@DEF` is reported as a duplicate key; the first one names.
-                "@DEF" | "@containerField" | "@class" | "@id" | "@style" => {}
+                "@DEF" | "@containerField" => {}
+                m if html_attribute(m) => {}
                 "@name" if is_proto_instance => {
                     self.string_member(k, v);
                 }
@@ -952,7 +951,7 @@ impl<'t, 's> JsonReader<'t, 's> {
     }
 
     /// Reports what a USE node object holds besides `@USE`, as the XML reader does: its
-    /// fields in one diagnostic (`@containerField`, `@class`, `@id`, `@style` and a
+    /// fields in one diagnostic (`@containerField`, the HTML attributes `@class`, `@id`, `@style` and a
     /// ProtoInstance's `@name` allowed), then each node or statement it holds (comments
     /// allowed).
     fn use_extras(
@@ -961,6 +960,7 @@ impl<'t, 's> JsonReader<'t, 's> {
         use_key: usize,
         use_name: &Named,
         is_proto_instance: bool,
+        def: Option<&NodeDef>,
     ) {
         let t = self.t;
         let mut fields: Vec<(Cow<'s, str>, Span)> = Vec::new();
@@ -992,7 +992,10 @@ impl<'t, 's> JsonReader<'t, 's> {
             }
             let member = t.str(k);
             match member.as_ref() {
-                "@containerField" | "@class" | "@id" | "@style" => {}
+                "@containerField" => {}
+                m if m
+                    .strip_prefix('@')
+                    .is_some_and(|a| is_html_attribute(def, a)) => {}
                 "@name" if is_proto_instance => {}
                 m if m.starts_with('@') => fields.push((member, span(t.span(k)))),
                 m if m.starts_with('-') => nodes_of(v, &mut children),

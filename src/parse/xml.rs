@@ -773,7 +773,8 @@ impl<'s> XmlReader<'s> {
             };
             let extras: Vec<&Attr> = attrs
                 .iter()
-                .filter(|a| !matches!(a.name, "USE" | "containerField" | "class" | "id" | "style"))
+                .filter(|a| !matches!(a.name, "USE" | "containerField"))
+                .filter(|a| !is_html_attribute(kind.def(), a.name))
                 .filter(|a| !(name == "ProtoInstance" && a.name == "name"))
                 .collect();
             if let Some(first) = extras.first() {
@@ -797,6 +798,7 @@ impl<'s> XmlReader<'s> {
             return if empty { Frame::Other } else { Frame::Use };
         }
 
+        let def = kind.def();
         let Some(id) = self.builder.begin_node(kind, name_span, parent) else {
             return Frame::Other;
         };
@@ -809,7 +811,8 @@ impl<'s> XmlReader<'s> {
                         span: attr.value_span,
                     },
                 ),
-                "containerField" | "class" | "id" | "style" => {}
+                "containerField" => {}
+                _ if is_html_attribute(def, attr.name) => {}
                 "name" if name == "ProtoInstance" => {}
                 _ if attr.name.starts_with("xmlns") => {}
                 _ => self.attribute_field(id, attr),

@@ -39,7 +39,7 @@ pub fn find_viewpoint(
     let mut stack: Vec<(NodeId, DMat4)> = roots
         .iter()
         .rev()
-        .map(|&id| (id, DMat4::IDENTITY))
+        .map(|&id| (id, super::scene_root(doc)))
         .collect();
     let mut visited = 0;
     while let Some((id, world)) = stack.pop() {
@@ -79,7 +79,7 @@ pub fn named_anywhere(doc: &Document, name: &str) -> Result<ViewpointFound, Stri
         .find(|(_, node)| {
             is_viewpoint(node) && node.def_name.as_ref().is_some_and(|d| d.text == name)
         })
-        .map(|(id, _)| viewpoint(doc, id, DMat4::IDENTITY))
+        .map(|(id, _)| viewpoint(doc, id, super::scene_root(doc)))
         .ok_or_else(|| format!("--camera {name}: the scene has no Viewpoint DEF'd `{name}`"))
 }
 

@@ -227,6 +227,7 @@ impl Walker<'_> {
             }
             _ => self.viewpoint = viewpoint,
         }
+        let world = world * super::scene_root(doc);
         self.walk_children(context, tree, world, &scope, 0);
         self.finish_layer();
     }

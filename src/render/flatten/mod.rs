@@ -9,10 +9,12 @@ mod appearance;
 mod camera;
 mod environment;
 mod fill;
+mod hanim;
 mod layers;
 mod layout;
 mod lights;
 mod place;
+mod screen_group;
 mod shape;
 mod text;
 
@@ -24,7 +26,7 @@ use glam::{DMat4, DVec3, DVec4};
 use super::draw_list::{DrawList, Light, Viewport, MAX_CLIP_PLANES};
 use super::fields::{boolean, floats};
 use crate::model::bounds::{local_transform, Bounds};
-use crate::model::{Document, NodeId};
+use crate::model::{units, Document, NodeId};
 use crate::validate::texturing::data_url;
 use place::Pending;
 
@@ -42,6 +44,12 @@ use crate::limits::{
 pub fn primitive_budget(width: u32, height: u32) -> usize {
     (u64::from(width) * u64::from(height) * RENDER_PRIMITIVES_PER_PIXEL)
         .clamp(MIN_RENDER_PRIMITIVES, MAX_RENDER_PRIMITIVES) as usize
+}
+
+/// The transformation at the root of a file's scene: its UNIT length factor as a uniform
+/// scale (see [`crate::model::units`]; its angles are converted as values).
+fn scene_root(doc: &Document) -> DMat4 {
+    DMat4::from_scale(DVec3::splat(doc.units().length))
 }
 
 /// Something in the scene that is not drawn, or drawn approximately.
@@ -160,6 +168,8 @@ struct Context<'d> {
 }
 
 pub fn flatten(doc: &Document, options: &Options) -> Result<Flattened, String> {
+    let converted = units::in_base_units(doc);
+    let doc = converted.as_ref().unwrap_or(doc);
     let mut walker = Walker {
         options,
         notes: Vec::new(),
@@ -386,20 +396,15 @@ impl Walker<'_> {
                 self.walk_children(context, &kids("children"), turned, scope, depth);
             }
             "Inline" => self.inline(context, id, world, scope, depth),
+            "HAnimHumanoid" => self.humanoid(context, id, world, scope, depth),
+            "HAnimJoint" => self.joint(context, id, world, scope, depth),
             "Shape" => self.shape(context, id, world, scope),
             _ if def.is_a("X3DViewportNode") => {
                 let inner = self.viewport_scope(doc, id, scope);
                 self.walk_children(context, &kids("children"), world, &inner, depth);
             }
             "LayoutGroup" => self.layout_group(context, id, world, scope, depth),
-            "ScreenGroup" => {
-                self.note(
-                    context,
-                    id,
-                    "ScreenGroup: drawn as a Group, not scaled to pixels (36.4.5)".into(),
-                );
-                self.walk_children(context, &kids("children"), world, scope, depth);
-            }
+            "ScreenGroup" => self.screen_group(context, id, world, scope, depth),
             "LayerSet" => self.note(
                 context,
                 id,
@@ -527,10 +532,13 @@ impl Walker<'_> {
                 }
             };
             let url = data_url::shown(url);
-            let Some(inlined) = crate::parse::read(&bytes).document else {
+            let Some(mut inlined) = crate::parse::read(&bytes).document else {
                 reasons.push(format!("{url}: not an X3D document"));
                 continue;
             };
+            if let Some(converted) = units::in_base_units(&inlined) {
+                inlined = converted;
+            }
             let serial = self.documents;
             self.documents += 1;
             self.inline_stack.push(key);
@@ -540,6 +548,7 @@ impl Walker<'_> {
                 base: &base,
             };
             let roots: Vec<NodeId> = inlined.scene.iter().map(|c| c.node).collect();
+            let world = world * scene_root(&inlined);
             self.walk_children(inner, &roots, world, scope, depth);
             self.inline_stack.pop();
             return;
