@@ -13,7 +13,7 @@ mod scene;
 
 mod client;
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::time::{Duration, Instant};
 
 use client::Client;
@@ -89,6 +89,6 @@ fn measure(binary: &Path, dir: &Path, scale: f64, edits: usize) {
     );
 }
 
-fn file_uri(path: &PathBuf) -> String {
+fn file_uri(path: &Path) -> String {
     format!("file://{}", path.display())
 }

@@ -38,12 +38,13 @@ pub fn target(doc: &Document, offset: usize) -> Option<Target<'_>> {
     let written = doc.written_nodes();
     // The innermost node whose span holds the offset: nodes are in the order their
     // elements start, so the last one that holds it.
-    let node = written.iter().rev().find(|n| contains(n.span, offset))?;
-    if contains(node.name_span, offset) {
-        return Some(Target::NodeName(node));
-    }
-    if let Some(entry) = node.fields.iter().find(|e| contains(e.name_span, offset)) {
-        return Some(Target::Field(node, entry));
+    if let Some(node) = written.iter().rev().find(|n| contains(n.span, offset)) {
+        if contains(node.name_span, offset) {
+            return Some(Target::NodeName(node));
+        }
+        if let Some(entry) = node.fields.iter().find(|e| contains(e.name_span, offset)) {
+            return Some(Target::Field(node, entry));
+        }
     }
     // A USE is a reference among a node's children (or the scene's, a body's).
     let uses = |refs: &[ChildRef]| {
