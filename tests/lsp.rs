@@ -2,9 +2,9 @@
 //! framing), as an editor drives it. Every wait has a timeout (the client's), so a server
 //! that stops answering fails the test rather than hanging it.
 
-mod common;
 #[path = "../examples/lsp-latency/client.rs"]
 mod client;
+mod common;
 
 use std::path::Path;
 
@@ -106,11 +106,20 @@ fn a_session_from_initialize_to_exit() {
         .unwrap();
     assert_eq!(unknown["severity"], 1);
     assert_eq!(unknown["source"], "x3dcheck");
-    assert_eq!(unknown["range"]["start"], position(SCENE, "diffusecolor", 0));
+    assert_eq!(
+        unknown["range"]["start"],
+        position(SCENE, "diffusecolor", 0)
+    );
     assert_eq!(unknown["range"]["end"], position(SCENE, "diffusecolor", 12));
-    assert!(unknown["message"].as_str().unwrap().contains("diffuseColor"));
+    assert!(unknown["message"]
+        .as_str()
+        .unwrap()
+        .contains("diffuseColor"));
     let href = unknown["codeDescription"]["href"].as_str().unwrap();
-    assert!(href.starts_with("file://") && href.ends_with("FIELD_UNKNOWN.md"), "{href}");
+    assert!(
+        href.starts_with("file://") && href.ends_with("FIELD_UNKNOWN.md"),
+        "{href}"
+    );
     let duplicate = diagnostics
         .iter()
         .find(|d| d["code"] == "DEF_DUPLICATE")
@@ -142,15 +151,30 @@ fn a_session_from_initialize_to_exit() {
             .to_string()
     };
     let on_node = hover(&mut client, "Material DEF", 2);
-    assert!(on_node.contains("**Material**") && on_node.contains("component Shape"), "{on_node}");
+    assert!(
+        on_node.contains("**Material**") && on_node.contains("component Shape"),
+        "{on_node}"
+    );
     assert!(on_node.contains("12.4."), "the clause: {on_node}");
     let on_field = hover(&mut client, "diffuseColor", 3);
-    assert!(on_field.contains("SFColor") && on_field.contains("inputOutput"), "{on_field}");
-    assert!(on_field.contains("default `0.8 0.8 0.8`") && on_field.contains("range [0"), "{on_field}");
+    assert!(
+        on_field.contains("SFColor") && on_field.contains("inputOutput"),
+        "{on_field}"
+    );
+    assert!(
+        on_field.contains("default `0.8 0.8 0.8`") && on_field.contains("range [0"),
+        "{on_field}"
+    );
     let on_use = hover(&mut client, "USE='Ball'", 6);
-    assert!(on_use.contains("DEF Ball") && on_use.contains("line 5"), "{on_use}");
+    assert!(
+        on_use.contains("DEF Ball") && on_use.contains("line 5"),
+        "{on_use}"
+    );
     let on_finding = hover(&mut client, "<Transform DEF='Mat'", 17);
-    assert!(on_finding.contains("DEF_DUPLICATE") && on_finding.contains("## What it does"), "{on_finding}");
+    assert!(
+        on_finding.contains("DEF_DUPLICATE") && on_finding.contains("## What it does"),
+        "{on_finding}"
+    );
 
     // Completion: node names the field accepts, attributes, enumerations, DEF names.
     let labels = |client: &mut Client, text: &str, version: i64| {
@@ -173,12 +197,22 @@ fn a_session_from_initialize_to_exit() {
             .collect::<Vec<_>>()
     };
     let in_shape = labels(&mut client, &fixed.replace("<Sphere/>", "<Sph|"), 3);
-    assert!(in_shape.contains(&"Sphere".into()) && !in_shape.contains(&"Transform".into()), "{in_shape:?}");
+    assert!(
+        in_shape.contains(&"Sphere".into()) && !in_shape.contains(&"Transform".into()),
+        "{in_shape:?}"
+    );
     let attributes = labels(&mut client, &fixed.replace("<Sphere/>", "<Sphere r|/>"), 4);
     assert!(attributes.contains(&"radius".into()), "{attributes:?}");
     let uses = labels(&mut client, &fixed.replace("USE='Ball'", "USE='|'"), 5);
-    assert!(uses.contains(&"Ball".into()) && uses.contains(&"Clock".into()), "{uses:?}");
-    let fog = labels(&mut client, &fixed.replace("<Sphere/>", "<Fog fogType='|'/>"), 6);
+    assert!(
+        uses.contains(&"Ball".into()) && uses.contains(&"Clock".into()),
+        "{uses:?}"
+    );
+    let fog = labels(
+        &mut client,
+        &fixed.replace("<Sphere/>", "<Fog fogType='|'/>"),
+        6,
+    );
     assert!(fog.contains(&"EXPONENTIAL".into()), "{fog:?}");
     client.notify(
         "textDocument/didChange",
@@ -194,9 +228,18 @@ fn a_session_from_initialize_to_exit() {
         )["range"]["start"]
             .clone()
     };
-    assert_eq!(definition(&mut client, "USE='Ball'", 6), position(&fixed, "Ball'>", 0));
-    assert_eq!(definition(&mut client, "fromNode='Clock'", 11), position(&fixed, "Clock'/>", 0));
-    assert_eq!(definition(&mut client, "toNode='Move'", 9), position(&fixed, "Move' key", 0));
+    assert_eq!(
+        definition(&mut client, "USE='Ball'", 6),
+        position(&fixed, "Ball'>", 0)
+    );
+    assert_eq!(
+        definition(&mut client, "fromNode='Clock'", 11),
+        position(&fixed, "Clock'/>", 0)
+    );
+    assert_eq!(
+        definition(&mut client, "toNode='Move'", 9),
+        position(&fixed, "Move' key", 0)
+    );
 
     // Document symbols: the DEF tree.
     let symbols = client.request("textDocument/documentSymbol", json!({"textDocument": td}));
@@ -287,8 +330,13 @@ fn the_x3dcheck_toml_of_the_file_applies_and_other_encodings_are_checked() {
     assert_eq!(out_of_range["range"]["start"]["line"], 2);
 
     // Closing a document clears its diagnostics.
-    client.notify("textDocument/didClose", json!({"textDocument": {"uri": classic_uri}}));
-    let cleared = client.wait_for("textDocument/publishDiagnostics", |p| p["uri"] == classic_uri.as_str());
+    client.notify(
+        "textDocument/didClose",
+        json!({"textDocument": {"uri": classic_uri}}),
+    );
+    let cleared = client.wait_for("textDocument/publishDiagnostics", |p| {
+        p["uri"] == classic_uri.as_str()
+    });
     assert_eq!(cleared["diagnostics"], json!([]));
     assert!(client.shutdown().success());
 }

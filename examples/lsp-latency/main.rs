@@ -64,8 +64,9 @@ fn measure(binary: &Path, dir: &Path, scale: f64, edits: usize) {
             "textDocument/didChange",
             json!({"textDocument": {"uri": uri, "version": version}, "contentChanges": [{"text": edited}]}),
         );
-        let published =
-            client.wait_for("textDocument/publishDiagnostics", |p| p["version"] == version);
+        let published = client.wait_for("textDocument/publishDiagnostics", |p| {
+            p["version"] == version
+        });
         times.push(started.elapsed());
         let out_of_range = published["diagnostics"]
             .as_array()

@@ -20,10 +20,9 @@ pub struct Candidate {
 impl Candidate {
     pub fn item(self, edit_range: lsp_types::Range) -> CompletionItem {
         CompletionItem {
-            text_edit: Some(lsp_types::CompletionTextEdit::Edit(lsp_types::TextEdit::new(
-                edit_range,
-                self.label.clone(),
-            ))),
+            text_edit: Some(lsp_types::CompletionTextEdit::Edit(
+                lsp_types::TextEdit::new(edit_range, self.label.clone()),
+            )),
             label: self.label,
             kind: Some(self.kind),
             detail: self.detail,
@@ -80,7 +79,10 @@ pub fn complete(text: &[u8], offset: usize, analysis: Option<&Analysis>) -> Vec<
                 .map(|((_, name), node)| Candidate {
                     label: name.clone(),
                     kind: CompletionItemKind::REFERENCE,
-                    detail: doc.nodes.get(node.index()).map(|n| n.type_name().to_string()),
+                    detail: doc
+                        .nodes
+                        .get(node.index())
+                        .map(|n| n.type_name().to_string()),
                     doc: None,
                 })
                 .collect();
@@ -221,7 +223,10 @@ mod tests {
         let attrs = labels("<X3D><Scene><Material diffuseColor='1 0 0' |");
         assert!(attrs.contains(&"shininess".to_string()));
         assert!(attrs.contains(&"DEF".to_string()));
-        assert!(!attrs.contains(&"diffuseColor".to_string()), "written already");
+        assert!(
+            !attrs.contains(&"diffuseColor".to_string()),
+            "written already"
+        );
         assert!(!attrs.contains(&"metadata".to_string()), "a node field");
         let json = labels(r#"{"X3D": {"Scene": {"-children": [{"Shape": {"|"#);
         assert!(json.contains(&"-geometry".to_string()), "{json:?}");

@@ -315,11 +315,15 @@ fn classic(text: &[u8]) -> Option<Context> {
                 i = j;
             }
             b'{' => {
-                frames.push(ClassicFrame::Node(words.last().cloned().unwrap_or_default()));
+                frames.push(ClassicFrame::Node(
+                    words.last().cloned().unwrap_or_default(),
+                ));
                 words.clear();
             }
             b'[' => {
-                frames.push(ClassicFrame::List(words.last().cloned().unwrap_or_default()));
+                frames.push(ClassicFrame::List(
+                    words.last().cloned().unwrap_or_default(),
+                ));
                 words.clear();
             }
             b'}' | b']' => {
@@ -415,7 +419,10 @@ mod tests {
             node_name(Some("Scene"), None)
         );
         assert_eq!(
-            at_cursor(Syntax::Xml, &format!("{head}<Material diffuseColor='1 0 0' s|")),
+            at_cursor(
+                Syntax::Xml,
+                &format!("{head}<Material diffuseColor='1 0 0' s|")
+            ),
             Some(Context::FieldName {
                 node: "Material".into(),
                 written: vec!["diffuseColor".into()]
@@ -443,7 +450,10 @@ mod tests {
             node_name(Some("Transform"), Some("children"))
         );
         assert_eq!(
-            at_cursor(Syntax::Json, &format!("{head}{{\"Fog\": {{\"@color\": [1,1,1], \"@|")),
+            at_cursor(
+                Syntax::Json,
+                &format!("{head}{{\"Fog\": {{\"@color\": [1,1,1], \"@|")
+            ),
             Some(Context::FieldName {
                 node: "Fog".into(),
                 written: vec!["@color".into()]
@@ -454,7 +464,10 @@ mod tests {
             Some(Context::DefName)
         );
         assert_eq!(
-            at_cursor(Syntax::Json, &format!("{head}{{\"Fog\": {{\"@fogType\": \"L|")),
+            at_cursor(
+                Syntax::Json,
+                &format!("{head}{{\"Fog\": {{\"@fogType\": \"L|")
+            ),
             Some(Context::Value {
                 node: "Fog".into(),
                 field: "fogType".into()
@@ -474,7 +487,10 @@ mod tests {
             node_name(Some("Shape"), Some("geometry"))
         );
         assert_eq!(
-            at_cursor(Syntax::Classic, &format!("{head}Material {{ diffuseColor 1 0 0 sh|")),
+            at_cursor(
+                Syntax::Classic,
+                &format!("{head}Material {{ diffuseColor 1 0 0 sh|")
+            ),
             Some(Context::FieldName {
                 node: "Material".into(),
                 written: vec![]

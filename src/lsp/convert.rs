@@ -7,8 +7,8 @@ use std::sync::Mutex;
 
 use lsp_types::{
     CodeAction, CodeActionKind, CodeActionOrCommand, CodeDescription, Diagnostic,
-    DiagnosticRelatedInformation, DiagnosticSeverity, Location, NumberOrString, Range,
-    TextEdit, Uri, WorkspaceEdit,
+    DiagnosticRelatedInformation, DiagnosticSeverity, Location, NumberOrString, Range, TextEdit,
+    Uri, WorkspaceEdit,
 };
 
 use super::position::Lines;
@@ -31,10 +31,7 @@ impl DocLinks {
     pub fn new(template: Option<String>) -> DocLinks {
         DocLinks {
             template,
-            dir: std::env::temp_dir().join(format!(
-                "x3dcheck-{}-rules",
-                env!("CARGO_PKG_VERSION")
-            )),
+            dir: std::env::temp_dir().join(format!("x3dcheck-{}-rules", env!("CARGO_PKG_VERSION"))),
             written: Mutex::new(HashSet::new()),
         }
     }

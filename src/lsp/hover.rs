@@ -31,7 +31,12 @@ pub fn hover(analysis: &Analysis, offset: usize) -> Option<(Span, String)> {
         if start <= offset && offset <= end.max(start + 1) {
             if let Some(rule) = find_rule(d.code) {
                 span.get_or_insert(d.span);
-                parts.push(format!("**{}**: {}\n\n{}", d.code, d.message, rule_markdown(rule)));
+                parts.push(format!(
+                    "**{}**: {}\n\n{}",
+                    d.code,
+                    d.message,
+                    rule_markdown(rule)
+                ));
             }
         }
     }
@@ -76,7 +81,9 @@ fn model_hover(doc: &Document, text: &[u8], offset: usize) -> Option<(Span, Stri
 fn node_hover(node: &Node) -> Option<String> {
     let NodeKind::Known { def, version } = &node.kind else {
         return match &node.kind {
-            NodeKind::ProtoInstance { name, .. } => Some(format!("instance of prototype **{name}**")),
+            NodeKind::ProtoInstance { name, .. } => {
+                Some(format!("instance of prototype **{name}**"))
+            }
             _ => None,
         };
     };

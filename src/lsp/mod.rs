@@ -132,11 +132,7 @@ fn capabilities(units: Units) -> ServerCapabilities {
         text_document_sync: Some(TextDocumentSyncCapability::Kind(TextDocumentSyncKind::FULL)),
         hover_provider: Some(HoverProviderCapability::Simple(true)),
         completion_provider: Some(CompletionOptions {
-            trigger_characters: Some(
-                ["<", " ", "\"", "'", "@", "-"]
-                    .map(String::from)
-                    .to_vec(),
-            ),
+            trigger_characters: Some(["<", " ", "\"", "'", "@", "-"].map(String::from).to_vec()),
             ..CompletionOptions::default()
         }),
         definition_provider: Some(OneOf::Left(true)),
@@ -236,8 +232,7 @@ impl Server {
                 }
             }
             DidChangeConfiguration::METHOD => {
-                if let Some(p) = params::<lsp_types::DidChangeConfigurationParams>(notification)
-                {
+                if let Some(p) = params::<lsp_types::DidChangeConfigurationParams>(notification) {
                     let options = Options::from_json(Some(&p.settings));
                     let _ = self.jobs.send(Job::Settings(options.settings()));
                 }

@@ -55,10 +55,13 @@ pub fn target(doc: &Document, offset: usize) -> Option<Target<'_>> {
                 node: r.node,
             })
     };
-    let children = written.iter().flat_map(|n| &n.fields).filter_map(|e| match &e.value {
-        Value::Nodes(refs) => Some(refs.as_slice()),
-        _ => None,
-    });
+    let children = written
+        .iter()
+        .flat_map(|n| &n.fields)
+        .filter_map(|e| match &e.value {
+            Value::Nodes(refs) => Some(refs.as_slice()),
+            _ => None,
+        });
     std::iter::once(doc.scene.as_slice())
         .chain(doc.protos.iter().map(|p| p.body.as_slice()))
         .chain(children)
@@ -106,7 +109,12 @@ pub fn symbols(analysis: &Analysis, lines: &Lines) -> Vec<DocumentSymbol> {
 const MAX_DEPTH: usize = 64;
 
 /// The symbols of the named nodes among `refs` and below them (USEs are not followed).
-fn named_below(doc: &Document, refs: &[ChildRef], lines: &Lines, depth: usize) -> Vec<DocumentSymbol> {
+fn named_below(
+    doc: &Document,
+    refs: &[ChildRef],
+    lines: &Lines,
+    depth: usize,
+) -> Vec<DocumentSymbol> {
     if depth > MAX_DEPTH {
         return Vec::new();
     }
