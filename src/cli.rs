@@ -55,6 +55,8 @@ enum Command {
     Rules(rules::RulesArgs),
     /// Combine JSON reports (e.g. of `--shard K/N` runs) into the report of one run
     Merge(merge::MergeArgs),
+    /// Run the language server (LSP over stdin/stdout) for editors
+    Server,
 }
 
 #[derive(Args, Debug)]
@@ -182,6 +184,7 @@ pub fn run(cli: Cli) -> ExitCode {
             .and_then(|text| write_output(None, &text))
             .map(|()| ExitCode::SUCCESS),
         Some(Command::Merge(args)) => merge::merge(&args),
+        Some(Command::Server) => x3dcheck::lsp::run().map(|()| ExitCode::SUCCESS),
         None => check(&cli.check),
     };
     match result {

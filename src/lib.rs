@@ -9,6 +9,7 @@ pub mod config_file;
 pub mod diagnostic;
 pub mod library;
 pub mod limits;
+pub mod lsp;
 pub mod model;
 pub mod parse;
 pub mod read;

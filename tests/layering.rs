@@ -10,22 +10,22 @@ const LAYERS: &[(&str, &[&str])] = &[
     (
         "src/diagnostic",
         &[
-            "model", "schema", "parse", "check", "validate", "report", "render", "config",
+            "model", "schema", "parse", "check", "validate", "report", "render", "config", "lsp",
         ],
     ),
     (
         "src/schema",
         &[
-            "model", "parse", "check", "validate", "report", "render", "config",
+            "model", "parse", "check", "validate", "report", "render", "config", "lsp",
         ],
     ),
     (
         "src/model",
-        &["check", "validate", "report", "render", "config"],
+        &["check", "validate", "report", "render", "config", "lsp"],
     ),
     (
         "src/parse",
-        &["check", "validate", "report", "render", "config"],
+        &["check", "validate", "report", "render", "config", "lsp"],
     ),
 ];
 

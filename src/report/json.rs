@@ -251,6 +251,7 @@ fn file_report(file: File) -> Result<FileReport, ReadError> {
                     .collect(),
                 count: d.count,
                 span: Span::default(),
+                fix: None,
             })
         })
         .collect::<Result<Vec<_>, ReadError>>()?;

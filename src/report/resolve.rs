@@ -5,6 +5,7 @@
 use super::line_index::LineIndex;
 use super::path::{NodePaths, ROOT};
 use super::Diagnostic;
+use crate::diagnostic::Fix;
 use crate::model::{Document, NodeKind, Span};
 use crate::schema::clauses;
 use crate::validate::Severity;
@@ -30,6 +31,9 @@ pub struct Resolved {
     pub related: Vec<Related>,
     pub count: usize,
     pub span: Span,
+    /// The edits that resolve the finding, where its rule knows them (for `--fix` and the
+    /// language server's code actions; not part of the JSON report).
+    pub fix: Option<Box<Fix>>,
 }
 
 /// Another place that explains a diagnostic ("first defined here").
@@ -99,6 +103,7 @@ pub fn resolve(diagnostics: &[Diagnostic], source: &[u8], doc: Option<&Document>
                     .collect(),
                 count: d.count,
                 span: d.span,
+                fix: d.fix.clone(),
             }
         })
         .collect()
