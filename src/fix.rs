@@ -69,11 +69,28 @@ impl Fixed {
 pub fn fix_source(path: &str, source: &[u8], config: &CheckConfig, unsafe_fixes: bool) -> Fixed {
     let mut bytes = source.to_vec();
     let mut fixed = 0;
-    for pass in 0.. {
+    let mut pass = 0;
+    loop {
         let checked = check_document(path, &bytes, config);
         let (report, text) = (checked.report, checked.text.into_owned());
-        let has_fixes = report.diagnostics.iter().any(|d| d.fixable(unsafe_fixes));
-        let done = |bytes, fixed, unwritable, unconverged| Fixed {
+        let mut unwritable = None;
+        let mut unconverged = false;
+        if report.diagnostics.iter().any(|d| d.fixable(unsafe_fixes)) {
+            match writable_prefix(&bytes, &text) {
+                Err(why) => unwritable = Some(why),
+                Ok(_) if pass == MAX_PASSES => unconverged = true,
+                Ok(prefix) => {
+                    if let Some((new_text, count)) = apply(&text, &report.diagnostics, unsafe_fixes)
+                    {
+                        bytes = [prefix, new_text.as_slice()].concat();
+                        fixed += count;
+                        pass += 1;
+                        continue;
+                    }
+                }
+            }
+        }
+        return Fixed {
             report,
             bytes,
             text,
@@ -81,23 +98,7 @@ pub fn fix_source(path: &str, source: &[u8], config: &CheckConfig, unsafe_fixes:
             unwritable,
             unconverged,
         };
-        if !has_fixes {
-            return done(bytes, fixed, None, false);
-        }
-        let prefix = match writable_prefix(&bytes, &text) {
-            Ok(prefix) => prefix,
-            Err(why) => return done(bytes, fixed, Some(why), false),
-        };
-        if pass == MAX_PASSES {
-            return done(bytes, fixed, None, true);
-        }
-        let Some((new_text, count)) = apply(&text, &report.diagnostics, unsafe_fixes) else {
-            return done(bytes, fixed, None, false);
-        };
-        bytes = [prefix, new_text.as_slice()].concat();
-        fixed += count;
     }
-    unreachable!("the loop returns by MAX_PASSES")
 }
 
 /// The bytes before the decoded text in the file (a UTF-8 byte-order mark, or nothing),
