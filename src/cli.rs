@@ -25,6 +25,7 @@ use rayon::prelude::*;
 use x3dcheck::check::STDIN_NAME;
 use x3dcheck::config::CheckConfig;
 use x3dcheck::config_file::{select_codes, Effective, Resolver, Settings};
+use x3dcheck::fix;
 use x3dcheck::model::MAX_INPUT_BYTES;
 use x3dcheck::report::{concise, github, human, json, junit, sarif, statistics};
 use x3dcheck::report::{FileReport, Summary};
@@ -146,6 +147,19 @@ struct CheckArgs {
     /// from, instead of checking
     #[arg(long)]
     show_settings: bool,
+    /// Apply the safe fixes (and unsafe ones with --unsafe-fixes) and write each fixed file
+    /// in place (stdin: the fixed text to stdout, the report to stderr); the report shows
+    /// what remains
+    #[arg(long, conflicts_with_all = ["render", "diff"])]
+    fix: bool,
+    /// Also apply fixes that may change what the scene shows or which browsers load it
+    /// (with --fix or --diff; otherwise they count as fixable in the report)
+    #[arg(long)]
+    unsafe_fixes: bool,
+    /// Print a unified diff of what --fix would change and write nothing (exit 1 when
+    /// something would change)
+    #[arg(long, conflicts_with = "render")]
+    diff: bool,
     #[command(flatten)]
     render: x3dcheck::render::RenderArgs,
 }
@@ -270,6 +284,7 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
         .num_threads(args.jobs.unwrap_or(0))
         .build()
         .map_err(|e| format!("cannot start worker threads: {e}"))?;
+    let fixing = Fixing::of(args);
     let progress = progress::Progress::start(inputs.len(), args.output.is_some(), args.quiet);
     let outcomes: Vec<Outcome> = pool.install(|| {
         inputs
@@ -280,9 +295,13 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
                     input,
                     &stdin_name,
                     &config.check,
-                    text_format,
-                    color,
+                    Presentation {
+                        format: text_format,
+                        color,
+                        unsafe_fixes: args.unsafe_fixes,
+                    },
                     &args.render,
+                    fixing,
                 );
                 progress.file_done();
                 outcome
@@ -304,12 +323,16 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
     let mut reports = Vec::with_capacity(outcomes.len() + inlined.len());
     let mut fail_levels = Vec::with_capacity(outcomes.len());
     let mut text = String::new();
+    let mut fixes = FixTotals::default();
     for (outcome, config) in outcomes.into_iter().zip(&configs) {
         match outcome {
             Ok(checked) => {
                 if let Some(message) = checked.render_failure {
                     eprintln!("x3dcheck: {message}");
                     failed = true;
+                }
+                if let Some(fixed) = checked.fixed {
+                    fixes.add(fixed);
                 }
                 text.push_str(&checked.text);
                 reports.push(checked.report);
@@ -334,6 +357,23 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
             }
         }
     }
+    if let Some(Fixing { diff: true, .. }) = fixing {
+        // ruff's --diff: the diffs alone on stdout, what they fix on stderr.
+        write_output(args.output.as_deref(), &fixes.diffs)?;
+        if !args.quiet {
+            eprintln!("{}", fixes.would_fix_line());
+        }
+        return Ok(ExitCode::from(if failed {
+            USAGE
+        } else {
+            u8::from(fixes.changed_files > 0)
+        }));
+    }
+    // stdin fixed: its text goes to stdout, so the report goes to stderr (unless -o).
+    let report_to_stderr = fixes.stdin_text.is_some() && args.output.is_none();
+    if let Some(fixed_stdin) = &fixes.stdin_text {
+        write_bytes(fixed_stdin)?;
+    }
     let report = ReportOutput {
         format: args.format,
         statistics: args.statistics,
@@ -342,6 +382,9 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
         summary: !(args.quiet || failed && reports.is_empty()),
         shard: args.shard,
         output: args.output.as_deref(),
+        to_stderr: report_to_stderr,
+        fixes: fixing.map(|_| fixes.fixed),
+        unsafe_fixes: args.unsafe_fixes,
     };
     let fails = report.write(&reports, &fail_levels, text)?;
     Ok(ExitCode::from(if failed {
@@ -349,6 +392,64 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
     } else {
         u8::from(fails && !args.exit_zero)
     }))
+}
+
+/// `--fix` or `--diff`, and whether unsafe fixes apply.
+#[derive(Copy, Clone, Debug)]
+struct Fixing {
+    /// `--diff`: show, do not write.
+    diff: bool,
+    unsafe_fixes: bool,
+}
+
+impl Fixing {
+    fn of(args: &CheckArgs) -> Option<Fixing> {
+        (args.fix || args.diff).then_some(Fixing {
+            diff: args.diff,
+            unsafe_fixes: args.unsafe_fixes,
+        })
+    }
+}
+
+/// What fixing did to one input.
+struct FileFixes {
+    fixed: usize,
+    /// Whether the file's text changed.
+    changed: bool,
+    /// `--diff`: the file's unified diff.
+    diff: String,
+    /// Standard input under `--fix`: the fixed text (unchanged when nothing applied).
+    stdin_text: Option<Vec<u8>>,
+}
+
+/// What fixing did to all inputs.
+#[derive(Default)]
+struct FixTotals {
+    fixed: usize,
+    changed_files: usize,
+    diffs: String,
+    stdin_text: Option<Vec<u8>>,
+}
+
+impl FixTotals {
+    fn add(&mut self, file: FileFixes) {
+        self.fixed += file.fixed;
+        self.changed_files += usize::from(file.changed);
+        self.diffs.push_str(&file.diff);
+        if file.stdin_text.is_some() {
+            self.stdin_text = file.stdin_text;
+        }
+    }
+
+    /// `Would fix 3 findings in 2 files` (`--diff`).
+    fn would_fix_line(&self) -> String {
+        let plural = |n: usize, word: &str| format!("{n} {word}{}", if n == 1 { "" } else { "s" });
+        format!(
+            "Would fix {} in {}",
+            plural(self.fixed, "finding"),
+            plural(self.changed_files, "file")
+        )
+    }
 }
 
 fn check_statistics_format(statistics: bool, format: Format) -> Result<(), String> {
@@ -367,6 +468,12 @@ struct ReportOutput<'a> {
     /// The part of a split the run checked, said in the JSON report.
     shard: Option<Shard>,
     output: Option<&'a Path>,
+    /// Write to stderr rather than stdout (which holds fixed stdin), when `output` is None.
+    to_stderr: bool,
+    /// Under `--fix`: how many fixes were applied, said after the summary line.
+    fixes: Option<usize>,
+    /// `--unsafe-fixes`: unsafe fixes count as fixable in the summary.
+    unsafe_fixes: bool,
 }
 
 impl ReportOutput<'_> {
@@ -399,10 +506,22 @@ impl ReportOutput<'_> {
                 if self.summary {
                     text.push_str(&human::summary_line(&summary));
                     text.push('\n');
+                    if let Some(fixed) = self.fixes {
+                        text.push_str(&fix::fixed_line(fixed));
+                        text.push('\n');
+                    }
+                    if let Some(line) = fix::fixable_line(reports, self.unsafe_fixes) {
+                        text.push_str(&line);
+                        text.push('\n');
+                    }
                 }
             }
         }
-        write_output(self.output, &text)?;
+        if self.to_stderr && self.output.is_none() {
+            eprint!("{text}");
+        } else {
+            write_output(self.output, &text)?;
+        }
         Ok(reports
             .iter()
             .zip(fail_levels)
@@ -488,17 +607,28 @@ struct Checked {
     text: String,
     /// Why `--render` made no image (the report is written all the same).
     render_failure: Option<String>,
+    /// Under `--fix` or `--diff`: what fixing did.
+    fixed: Option<FileFixes>,
 }
 
-/// `format` is the format rendered per file (`None`: nothing, `--statistics`).
+/// How a file's report is shown.
+#[derive(Copy, Clone)]
+struct Presentation {
+    /// The format rendered per file (`None`: nothing, `--statistics`).
+    format: Option<Format>,
+    color: bool,
+    /// `--unsafe-fixes`: unsafe fixes are marked fixable.
+    unsafe_fixes: bool,
+}
+
 /// `stdin_name`: the name standard input is checked as.
 fn check_input(
     input: &Input,
     stdin_name: &str,
     config: &CheckConfig,
-    format: Option<Format>,
-    color: bool,
+    shown: Presentation,
     render: &x3dcheck::render::RenderArgs,
+    fixing: Option<Fixing>,
 ) -> Outcome {
     let name = match input {
         Input::Stdin => stdin_name.to_string(),
@@ -512,11 +642,12 @@ fn check_input(
         read::Contents::Bytes(bytes) => bytes,
         read::Contents::TooLarge => {
             let report = x3dcheck::check::check_too_large(&name, config);
-            let text = render_text(&report, &[], format, color);
+            let text = render_text(&report, &[], shown);
             return Ok(Checked {
                 report,
                 text,
                 render_failure: None,
+                fixed: None,
             });
         }
     };
@@ -531,6 +662,12 @@ fn check_input(
     } else {
         Cow::Borrowed(config)
     };
+    if let Some(fixing) = fixing {
+        return std::panic::catch_unwind(|| {
+            fix_input(input, &name, &bytes, &config, shown, fixing)
+        })
+        .map_err(|_| failure)?;
+    }
     std::panic::catch_unwind(move || {
         let x3dcheck::check::Checked {
             mut report,
@@ -546,7 +683,7 @@ fn check_input(
             &mut report,
         );
         drop(document);
-        let text = render_text(&report, &source, format, color);
+        let text = render_text(&report, &source, shown);
         // The preview no longer needs the document or its source.
         drop(source);
         drop(bytes);
@@ -559,17 +696,68 @@ fn check_input(
             report,
             text,
             render_failure,
+            fixed: None,
         })
     })
     .map_err(|_| failure)?
 }
 
+/// Fixes one input (`--fix`, `--diff`): writes a changed file in place under `--fix`
+/// (standard input's text is handed back for stdout instead), or makes its diff; the report
+/// is of the text as fixed.
+fn fix_input(
+    input: &Input,
+    name: &str,
+    bytes: &[u8],
+    config: &CheckConfig,
+    shown: Presentation,
+    fixing: Fixing,
+) -> Outcome {
+    let fixed = fix::fix_source(name, bytes, config, fixing.unsafe_fixes);
+    if let Some(why) = fixed.unwritable {
+        eprintln!("x3dcheck: {name}: {why}");
+    }
+    if fixed.unconverged {
+        eprintln!(
+            "x3dcheck: {name}: fixes still apply after {} passes; run again",
+            fix::MAX_PASSES
+        );
+    }
+    let changed = fixed.changed(bytes);
+    let mut file = FileFixes {
+        fixed: fixed.fixed,
+        changed,
+        diff: String::new(),
+        stdin_text: None,
+    };
+    match (fixing.diff, input) {
+        (true, _) => file.diff = fix::unified_diff(name, bytes, &fixed.bytes),
+        (false, Input::Stdin) => file.stdin_text = Some(fixed.bytes.clone()),
+        (false, Input::File { path, .. }) if changed => fs::write(path, &fixed.bytes)
+            .map_err(|e| format!("cannot write the fixed {}: {e}", path.display()))?,
+        (false, Input::File { .. }) => {}
+    }
+    let text = if fixing.diff {
+        String::new()
+    } else {
+        render_text(&fixed.report, &fixed.text, shown)
+    };
+    Ok(Checked {
+        report: fixed.report,
+        text,
+        render_failure: None,
+        fixed: Some(file),
+    })
+}
+
 /// The text of one file's report in the formats written per file (`source`: the decoded
 /// text the report's positions are in).
-fn render_text(report: &FileReport, source: &[u8], format: Option<Format>, color: bool) -> String {
-    match format {
-        Some(Format::Human) => human::render(report, source, color),
-        Some(Format::Concise) => concise::render(report),
+fn render_text(report: &FileReport, source: &[u8], shown: Presentation) -> String {
+    match shown.format {
+        Some(Format::Human) => {
+            human::render_marked(report, source, shown.color, shown.unsafe_fixes)
+        }
+        Some(Format::Concise) => concise::render_marked(report, shown.unsafe_fixes),
         Some(Format::Github) => github::render(report),
         Some(Format::Json | Format::Sarif | Format::Junit) | None => String::new(),
     }
@@ -611,6 +799,17 @@ fn file_id(path: &Path) -> io::Result<FileId> {
 #[cfg(not(unix))]
 fn file_id(path: &Path) -> io::Result<FileId> {
     path.canonicalize()
+}
+
+/// Writes fixed standard input to stdout.
+fn write_bytes(bytes: &[u8]) -> Result<(), String> {
+    if read::stdout_closed() {
+        return Err("cannot write the fixed text: standard output is closed".to_string());
+    }
+    io::stdout()
+        .lock()
+        .write_all(bytes)
+        .map_err(|e| format!("cannot write the fixed text: {e}"))
 }
 
 fn write_output(output: Option<&Path>, text: &str) -> Result<(), String> {

@@ -7,6 +7,7 @@ pub mod check;
 pub mod config;
 pub mod config_file;
 pub mod diagnostic;
+pub mod fix;
 pub mod library;
 pub mod limits;
 pub mod lsp;

@@ -24,7 +24,7 @@ use x3dcheck::library::Libraries;
 use x3dcheck::report::FileReport;
 use x3dcheck::shard::Shard;
 
-use super::{render_text, Format};
+use super::{render_text, Format, Presentation};
 
 /// One inlined file's report, its text in the per-file formats, and its configuration.
 pub struct InlinedReport {
@@ -92,7 +92,15 @@ pub fn check_inlined(batch: &Batch, resolver: &mut Resolver) -> Vec<Result<Inlin
                 let failure = format!("internal error while checking {name}");
                 std::panic::catch_unwind(|| {
                     let report = x3dcheck::check::check_library(&name, &library, &effective.check);
-                    let text = render_text(&report, &library.text, batch.format, batch.color);
+                    let text = render_text(
+                        &report,
+                        &library.text,
+                        Presentation {
+                            format: batch.format,
+                            color: batch.color,
+                            unsafe_fixes: false,
+                        },
+                    );
                     (report, text)
                 })
                 .map(|(report, text)| InlinedReport {

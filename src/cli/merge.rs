@@ -80,6 +80,9 @@ pub fn merge(args: &MergeArgs) -> Result<ExitCode, String> {
         summary: true,
         shard: None,
         output: args.output.as_deref(),
+        to_stderr: false,
+        fixes: None,
+        unsafe_fixes: false,
     };
     let fails = output.write(&files, &fail_levels, text)?;
     Ok(ExitCode::from(u8::from(fails)))

@@ -5,7 +5,10 @@
 use super::Span;
 
 /// Whether a fix may change the scene's meaning.
-#[derive(Copy, Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[derive(
+    Copy, Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize, serde::Deserialize,
+)]
+#[serde(rename_all = "lowercase")]
 pub enum Applicability {
     /// Keeps the scene's meaning: applied by `--fix` and offered as a preferred code action.
     Safe,

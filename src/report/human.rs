@@ -26,7 +26,18 @@ const MARGIN: usize = 60;
 const MAX_SPAN: usize = 120;
 const ELLIPSIS: &str = "…";
 
+/// Fixable findings marked (`[*]`) as a run without `--unsafe-fixes` applies them.
 pub fn render(report: &FileReport, source: &[u8], color: bool) -> String {
+    render_marked(report, source, color, false)
+}
+
+/// [`render`]; `unsafe_fixes`: whether unsafe fixes count as fixable (`--unsafe-fixes`).
+pub fn render_marked(
+    report: &FileReport,
+    source: &[u8],
+    color: bool,
+    unsafe_fixes: bool,
+) -> String {
     let mut out = String::new();
     if report.diagnostics.is_empty() && !report.truncated {
         return out;
@@ -46,6 +57,7 @@ pub fn render(report: &FileReport, source: &[u8], color: bool) -> String {
         source,
         lines: LineIndex::new(source),
         color,
+        unsafe_fixes,
     };
     for diagnostic in &report.diagnostics {
         renderer.block(&mut out, diagnostic);
@@ -79,6 +91,7 @@ struct Renderer<'a> {
     source: &'a [u8],
     lines: LineIndex<'a>,
     color: bool,
+    unsafe_fixes: bool,
 }
 
 impl Renderer<'_> {
@@ -89,9 +102,10 @@ impl Renderer<'_> {
             ("", "", "")
         };
         let (severity, code, message) = (d.severity, d.code, &d.message);
+        let mark = d.fix_mark(self.unsafe_fixes);
         let _ = writeln!(
             out,
-            "{on}{bold}{severity}[{code}]{off}{bold}: {message}{off}"
+            "{on}{bold}{severity}[{code}]{off}{bold}: {mark}{message}{off}"
         );
 
         let mut labels = vec![Label {

@@ -4,14 +4,16 @@
 //!
 //! Beyond DESIGN.md's example: a diagnostic's `index`, `indices`, `value`, `help`,
 //! `related` (other places that explain it: `line`, `column`, `message`) and `count` appear
-//! when set (`count` when above 1); a report of a `--shard K/N` run says which shard it
+//! when set (`count` when above 1), and so does `fix` (`title`, `applicability` `safe` or
+//! `unsafe`, and `edits`: `line`, `column`, `endLine`, `endColumn`, `content`); a report of a `--shard K/N` run says which shard it
 //! is (`"shard": { "index": K, "count": N }`).
 
 use std::borrow::Cow;
 
 use serde::{Deserialize, Serialize};
 
-use super::{FileReport, Related, Resolved, Stats, Summary};
+use super::{FileReport, Related, Resolved, ResolvedEdit, ResolvedFix, Stats, Summary};
+use crate::diagnostic::Applicability;
 use crate::model::{Encoding, Span};
 use crate::shard::Shard;
 use crate::validate::{find_rule, Severity};
@@ -70,6 +72,29 @@ struct Diagnostic<'a> {
     related: Vec<RelatedPlace<'a>>,
     #[serde(default = "one", skip_serializing_if = "is_one")]
     count: usize,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    fix: Option<FixOut<'a>>,
+}
+
+/// A finding's fix: what it does, whether `--fix` applies it (`safe`) or only
+/// `--unsafe-fixes` (`unsafe`), and its edits in the decoded text.
+#[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FixOut<'a> {
+    title: Cow<'a, str>,
+    applicability: Applicability,
+    edits: Vec<EditOut<'a>>,
+}
+
+/// The text from (line, column) to (endLine, endColumn), exclusive, becomes `content`.
+#[derive(Serialize, Deserialize)]
+#[serde(rename_all = "camelCase", deny_unknown_fields)]
+struct EditOut<'a> {
+    line: usize,
+    column: usize,
+    end_line: usize,
+    end_column: usize,
+    content: Cow<'a, str>,
 }
 
 #[derive(Serialize, Deserialize)]
@@ -114,6 +139,21 @@ impl<'a> From<&'a Resolved> for Diagnostic<'a> {
                 })
                 .collect(),
             count: d.count,
+            fix: d.fix.as_ref().map(|fix| FixOut {
+                title: fix.title.as_str().into(),
+                applicability: fix.applicability,
+                edits: fix
+                    .edits
+                    .iter()
+                    .map(|e| EditOut {
+                        line: e.line,
+                        column: e.column,
+                        end_line: e.end_line,
+                        end_column: e.end_column,
+                        content: e.replacement.as_str().into(),
+                    })
+                    .collect(),
+            }),
         }
     }
 }
@@ -251,7 +291,22 @@ fn file_report(file: File) -> Result<FileReport, ReadError> {
                     .collect(),
                 count: d.count,
                 span: Span::default(),
-                fix: None,
+                fix: d.fix.map(|fix| ResolvedFix {
+                    title: fix.title.into_owned(),
+                    applicability: fix.applicability,
+                    edits: fix
+                        .edits
+                        .into_iter()
+                        .map(|e| ResolvedEdit {
+                            line: e.line,
+                            column: e.column,
+                            end_line: e.end_line,
+                            end_column: e.end_column,
+                            replacement: e.content.into_owned(),
+                            span: Span::default(),
+                        })
+                        .collect(),
+                }),
             })
         })
         .collect::<Result<Vec<_>, ReadError>>()?;

@@ -14,7 +14,7 @@ pub mod statistics;
 mod stats;
 
 pub use crate::diagnostic::Diagnostic;
-pub use resolve::{resolve, Related, Resolved};
+pub use resolve::{resolve, Related, Resolved, ResolvedEdit, ResolvedFix};
 pub use stats::Stats;
 
 use serde::{Deserialize, Serialize};

@@ -5,7 +5,7 @@
 use super::line_index::LineIndex;
 use super::path::{NodePaths, ROOT};
 use super::Diagnostic;
-use crate::diagnostic::Fix;
+use crate::diagnostic::Applicability;
 use crate::model::{Document, NodeKind, Span};
 use crate::schema::clauses;
 use crate::validate::Severity;
@@ -31,9 +31,47 @@ pub struct Resolved {
     pub related: Vec<Related>,
     pub count: usize,
     pub span: Span,
-    /// The edits that resolve the finding, where its rule knows them (for `--fix` and the
-    /// language server's code actions; not part of the JSON report).
-    pub fix: Option<Box<Fix>>,
+    /// The edits that resolve the finding, with their places.
+    pub fix: Option<ResolvedFix>,
+}
+
+impl Resolved {
+    /// Whether the finding has a fix that a run applies: a safe one, or any with
+    /// `--unsafe-fixes` (`unsafe_fixes`).
+    pub fn fixable(&self, unsafe_fixes: bool) -> bool {
+        self.fix
+            .as_ref()
+            .is_some_and(|f| unsafe_fixes || f.applicability == Applicability::Safe)
+    }
+
+    /// `"[*] "` before the message of a finding [`fixable`](Self::fixable) so, as ruff marks.
+    pub fn fix_mark(&self, unsafe_fixes: bool) -> &'static str {
+        if self.fixable(unsafe_fixes) {
+            "[*] "
+        } else {
+            ""
+        }
+    }
+}
+
+/// A [`Fix`](crate::diagnostic::Fix) with the line and column of each edit.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ResolvedFix {
+    pub title: String,
+    pub applicability: Applicability,
+    pub edits: Vec<ResolvedEdit>,
+}
+
+/// One edit: the text between (line, column) and (end_line, end_column) becomes
+/// `replacement`. `span` is its byte range (empty in a report read back from JSON).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ResolvedEdit {
+    pub line: usize,
+    pub column: usize,
+    pub end_line: usize,
+    pub end_column: usize,
+    pub replacement: String,
+    pub span: Span,
 }
 
 /// Another place that explains a diagnostic ("first defined here").
@@ -54,9 +92,15 @@ pub fn resolve(diagnostics: &[Diagnostic], source: &[u8], doc: Option<&Document>
         .iter()
         .flat_map(|d| {
             let related = d.related.iter().map(|(span, _)| span.start as usize);
+            let edits = d
+                .fix
+                .iter()
+                .flat_map(|f| &f.edits)
+                .flat_map(|e| [e.span.start as usize, e.span.end.max(e.span.start) as usize]);
             [d.span.start as usize, d.span.end.max(d.span.start) as usize]
                 .into_iter()
                 .chain(related)
+                .chain(edits)
         })
         .collect();
     offsets.sort_unstable();
@@ -103,7 +147,25 @@ pub fn resolve(diagnostics: &[Diagnostic], source: &[u8], doc: Option<&Document>
                     .collect(),
                 count: d.count,
                 span: d.span,
-                fix: d.fix.clone(),
+                fix: d.fix.as_ref().map(|fix| ResolvedFix {
+                    title: fix.title.clone(),
+                    applicability: fix.applicability,
+                    edits: fix
+                        .edits
+                        .iter()
+                        .map(|e| {
+                            let (start, end) = (at(e.span.start), at(e.span.end.max(e.span.start)));
+                            ResolvedEdit {
+                                line: start.line,
+                                column: start.column,
+                                end_line: end.line,
+                                end_column: end.column,
+                                replacement: e.replacement.clone(),
+                                span: e.span,
+                            }
+                        })
+                        .collect(),
+                }),
             }
         })
         .collect()

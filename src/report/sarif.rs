@@ -114,6 +114,9 @@ fn result(file: &FileReport, d: &Resolved, rule_index: Option<usize>) -> Value {
             .collect();
         result.insert("relatedLocations".into(), Value::Array(related));
     }
+    if let Some(fix) = &d.fix {
+        result.insert("fixes".into(), json!([sarif_fix(file, fix)]));
+    }
     let mut properties = Map::new();
     properties.insert("clause".into(), json!(d.clause));
     if let Some(index) = d.index {
@@ -128,6 +131,34 @@ fn result(file: &FileReport, d: &Resolved, rule_index: Option<usize>) -> Value {
     }
     result.insert("properties".into(), Value::Object(properties));
     Value::Object(result)
+}
+
+/// A SARIF `fix` (3.55): one artifact change replacing each edit's region (an empty region
+/// is an insertion point); whether `--fix` applies it is in its properties.
+fn sarif_fix(file: &FileReport, fix: &crate::report::ResolvedFix) -> Value {
+    let replacements: Vec<Value> = fix
+        .edits
+        .iter()
+        .map(|e| {
+            json!({
+                "deletedRegion": {
+                    "startLine": e.line,
+                    "startColumn": e.column,
+                    "endLine": e.end_line,
+                    "endColumn": e.end_column,
+                },
+                "insertedContent": { "text": e.replacement },
+            })
+        })
+        .collect();
+    json!({
+        "description": { "text": fix.title },
+        "artifactChanges": [{
+            "artifactLocation": { "uri": uri(&file.path) },
+            "replacements": replacements,
+        }],
+        "properties": { "applicability": fix.applicability },
+    })
 }
 
 /// SARIF's end column is exclusive and may not precede the start on the same line.

@@ -3,6 +3,7 @@
 //! the readers and the model builder and only filtered here.
 
 pub mod document;
+mod edits;
 pub mod events;
 mod instances;
 pub mod interpolation;

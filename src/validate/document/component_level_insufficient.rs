@@ -3,10 +3,11 @@
 
 use std::collections::BTreeMap;
 
-use crate::model::{NodeId, NodeKind};
+use crate::diagnostic::{Applicability, Fix, Span};
+use crate::model::{Encoding, NodeId, NodeKind};
 use crate::report::Diagnostic;
 use crate::schema::profiles;
-use crate::validate::Ctx;
+use crate::validate::{edits, Ctx};
 
 crate::declare_rule! {
     /// ## What it does
@@ -35,6 +36,17 @@ crate::declare_rule! {
     ///   <Scene><Shape><Appearance><TwoSidedMaterial/></Appearance><Box/></Shape></Scene>
     /// </X3D>
     /// ```
+    ///
+    /// ## Fix safety
+    /// The fix declares the component at the level needed (the highest any finding of the
+    /// document needs of it, so that all findings on one component share one fix): it
+    /// raises the level of the `component` statement that names it, or adds one after the
+    /// last `component` statement — in XML `<component name='Shape' level='2'/>` in the
+    /// head (making a head before the Scene when there is none), in ClassicVRML
+    /// `COMPONENT Shape:2` after the PROFILE statement, in JSON a `component` member of
+    /// `head`. It is safe: it states what the scene already uses, and a browser that has the
+    /// component loads it as before. A statement without a level, or a self-closed
+    /// `<head/>`, gets no fix.
     ///
     /// ## Clause
     /// 19775-1 7.2.5.3 (PROFILE), 7.2.5.4 (COMPONENT) and each component's support levels.
@@ -81,7 +93,7 @@ fn check(ctx: &mut Ctx) {
             short.entry(def.name).or_insert((id, 0)).1 += 1;
         }
     }
-    statements(ctx, profile);
+    let mut findings = statements(ctx, profile);
     let mut found: Vec<_> = short.into_iter().collect();
     found.sort_by_key(|(_, (id, _))| *id);
     for (name, (id, count)) in found {
@@ -120,7 +132,100 @@ fn check(ctx: &mut Ctx) {
             )
         });
         diagnostic.count = count;
+        findings.push((diagnostic, needed.component, needed.level));
+    }
+    findings.sort_by_key(|(d, _, _)| d.span);
+    let mut needed: BTreeMap<&str, u8> = BTreeMap::new();
+    for &(_, component, level) in &findings {
+        let most = needed.entry(component).or_default();
+        *most = (*most).max(level);
+    }
+    for (mut diagnostic, component, _) in findings {
+        if let Some(fix) = declare(ctx, component, needed[component]) {
+            diagnostic = diagnostic.fix(fix);
+        }
         ctx.report(diagnostic);
+    }
+}
+
+/// A fix declaring `component` at `level` (see the rule's Fix safety).
+fn declare(ctx: &Ctx, component: &str, level: u8) -> Option<Fix> {
+    let (doc, source) = (ctx.doc, ctx.source);
+    let statements = &doc.head.components;
+    let title = match doc.encoding {
+        Encoding::Xml | Encoding::Json => {
+            format!("Declare <component name='{component}' level='{level}'/>")
+        }
+        Encoding::ClassicVrml | Encoding::Vrml97 => {
+            format!("Declare COMPONENT {component}:{level}")
+        }
+    };
+    let fix = |edit| Some(edits::fix(title.clone(), Applicability::Safe, vec![edit]));
+    if let Some(existing) = statements
+        .iter()
+        .filter(|c| c.name.text == component)
+        .last()
+    {
+        let (_, span) = existing.level?;
+        let quoted = source.get(span.start as usize) == Some(&b'"');
+        let number = if quoted {
+            format!("\"{level}\"")
+        } else {
+            level.to_string()
+        };
+        return fix(edits::edit(span, number));
+    }
+    let insert = |at: usize, text: String| fix(edits::edit(Span::new(at, at), text));
+    let last = statements.last().map(|c| c.span.end as usize);
+    match doc.encoding {
+        Encoding::Xml => {
+            let statement = format!("<component name='{component}' level='{level}'/>");
+            if let Some(end) = last {
+                let indent = edits::indentation(source, end);
+                return insert(end, format!("\n{indent}{statement}"));
+            }
+            let scene = doc.scene_span?.start as usize;
+            match edits::xml_start_tag(source, doc.root_span.start as usize + 1, scene, "head") {
+                Some(head) => {
+                    let close = head + memchr::memchr(b'>', &source[head..scene])?;
+                    if source[close - 1] == b'/' {
+                        return None;
+                    }
+                    let indent = edits::indentation(source, head);
+                    insert(close + 1, format!("\n{indent}  {statement}"))
+                }
+                None => {
+                    let indent = edits::indentation(source, scene);
+                    insert(
+                        scene,
+                        format!("<head>\n{indent}  {statement}\n{indent}</head>\n{indent}"),
+                    )
+                }
+            }
+        }
+        Encoding::Json => {
+            let object = format!("{{\"@name\": \"{component}\", \"@level\": {level}}}");
+            if let Some(end) = last {
+                return insert(end, format!(", {object}"));
+            }
+            let root = doc.root_span.start as usize;
+            match edits::json_object_member(source, root, source.len(), "head") {
+                Some(inside) => {
+                    let empty =
+                        source[inside..].iter().find(|b| !b.is_ascii_whitespace()) == Some(&b'}');
+                    let comma = if empty { "" } else { "," };
+                    insert(inside, format!("\"component\": [{object}]{comma}"))
+                }
+                None => {
+                    let scene = doc.scene_span?.start as usize;
+                    insert(scene, format!("\"head\": {{\"component\": [{object}]}}, "))
+                }
+            }
+        }
+        Encoding::ClassicVrml | Encoding::Vrml97 => {
+            let after = last.or(doc.profile.as_ref().map(|p| p.span.end as usize))?;
+            insert(after, format!("\nCOMPONENT {component}:{level}"))
+        }
     }
 }
 
@@ -161,8 +266,9 @@ const STATEMENT_LEVELS: [(&str, &str, u8); 4] = [
 ];
 
 /// One diagnostic per statement kind that needs more than the document provides, at its
-/// first use, with the count.
-fn statements(ctx: &mut Ctx, profile: &profiles::Profile) {
+/// first use, with the count, and the component and level it needs.
+fn statements(ctx: &Ctx, profile: &profiles::Profile) -> Vec<(Diagnostic, &'static str, u8)> {
+    let mut findings = Vec::new();
     let doc = ctx.doc;
     let declared = |component: &str| {
         doc.head
@@ -213,6 +319,7 @@ fn statements(ctx: &mut Ctx, profile: &profiles::Profile) {
             "add <component name='{component}' level='{level}'/> to the head, or use a larger profile"
         ));
         diagnostic.count = count;
-        ctx.report(diagnostic);
+        findings.push((diagnostic, component, level));
     }
+    findings
 }

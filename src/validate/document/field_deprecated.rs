@@ -1,7 +1,9 @@
 //! FIELD_DEPRECATED: TextureProperties.borderColor and borderWidth in X3D 4.
 
+use crate::diagnostic::Applicability;
+use crate::model::Origin;
 use crate::report::Diagnostic;
-use crate::validate::Ctx;
+use crate::validate::{edits, Ctx};
 
 crate::declare_rule! {
     /// ## What it does
@@ -15,6 +17,11 @@ crate::declare_rule! {
     /// ```xml
     /// <TextureProperties borderWidth='1'/>
     /// ```
+    ///
+    /// ## Fix safety
+    /// The fix removes the field (the XML attribute, the JSON member with its comma, the
+    /// ClassicVRML name and value). It is unsafe: an X3D 4 browser ignores the field, but a
+    /// 3.x browser loading the file would lose the border it drew.
     ///
     /// ## Clause
     /// 19775-1 (4.x) 18.4.9 TextureProperties.
@@ -38,17 +45,27 @@ fn check(ctx: &mut Ctx) {
             .iter()
             .filter(|e| matches!(e.name(), "borderColor" | "borderWidth"))
         {
-            ctx.report(
-                Diagnostic::new(
-                    &FIELD_DEPRECATED,
-                    entry.name_span,
-                    format!(
-                        "TextureProperties.{} is deprecated in X3D 4 and ignored",
-                        entry.name()
-                    ),
-                )
-                .node(id),
-            );
+            let mut diagnostic = Diagnostic::new(
+                &FIELD_DEPRECATED,
+                entry.name_span,
+                format!(
+                    "TextureProperties.{} is deprecated in X3D 4 and ignored",
+                    entry.name()
+                ),
+            )
+            .node(id);
+            let removal = (matches!(entry.origin, Origin::Attribute | Origin::Member)
+                && edits::written(ctx.doc, id))
+            .then(|| edits::remove_field(ctx.source, ctx.doc.encoding, entry.name_span, entry.span))
+            .flatten();
+            if let Some(removal) = removal {
+                diagnostic = diagnostic.fix(edits::fix(
+                    format!("Remove `{}`", entry.name()),
+                    Applicability::Unsafe,
+                    vec![removal],
+                ));
+            }
+            ctx.report(diagnostic);
         }
     }
 }

@@ -1,9 +1,10 @@
 //! NODE_NOT_IN_VERSION: a node type of another X3D version (or one X3D added to VRML97).
 
+use crate::diagnostic::{Applicability, Fix, Span};
 use crate::model::NodeKind;
 use crate::report::Diagnostic;
 use crate::schema::{self, versions, Version};
-use crate::validate::Ctx;
+use crate::validate::{edits, Ctx};
 
 crate::declare_rule! {
     /// ## What it does
@@ -25,6 +26,15 @@ crate::declare_rule! {
     /// </X3D>
     /// ```
     ///
+    /// ## Fix safety
+    /// In an X3D document (not VRML97), where every node so reported exists in a later
+    /// version, the fix raises the `version` (XML attribute, JSON `@version`, ClassicVRML
+    /// header) to the first version that has them all; each finding carries that same
+    /// fix. It is unsafe: browsers of the old version no longer load the scene, other
+    /// rules of the new version apply (deprecations, profile and component levels), and
+    /// an XML document's DOCTYPE or schema location still names the old version's files.
+    /// A node that a later version removed (a VRML97 one) has no fix.
+    ///
     /// ## Clause
     /// 19775-1 the node's clause in the version that defines it; 7.2.5.2 (version);
     /// for VRML97 files, 14772-1 clause 6 (the node reference lists every VRML97 node).
@@ -39,6 +49,9 @@ crate::declare_rule! {
 
 fn check(ctx: &mut Ctx) {
     units_before_3_3(ctx);
+    let mut found = Vec::new();
+    // The version every node reported has, when there is one: what the fix raises to.
+    let mut target = Some(ctx.version);
     for (id, node) in ctx.doc.iter() {
         if let NodeKind::Known { def, version } = node.kind {
             if version != ctx.version {
@@ -56,10 +69,37 @@ fn check(ctx: &mut Ctx) {
                         versions::describe(&versions::with_node(def.name))
                     )
                 };
-                ctx.report(Diagnostic::new(&NODE_NOT_IN_VERSION, node.name_span, message).node(id));
+                let later = Version::X3D
+                    .into_iter()
+                    .find(|&v| v > ctx.version && schema::schema(v).node(def.name).is_some());
+                target = target.zip(later).map(|(t, l)| t.max(l));
+                found.push(Diagnostic::new(&NODE_NOT_IN_VERSION, node.name_span, message).node(id));
             }
         }
     }
+    let fix = target.and_then(|target| raise_version(ctx, target));
+    for mut diagnostic in found {
+        if let Some(fix) = &fix {
+            diagnostic = diagnostic.fix(fix.clone());
+        }
+        ctx.report(diagnostic);
+    }
+}
+
+/// Replaces the version as written with `target`'s number.
+fn raise_version(ctx: &Ctx, target: Version) -> Option<Fix> {
+    if ctx.version == Version::Vrml97 || target <= ctx.version {
+        return None;
+    }
+    let written = ctx.doc.version_text.as_ref()?;
+    let number = target.name().strip_prefix("X3D ")?;
+    let text = ctx.source.get(written.span.range())?;
+    let at = memchr::memmem::find(text, written.text.as_bytes())? + written.span.start as usize;
+    Some(edits::fix(
+        format!("Raise the version to {number}"),
+        Applicability::Unsafe,
+        vec![edits::edit(Span::new(at, at + written.text.len()), number)],
+    ))
 }
 
 /// The first X3D version where `has` holds: the one that added a node or field VRML97

@@ -1,9 +1,10 @@
 //! NODE_UNKNOWN: an element or object names no X3D node or statement.
 
+use crate::diagnostic::{Applicability, Fix};
 use crate::model::NodeKind;
 use crate::report::Diagnostic;
 use crate::schema::{self, Version};
-use crate::validate::{suggest, Ctx};
+use crate::validate::{edits, suggest, Ctx};
 
 crate::declare_rule! {
     /// ## What it does
@@ -17,6 +18,12 @@ crate::declare_rule! {
     /// ```xml
     /// <Shape><appearance><material/></appearance><Box/></Shape>
     /// ```
+    ///
+    /// ## Fix safety
+    /// Where the one suggestion is a case slip (`material` → `Material`), renaming the
+    /// element or key (and the XML end tag) is a safe fix: no X3D node's name differs from
+    /// another only in case, so the node meant is not in doubt, and a browser skips the
+    /// misspelt one anyway. A suggestion at an edit distance is only help.
     ///
     /// ## Clause
     /// 19775-1 4.4.1 (node types); 19776-1 4.3 (element names).
@@ -36,16 +43,32 @@ fn check(ctx: &mut Ctx) {
             if ctx.is_full() {
                 return;
             }
-            ctx.report(
-                Diagnostic::new(
-                    &NODE_UNKNOWN,
-                    node.name_span,
-                    format!("`{name}` is not an X3D node"),
-                )
-                .node(id)
-                .value(name.clone())
-                .help_opt(suggest::help(name, names.clone())),
-            );
+            let suggestion = suggest::did_you_mean(name, names.clone());
+            let mut diagnostic = Diagnostic::new(
+                &NODE_UNKNOWN,
+                node.name_span,
+                format!("`{name}` is not an X3D node"),
+            )
+            .node(id)
+            .value(name.clone())
+            .help_opt(suggestion.map(|c| format!("did you mean `{c}`?")));
+            if let Some(fix) = suggestion.and_then(|to| case_fix(ctx, id, name, to)) {
+                diagnostic = diagnostic.fix(fix);
+            }
+            ctx.report(diagnostic);
         }
     }
+}
+
+/// Renames a node whose name is `to` but for case.
+fn case_fix(ctx: &Ctx, id: crate::model::NodeId, from: &str, to: &str) -> Option<Fix> {
+    if !to.eq_ignore_ascii_case(from) || !edits::written(ctx.doc, id) {
+        return None;
+    }
+    let edits = edits::rename_node(ctx.source, ctx.doc.encoding, ctx.doc.node(id), from, to)?;
+    Some(edits::fix(
+        format!("Rename to `{to}`"),
+        Applicability::Safe,
+        edits,
+    ))
 }
