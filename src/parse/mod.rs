@@ -4,6 +4,7 @@
 
 pub mod classic;
 pub mod decode;
+mod directive;
 mod detect;
 pub mod json;
 pub mod number;

@@ -43,6 +43,9 @@ struct File<'a> {
     profile: Option<Cow<'a, str>>,
     diagnostics: Vec<Diagnostic<'a>>,
     truncated: bool,
+    /// Findings inline comments suppressed; said only when some were.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    suppressed: usize,
     stats: Cow<'a, Stats>,
 }
 
@@ -86,6 +89,10 @@ fn one() -> usize {
 
 fn is_one(count: &usize) -> bool {
     *count == 1
+}
+
+fn is_zero(count: &usize) -> bool {
+    *count == 0
 }
 
 impl<'a> From<&'a Resolved> for Diagnostic<'a> {
@@ -135,6 +142,7 @@ pub fn render(reports: &[FileReport], shard: Option<Shard>) -> String {
                 profile: r.profile.as_deref().map(Cow::from),
                 diagnostics: r.diagnostics.iter().map(Diagnostic::from).collect(),
                 truncated: r.truncated,
+                suppressed: r.suppressed,
                 stats: Cow::Borrowed(&r.stats),
             })
             .collect(),
@@ -262,6 +270,7 @@ fn file_report(file: File) -> Result<FileReport, ReadError> {
         profile: file.profile.map(Cow::into_owned),
         diagnostics,
         truncated: file.truncated,
+        suppressed: file.suppressed,
         stats: file.stats.into_owned(),
     })
 }
@@ -296,6 +305,7 @@ mod tests {
             profile: None,
             diagnostics: resolve(&diagnostics, source, None),
             truncated: true,
+            suppressed: 0,
             stats: Stats::default(),
         }
     }
