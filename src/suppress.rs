@@ -50,14 +50,15 @@ pub fn apply(
         return 0;
     }
     let honoured = &doc.directives[..doc.directives.len().min(MAX_DIRECTIVES)];
-    let mut suppressions: Vec<Suppression> = honoured
-        .iter()
-        .map(|d| read(*d, text, config))
-        .collect();
+    let mut suppressions: Vec<Suppression> =
+        honoured.iter().map(|d| read(*d, text, config)).collect();
     let mut suppressed = 0;
     diagnostics.retain(|d| {
         let mut hit = false;
-        for s in suppressions.iter_mut().filter(|s| covers(s.directive.scope, d.span)) {
+        for s in suppressions
+            .iter_mut()
+            .filter(|s| covers(s.directive.scope, d.span))
+        {
             for selector in &mut s.selectors {
                 if selector.codes.contains(d.rule.code) {
                     selector.used = true;
@@ -166,7 +167,11 @@ fn report_unused(
                 let message = format!(
                     "`x3dcheck: ignore {}` suppresses nothing: no finding of {} in {place}",
                     selector.written,
-                    if selector.codes.len() == 1 { "that code" } else { "those codes" },
+                    if selector.codes.len() == 1 {
+                        "that code"
+                    } else {
+                        "those codes"
+                    },
                 );
                 findings.push((k, Some(i), selector.span, message));
             }

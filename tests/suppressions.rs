@@ -85,8 +85,8 @@ impl Encoding {
         match self {
             Encoding::Xml => format!("<!-- x3dcheck: ignore {codes} -->"),
             Encoding::Classic => format!("# x3dcheck: ignore {codes}"),
-            Encoding::Json if file => format!(r#""#comment": "x3dcheck: ignore {codes}","#),
-            Encoding::Json => format!(r#"{{ "#comment": "x3dcheck: ignore {codes}" }},"#),
+            Encoding::Json if file => format!(r##""#comment": "x3dcheck: ignore {codes}","##),
+            Encoding::Json => format!(r##"{{ "#comment": "x3dcheck: ignore {codes}" }},"##),
         }
     }
 
@@ -114,7 +114,11 @@ fn findings(name: &str, source: &str, config: &CheckConfig) -> (Vec<String>, Fil
                 .iter()
                 .find(|m| line.contains(*m))
                 .copied()
-                .unwrap_or(if line.contains("x3dcheck:") { "comment" } else { "?" });
+                .unwrap_or(if line.contains("x3dcheck:") {
+                    "comment"
+                } else {
+                    "?"
+                });
             format!("{}@{marker}", d.code)
         })
         .collect();
@@ -183,7 +187,11 @@ fn several_codes_in_one_comment() {
         let (found, suppressed) = with_comment(encoding, "NODE_UNKNOWN, DEF_DUPLICATE", false);
         assert_eq!(
             found,
-            strings(&["NODE_UNKNOWN@Foo", "NODE_UNKNOWN@Baz", "DEF_DUPLICATE@Switch"]),
+            strings(&[
+                "NODE_UNKNOWN@Foo",
+                "NODE_UNKNOWN@Baz",
+                "DEF_DUPLICATE@Switch"
+            ]),
             "{encoding:?}"
         );
         assert_eq!(suppressed, 2, "{encoding:?}");
@@ -194,12 +202,22 @@ fn several_codes_in_one_comment() {
 fn prefixes_all_and_any_case_as_for_ignore() {
     for encoding in ENCODINGS {
         let (found, _) = with_comment(encoding, "node_", false);
-        assert!(!found.contains(&"NODE_UNKNOWN@Bar".to_string()), "{encoding:?}: {found:?}");
-        assert!(found.contains(&"DEF_DUPLICATE@Transform".to_string()), "{encoding:?}");
+        assert!(
+            !found.contains(&"NODE_UNKNOWN@Bar".to_string()),
+            "{encoding:?}: {found:?}"
+        );
+        assert!(
+            found.contains(&"DEF_DUPLICATE@Transform".to_string()),
+            "{encoding:?}"
+        );
         let (found, suppressed) = with_comment(encoding, "ALL", false);
         assert_eq!(
             found,
-            strings(&["NODE_UNKNOWN@Foo", "NODE_UNKNOWN@Baz", "DEF_DUPLICATE@Switch"]),
+            strings(&[
+                "NODE_UNKNOWN@Foo",
+                "NODE_UNKNOWN@Baz",
+                "DEF_DUPLICATE@Switch"
+            ]),
             "{encoding:?}"
         );
         assert_eq!(suppressed, 2, "{encoding:?}");
@@ -230,7 +248,10 @@ fn a_comment_that_suppresses_nothing_is_reported() {
         // Used in one place, unused in the other: the unused code alone is reported.
         let (found, _) = with_comment(encoding, "NODE_UNKNOWN, USE_UNDEFINED", false);
         assert_eq!(
-            found.iter().filter(|f| f.starts_with("SUPPRESSION_UNUSED")).count(),
+            found
+                .iter()
+                .filter(|f| f.starts_with("SUPPRESSION_UNUSED"))
+                .count(),
             1,
             "{encoding:?}: {found:?}"
         );
@@ -364,12 +385,19 @@ fn suppression_unused_yields_only_to_a_whole_file_comment() {
 
 #[test]
 fn an_x3dcheck_comment_that_is_no_suppression_is_reported() {
-    let scene = XML.replace("{file}", "").replace("{here}", "<!-- x3dcheck: ignor NODE_UNKNOWN -->");
+    let scene = XML
+        .replace("{file}", "")
+        .replace("{here}", "<!-- x3dcheck: ignor NODE_UNKNOWN -->");
     let (found, _) = findings("a.x3d", &scene, &CheckConfig::default());
-    assert!(found.contains(&"SUPPRESSION_UNUSED@comment".to_string()), "{found:?}");
+    assert!(
+        found.contains(&"SUPPRESSION_UNUSED@comment".to_string()),
+        "{found:?}"
+    );
     assert!(found.contains(&"NODE_UNKNOWN@Bar".to_string()), "{found:?}");
     // Other comments are none of x3dcheck's business.
-    let scene = XML.replace("{file}", "").replace("{here}", "<!-- ignore NODE_UNKNOWN -->");
+    let scene = XML
+        .replace("{file}", "")
+        .replace("{here}", "<!-- ignore NODE_UNKNOWN -->");
     let (found, _) = findings("a.x3d", &scene, &CheckConfig::default());
     assert_eq!(found, strings(&ALL_FINDINGS));
 }
@@ -398,7 +426,11 @@ fn the_json_report_counts_suppressed_findings() {
     let value: serde_json::Value = serde_json::from_str(&json).unwrap();
     assert_eq!(value["files"][0]["suppressed"], 1, "{json}");
     assert_eq!(value["summary"]["suppressed"], 1, "{json}");
-    let clean = check_source("b.x3d", XML.replace("{file}", "").replace("{here}", "").as_bytes(), &CheckConfig::default());
+    let clean = check_source(
+        "b.x3d",
+        XML.replace("{file}", "").replace("{here}", "").as_bytes(),
+        &CheckConfig::default(),
+    );
     let json = x3dcheck::report::json::render(std::slice::from_ref(&clean), None);
     assert!(!json.contains("suppressed"), "said only when some were");
 }

@@ -19,12 +19,9 @@ const MARK: &[u8] = b"x3dcheck:";
 pub fn addressed(source: &[u8], inner: Span) -> Option<Span> {
     let text = source.get(inner.range())?;
     let lead = text.iter().take_while(|b| b.is_ascii_whitespace()).count();
-    text[lead..].starts_with(MARK).then(|| {
-        Span::new(
-            inner.start as usize + lead + MARK.len(),
-            inner.end as usize,
-        )
-    })
+    text[lead..]
+        .starts_with(MARK)
+        .then(|| Span::new(inner.start as usize + lead + MARK.len(), inner.end as usize))
 }
 
 /// An empty scope at the end of a comment: the directive applies to nothing.
@@ -161,7 +158,8 @@ fn closes(source: &[u8], from: usize, to: usize) -> bool {
         match gap[at] {
             b'}' | b']' => return true,
             b'#' if gap[at..].starts_with(b"#/*") => {
-                at = memchr::memmem::find(&gap[at + 3..], b"*/#").map_or(gap.len(), |k| at + 3 + k + 3);
+                at = memchr::memmem::find(&gap[at + 3..], b"*/#")
+                    .map_or(gap.len(), |k| at + 3 + k + 3);
             }
             b'#' => at = memchr::memchr2(b'\n', b'\r', &gap[at..]).map_or(gap.len(), |k| at + k),
             b'"' => {
@@ -229,7 +227,10 @@ fn json_directive(t: &Tree, key: usize, around: &[usize]) -> Option<Directive> {
     } else if let [.., array, _] = around {
         if t.kind(*array) != Kind::Array {
             holder(t, around)
-        } else if t.members(object).all(|(k, _)| t.raw(k).starts_with("#comment")) {
+        } else if t
+            .members(object)
+            .all(|(k, _)| t.raw(k).starts_with("#comment"))
+        {
             let next = t.next(object);
             if next < t.next(*array) {
                 let (s, e) = t.full_span(next);

@@ -4,8 +4,8 @@
 
 pub mod classic;
 pub mod decode;
-mod directive;
 mod detect;
+mod directive;
 pub mod json;
 pub mod number;
 pub mod rules;

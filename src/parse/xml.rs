@@ -8,8 +8,8 @@ use quick_xml::events::attributes::Attribute;
 use quick_xml::events::{BytesStart, Event};
 use quick_xml::Reader;
 
-use super::rules::{FIELD_VALUE_SYNTAX, ROOT_NOT_X3D, USE_WITH_FIELDS, XML_MALFORMED};
 use super::directive::{addressed, Following};
+use super::rules::{FIELD_VALUE_SYNTAX, ROOT_NOT_X3D, USE_WITH_FIELDS, XML_MALFORMED};
 use super::xml_entities::{Entities, ExpandError};
 use super::xml_value;
 use crate::diagnostic::Diagnostic;

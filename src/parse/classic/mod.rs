@@ -96,8 +96,7 @@ pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
         );
     }
     let (mut document, diagnostics) = reader.builder.finish();
-    document.directives =
-        place_following(source, &document, &reader.lexer.directives, first_token);
+    document.directives = place_following(source, &document, &reader.lexer.directives, first_token);
     Parsed {
         encoding: Some(encoding),
         document: Some(document),
