@@ -150,6 +150,9 @@ fn report_of(
     }
 
     diagnostics.retain(|d| config.enabled(d.rule.code) && d.rule.level <= config.level);
+    let suppressed = doc.map_or(0, |doc| {
+        crate::suppress::apply(doc, text, config, &mut diagnostics)
+    });
     for d in &mut diagnostics {
         d.severity = config.severity_of(d.rule.code, d.severity);
     }
@@ -168,6 +171,7 @@ fn report_of(
         profile: doc.and_then(|d| d.profile.as_ref().map(|p| p.text.clone())),
         diagnostics: resolve(&diagnostics, text, doc),
         truncated,
+        suppressed,
         stats: doc.map(Stats::of).unwrap_or_default(),
     }
 }

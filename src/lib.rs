@@ -18,6 +18,7 @@ pub mod render;
 pub mod report;
 pub mod schema;
 pub mod shard;
+pub mod suppress;
 pub mod validate;
 
 pub use check::check_source;

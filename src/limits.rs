@@ -65,6 +65,11 @@ pub const MAX_FIELD_VALUES: usize = 1 << 24;
 /// cost a hundred times its size in memory.
 pub const MAX_DIAGNOSTICS: usize = 10_000;
 
+/// Inline suppression comments honoured in one document: each finding is compared with
+/// the comments around it, so a file of comments would otherwise cost their number times
+/// its findings. Those past the limit are LIMIT_EXCEEDED, once.
+pub const MAX_DIRECTIVES: usize = 1000;
+
 /// Bytes that references to entities declared in a DOCTYPE's internal subset may expand
 /// to in one document ("billion laughs": ten entities of ten references each stand for
 /// 10^10 bytes). No real scene declares an entity; X3D's own DOCTYPE names a DTD by its

@@ -409,6 +409,21 @@ pub struct Head {
     pub unknown_attributes: Vec<UnknownAttribute>,
 }
 
+/// A comment addressed to x3dcheck (`x3dcheck: …`) as a reader found it, with the part of
+/// the document it applies to. What it says is read where findings are gathered
+/// (`crate::suppress`), not here: readers and the model only place it.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct Directive {
+    /// The comment (XML, ClassicVRML) or the `#comment` string (JSON).
+    pub span: Span,
+    /// The text after `x3dcheck:`, as written in the input.
+    pub text: Span,
+    /// What it applies to: the element, node or statement that follows it (in JSON, also
+    /// the object that holds it); an empty span when nothing follows in its parent; None
+    /// for the whole file.
+    pub scope: Option<Span>,
+}
+
 /// One parsed document.
 #[derive(Clone, Debug)]
 pub struct Document {
@@ -443,6 +458,8 @@ pub struct Document {
     /// The library prototype bodies copies were made from, as notes name them
     /// (`` `Lamp` in lib/lamps.x3d ``); see [`LibraryPlace`].
     pub library_bodies: Vec<String>,
+    /// The comments addressed to x3dcheck, in document order.
+    pub directives: Vec<Directive>,
 }
 
 impl Document {
@@ -466,6 +483,7 @@ impl Document {
             copies: 0,
             instantiations: Vec::new(),
             library_bodies: Vec::new(),
+            directives: Vec::new(),
         }
     }
 

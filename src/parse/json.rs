@@ -90,7 +90,8 @@ pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
     };
     reader.x3d(x3d);
     reader.run();
-    let (document, diagnostics) = reader.builder.finish();
+    let (mut document, diagnostics) = reader.builder.finish();
+    document.directives = super::directive::place_json(&tree);
     Parsed {
         encoding: Some(Encoding::Json),
         document: Some(document),

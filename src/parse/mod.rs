@@ -5,6 +5,7 @@
 pub mod classic;
 pub mod decode;
 mod detect;
+mod directive;
 pub mod json;
 pub mod number;
 pub mod rules;

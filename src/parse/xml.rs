@@ -8,6 +8,7 @@ use quick_xml::events::attributes::Attribute;
 use quick_xml::events::{BytesStart, Event};
 use quick_xml::Reader;
 
+use super::directive::{addressed, Following};
 use super::rules::{FIELD_VALUE_SYNTAX, ROOT_NOT_X3D, USE_WITH_FIELDS, XML_MALFORMED};
 use super::xml_entities::{Entities, ExpandError};
 use super::xml_value;
@@ -32,15 +33,19 @@ pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
         stack: Vec::new(),
         root_closed: false,
         entities: Entities::default(),
+        directives: Following::default(),
     };
     let result = reader.run();
-    let (document, mut diagnostics) = reader.builder.finish();
+    let (mut document, mut diagnostics) = reader.builder.finish();
     match result {
-        Ok(()) => Parsed {
-            encoding: Some(Encoding::Xml),
-            document: Some(document),
-            diagnostics,
-        },
+        Ok(()) => {
+            document.directives = reader.directives.finish(source.len());
+            Parsed {
+                encoding: Some(Encoding::Xml),
+                document: Some(document),
+                diagnostics,
+            }
+        }
         Err(stop) => {
             diagnostics.push(*stop);
             Parsed {
@@ -141,6 +146,8 @@ struct XmlReader<'s> {
     root_closed: bool,
     /// Declared in the DOCTYPE's internal subset.
     entities: Entities,
+    /// The comments addressed to x3dcheck, placed on the elements that follow them.
+    directives: Following,
 }
 
 /// An attribute's name and value as text, with the value's place in the input.
@@ -181,17 +188,22 @@ impl<'s> XmlReader<'s> {
                 return Err(self.forbidden_char(bad));
             }
             match event {
-                Event::Start(element) => self.start(&element, start, end, false)?,
+                Event::Start(element) => {
+                    self.directives.start(self.stack.len(), start);
+                    self.start(&element, start, end, false)?;
+                }
                 Event::Empty(element) => {
+                    self.directives.start(self.stack.len(), start);
                     self.start(&element, start, end, true)?;
                     self.end(end);
                 }
                 Event::End(_) => self.end(end),
+                Event::Comment(_) => self.comment(start, end),
                 Event::CData(_) => self.text(start, end, true)?,
                 Event::Text(_) | Event::GeneralRef(_) => self.text(start, end, false)?,
                 Event::Eof => break,
                 Event::DocType(doctype) => self.entities.declare(&doctype),
-                Event::Comment(_) | Event::Decl(_) | Event::PI(_) => {}
+                Event::Decl(_) | Event::PI(_) => {}
             }
         }
         if !self.stack.is_empty() {
@@ -533,7 +545,21 @@ impl<'s> XmlReader<'s> {
         }
     }
 
+    /// A comment `<!-- … -->` from `start` to `end`: kept when addressed to x3dcheck; one
+    /// before the root element applies to the whole file.
+    fn comment(&mut self, start: usize, end: usize) {
+        let inner = Span::new(start + 4, end.saturating_sub(3).max(start + 4));
+        if let Some(text) = addressed(self.source, inner) {
+            let before_root = self.stack.is_empty() && !self.root_closed;
+            self.directives
+                .comment(Span::new(start, end), text, before_root);
+        }
+    }
+
     fn end(&mut self, end: usize) {
+        if !self.stack.is_empty() {
+            self.directives.end(self.stack.len() - 1, end);
+        }
         match self.stack.pop() {
             Some(Frame::Node { id, start }) => self.builder.end_node(id, Span::new(start, end)),
             Some(Frame::ProtoBody) => self.builder.end_proto_body(),

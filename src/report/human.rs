@@ -72,11 +72,16 @@ pub fn render_marked(
     out
 }
 
-/// `Checked 12 files: 3 errors, 1 warning, 0 infos, 0 hints`.
+/// `Checked 12 files: 3 errors, 1 warning, 0 infos, 0 hints`, and `(2 suppressed)` when
+/// inline comments suppressed some.
 pub fn summary_line(summary: &Summary) -> String {
     let plural = |n: usize, word: &str| format!("{n} {word}{}", if n == 1 { "" } else { "s" });
+    let suppressed = match summary.suppressed {
+        0 => String::new(),
+        n => format!(" ({n} suppressed)"),
+    };
     format!(
-        "Checked {}: {}, {}, {}, {}",
+        "Checked {}: {}, {}, {}, {}{suppressed}",
         plural(summary.files, "file"),
         plural(summary.errors, "error"),
         plural(summary.warnings, "warning"),
@@ -458,6 +463,7 @@ mod tests {
             profile: None,
             diagnostics: resolve(&[diagnostic], source.as_bytes(), None),
             truncated: false,
+            suppressed: 0,
             stats: Stats::default(),
         };
         render(&report, source.as_bytes(), false)
@@ -525,10 +531,19 @@ mod tests {
             warnings: 1,
             infos: 0,
             hints: 1,
+            suppressed: 0,
         };
         assert_eq!(
             summary_line(&summary),
             "Checked 1 file: 2 errors, 1 warning, 0 infos, 1 hint"
+        );
+        let with_suppressed = Summary {
+            suppressed: 3,
+            ..summary
+        };
+        assert_eq!(
+            summary_line(&with_suppressed),
+            "Checked 1 file: 2 errors, 1 warning, 0 infos, 1 hint (3 suppressed)"
         );
     }
 }

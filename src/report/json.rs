@@ -45,6 +45,9 @@ struct File<'a> {
     profile: Option<Cow<'a, str>>,
     diagnostics: Vec<Diagnostic<'a>>,
     truncated: bool,
+    /// Findings inline comments suppressed; said only when some were.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    suppressed: usize,
     stats: Cow<'a, Stats>,
 }
 
@@ -113,6 +116,10 @@ fn is_one(count: &usize) -> bool {
     *count == 1
 }
 
+fn is_zero(count: &usize) -> bool {
+    *count == 0
+}
+
 impl<'a> From<&'a Resolved> for Diagnostic<'a> {
     fn from(d: &'a Resolved) -> Diagnostic<'a> {
         Diagnostic {
@@ -175,6 +182,7 @@ pub fn render(reports: &[FileReport], shard: Option<Shard>) -> String {
                 profile: r.profile.as_deref().map(Cow::from),
                 diagnostics: r.diagnostics.iter().map(Diagnostic::from).collect(),
                 truncated: r.truncated,
+                suppressed: r.suppressed,
                 stats: Cow::Borrowed(&r.stats),
             })
             .collect(),
@@ -318,6 +326,7 @@ fn file_report(file: File) -> Result<FileReport, ReadError> {
         profile: file.profile.map(Cow::into_owned),
         diagnostics,
         truncated: file.truncated,
+        suppressed: file.suppressed,
         stats: file.stats.into_owned(),
     })
 }
@@ -352,6 +361,7 @@ mod tests {
             profile: None,
             diagnostics: resolve(&diagnostics, source, None),
             truncated: true,
+            suppressed: 0,
             stats: Stats::default(),
         }
     }

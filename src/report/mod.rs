@@ -34,6 +34,9 @@ pub struct FileReport {
     pub diagnostics: Vec<Resolved>,
     /// Whether `--max-diagnostics` dropped some.
     pub truncated: bool,
+    /// Findings that inline `x3dcheck: ignore` comments suppressed (a folded finding counts
+    /// as those it stands for).
+    pub suppressed: usize,
     pub stats: Stats,
 }
 
@@ -46,12 +49,21 @@ pub struct Summary {
     pub warnings: usize,
     pub infos: usize,
     pub hints: usize,
+    /// Findings inline comments suppressed; said only when some were, so that other
+    /// reports keep their bytes.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub suppressed: usize,
+}
+
+fn is_zero(n: &usize) -> bool {
+    *n == 0
 }
 
 impl Summary {
     pub fn of(reports: &[FileReport]) -> Summary {
         let mut summary = Summary {
             files: reports.len(),
+            suppressed: reports.iter().map(|r| r.suppressed).sum(),
             ..Summary::default()
         };
         for d in reports.iter().flat_map(|r| &r.diagnostics) {

@@ -3,6 +3,7 @@
 //! and comments. Positions are byte offsets into the whole input.
 
 use crate::model::Span;
+use crate::parse::directive::addressed;
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub enum Kind {
@@ -60,6 +61,9 @@ pub struct Lexer<'s> {
     colon_in_names: bool,
     /// Where a block comment that never ends starts, once seen.
     pub unterminated_comment: Option<usize>,
+    /// The comments addressed to x3dcheck, in document order: each comment's place and
+    /// that of its text after `x3dcheck:`.
+    pub directives: Vec<(Span, Span)>,
 }
 
 /// The separators outside strings: whitespace and the comma (19776-2 A.1.2).
@@ -90,6 +94,7 @@ impl<'s> Lexer<'s> {
             block_comments,
             colon_in_names,
             unterminated_comment: None,
+            directives: Vec::new(),
         }
     }
 
@@ -109,19 +114,33 @@ impl<'s> Lexer<'s> {
         }
     }
 
-    /// The end of the comment starting at `at` (a `#`).
+    /// The end of the comment starting at `at` (a `#`), noting it when it is addressed to
+    /// x3dcheck.
     pub fn comment_end(&mut self, at: usize) -> usize {
         let b = self.bytes;
-        if self.block_comments && b[at + 1..].starts_with(b"/*") {
-            return match memchr::memmem::find(&b[at + 3..], b"*/#") {
-                Some(k) => at + 3 + k + 3,
+        let (inner, end) = if self.block_comments && b[at + 1..].starts_with(b"/*") {
+            match memchr::memmem::find(&b[at + 3..], b"*/#") {
+                Some(k) => (Span::new(at + 3, at + 3 + k), at + 3 + k + 3),
                 None => {
                     self.unterminated_comment.get_or_insert(at);
-                    b.len()
+                    return b.len();
                 }
-            };
+            }
+        } else {
+            let end = memchr::memchr2(b'\n', b'\r', &b[at..]).map_or(b.len(), |k| at + k);
+            (Span::new(at + 1, end), end)
+        };
+        // The reader may look at a comment twice (peeking); it is noted once.
+        let new = self
+            .directives
+            .last()
+            .is_none_or(|(seen, _)| (seen.start as usize) < at);
+        if new {
+            if let Some(text) = addressed(b, inner) {
+                self.directives.push((Span::new(at, end), text));
+            }
         }
-        memchr::memchr2(b'\n', b'\r', &b[at..]).map_or(b.len(), |k| at + k)
+        end
     }
 
     /// The next token, without consuming it.

@@ -17,6 +17,7 @@ use crate::diagnostic::Diagnostic;
 use crate::limits::{MAX_DEPTH, MAX_INPUT_BYTES};
 use crate::model::builder::{Limit, Parent};
 use crate::model::*;
+use crate::parse::directive::place_following;
 use crate::parse::number::parse_f64;
 use crate::parse::rules::{FIELD_VALUE_SYNTAX, VRML_MALFORMED};
 use crate::parse::{KeepValues, Parsed};
@@ -85,6 +86,8 @@ pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
         end_reported: false,
     };
     reader.header(start);
+    // Directive comments before the first token after the header apply to the whole file.
+    let first_token = reader.lexer.peek().start;
     reader.statements(None);
     if let Some(at) = reader.lexer.unterminated_comment {
         reader.malformed(
@@ -92,7 +95,8 @@ pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
             "a block comment `#/*` that never ends with `*/#`",
         );
     }
-    let (document, diagnostics) = reader.builder.finish();
+    let (mut document, diagnostics) = reader.builder.finish();
+    document.directives = place_following(source, &document, &reader.lexer.directives, first_token);
     Parsed {
         encoding: Some(encoding),
         document: Some(document),

@@ -20,6 +20,7 @@ pub mod profile_missing;
 pub mod profile_unknown;
 pub mod root_content_ignored;
 pub mod sfnode_multiple;
+pub mod suppression_unused;
 pub mod unit_category_duplicate;
 pub mod validation_incomplete;
 pub mod x3d_version_missing;
@@ -64,6 +65,7 @@ pub static RULES: &[&Check] = &[
     &unit_category_duplicate::CHECK,
     &Check::reported(&crate::parse::rules::GZIP_CORRUPT),
     &Check::reported(&crate::parse::rules::XML_ENCODING_UNSUPPORTED),
+    &Check::reported(&suppression_unused::SUPPRESSION_UNUSED),
 ];
 
 /// The index of the first element that fails a test and how many fail, for rules that
