@@ -125,7 +125,7 @@ pub fn remove_field(source: &[u8], encoding: Encoding, name: Span, value: Span) 
     Some(edit(Span::new(start, end), ""))
 }
 
-fn skip_space(source: &[u8], mut at: usize) -> usize {
+pub fn skip_space(source: &[u8], mut at: usize) -> usize {
     while source.get(at).is_some_and(|b| b.is_ascii_whitespace()) {
         at += 1;
     }

@@ -88,7 +88,7 @@ const BACK_FIELDS: [(&str, &str); 6] = [
 fn upgrade(ctx: &Ctx, id: NodeId, separate: bool) -> Option<Fix> {
     let (doc, source) = (ctx.doc, ctx.source);
     let node = doc.node(id);
-    let Place::Field { parent, entry } = node.place else {
+    let Place::Field { parent, .. } = node.place else {
         return None;
     };
     let appearance = doc.node(parent);
@@ -136,9 +136,14 @@ fn upgrade(ctx: &Ctx, id: NodeId, separate: bool) -> Option<Fix> {
             Encoding::Json => {
                 let members: Vec<String> =
                     back.iter().map(|(n, v)| format!("\"@{n}\": {v}")).collect();
-                let value = appearance.fields.get(entry as usize)?.span;
+                // The node's span is its member `"TwoSidedMaterial": {…}`; the `-material`
+                // value is the object around it, closed by the next `}`.
+                let close = edits::skip_space(source, node.span.end as usize);
+                if source.get(close) != Some(&b'}') {
+                    return None;
+                }
                 (
-                    value.end,
+                    close as u32 + 1,
                     format!(
                         ", \"-backMaterial\": {{\"Material\": {{{}}}}}",
                         members.join(", ")
