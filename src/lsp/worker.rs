@@ -50,6 +50,8 @@ pub struct Worker {
 }
 
 impl Worker {
+    // A Uri's hash and equality are those of its text; its interior cache changes neither.
+    #[allow(clippy::mutable_key_type)]
     pub fn run(mut self) {
         let mut texts: HashMap<Uri, (i32, Arc<String>)> = HashMap::new();
         while let Ok(first) = self.jobs.recv() {

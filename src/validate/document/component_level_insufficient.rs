@@ -161,11 +161,7 @@ fn declare(ctx: &Ctx, component: &str, level: u8) -> Option<Fix> {
         }
     };
     let fix = |edit| Some(edits::fix(title.clone(), Applicability::Safe, vec![edit]));
-    if let Some(existing) = statements
-        .iter()
-        .filter(|c| c.name.text == component)
-        .last()
-    {
+    if let Some(existing) = statements.iter().rev().find(|c| c.name.text == component) {
         let (_, span) = existing.level?;
         let quoted = source.get(span.start as usize) == Some(&b'"');
         let number = if quoted {

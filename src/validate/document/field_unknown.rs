@@ -93,7 +93,7 @@ fn check(ctx: &mut Ctx) {
             .help_opt(suggestion.map(|c| format!("did you mean `{c}`?")));
             let already_set = |to: &str| node.fields.iter().any(|e| e.name() == to);
             if let Some(to) = suggestion
-                .filter(|to| to.eq_ignore_ascii_case(name) && !already_set(*to))
+                .filter(|to| to.eq_ignore_ascii_case(name) && !already_set(to))
                 .filter(|_| edits::written(ctx.doc, id))
             {
                 if let Some(fix) = rename(ctx, entry.name_span, name, to) {
