@@ -37,11 +37,14 @@ impl Candidate {
     }
 }
 
-/// The completions at `offset` of `text` (the newest text); `analysis`, the last check,
-/// gives the version and the DEF names.
+/// The completions at `offset` of `text` (the newest text); `analysis`, the last check
+/// (or, if its reader stopped, the last that read a document), gives the version and the
+/// DEF names.
 pub fn complete(text: &[u8], offset: usize, analysis: Option<&Analysis>) -> Vec<Candidate> {
     let syntax = Syntax::of(text);
-    let doc = analysis.and_then(|a| a.document.as_ref());
+    let doc = analysis
+        .and_then(Analysis::with_document)
+        .and_then(|a| a.document.as_ref());
     let version = doc.and_then(|d| d.version).unwrap_or(Version::V4_0);
     let schema = schema(version);
     match context(syntax, text, offset) {

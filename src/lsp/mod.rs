@@ -51,6 +51,19 @@ pub struct Analysis {
     pub text: Vec<u8>,
     pub document: Option<Document>,
     pub report: FileReport,
+    /// When the reader stopped (no document, as while an author is typing): the newest
+    /// check that read one, which completion takes DEF names and the version from.
+    pub modelled: Option<Arc<Analysis>>,
+}
+
+impl Analysis {
+    /// This check if it read a document, else the newest one that did.
+    pub fn with_document(&self) -> Option<&Analysis> {
+        match self.document {
+            Some(_) => Some(self),
+            None => self.modelled.as_deref(),
+        }
+    }
 }
 
 /// Runs the server on stdin/stdout until the client says `exit`.

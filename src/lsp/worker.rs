@@ -128,8 +128,19 @@ impl Worker {
                 .map(|d| convert::diagnostic(d, &uri, &lines, &self.links))
                 .collect()
         };
-        let analysis = Analysis::new(version, checked_text, document, report);
-        self.lock().insert(uri.clone(), Arc::new(analysis));
+        let mut analyses = self.lock();
+        let modelled = match document {
+            Some(_) => None,
+            None => analyses
+                .get(&uri)
+                .and_then(|previous| match previous.document {
+                    Some(_) => Some(previous.clone()),
+                    None => previous.modelled.clone(),
+                }),
+        };
+        let analysis = Analysis::new(version, checked_text, document, report, modelled);
+        analyses.insert(uri.clone(), Arc::new(analysis));
+        drop(analyses);
         self.publish(uri, diagnostics, Some(version));
     }
 
@@ -178,12 +189,19 @@ fn config_error(error: &ConfigError) -> Diagnostic {
 }
 
 impl Analysis {
-    fn new(version: i32, text: Vec<u8>, document: Option<Document>, report: FileReport) -> Self {
+    fn new(
+        version: i32,
+        text: Vec<u8>,
+        document: Option<Document>,
+        report: FileReport,
+        modelled: Option<Arc<Analysis>>,
+    ) -> Self {
         Analysis {
             version,
             text,
             document,
             report,
+            modelled,
         }
     }
 }
