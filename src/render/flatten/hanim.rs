@@ -10,7 +10,7 @@
 
 use glam::DMat4;
 
-use super::{Context, Scope, Walker};
+use super::{child_ids, Context, Scope, Walker};
 use crate::model::NodeId;
 use crate::render::fields::ints;
 
@@ -29,10 +29,8 @@ impl Walker<'_> {
         };
         let world = world * local;
         let node = context.doc.node(id);
-        let kids =
-            |name: &str| -> Vec<NodeId> { node.children(name).iter().map(|c| c.node).collect() };
-        let skin = kids("skin");
-        if !skin.is_empty() && weights_skin(context, &kids("skeleton")) {
+        let (skeleton, skin) = (child_ids(node, "skeleton"), child_ids(node, "skin"));
+        if !skin.is_empty() && weights_skin(context, &skeleton) {
             self.note(
                 context,
                 id,
@@ -41,7 +39,7 @@ impl Walker<'_> {
                     .into(),
             );
         }
-        self.walk_children(context, &kids("skeleton"), world, scope, depth);
+        self.walk_children(context, &skeleton, world, scope, depth);
         self.walk_children(context, &skin, world, scope, depth);
     }
 
@@ -55,13 +53,7 @@ impl Walker<'_> {
         depth: usize,
     ) {
         if let Some(local) = self.local_transform(context, id) {
-            let kids: Vec<NodeId> = context
-                .doc
-                .node(id)
-                .children("children")
-                .iter()
-                .map(|c| c.node)
-                .collect();
+            let kids = child_ids(context.doc.node(id), "children");
             self.walk_children(context, &kids, world * local, scope, depth);
         }
     }

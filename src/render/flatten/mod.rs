@@ -26,7 +26,7 @@ use glam::{DMat4, DVec3, DVec4};
 use super::draw_list::{DrawList, Light, Viewport, MAX_CLIP_PLANES};
 use super::fields::{boolean, floats};
 use crate::model::bounds::{local_transform, Bounds};
-use crate::model::{units, Document, NodeId};
+use crate::model::{units, Document, Node, NodeId};
 use crate::validate::texturing::data_url;
 use place::Pending;
 
@@ -48,6 +48,11 @@ pub fn primitive_budget(width: u32, height: u32) -> usize {
 
 /// The transformation at the root of a file's scene: its UNIT length factor as a uniform
 /// scale (see [`crate::model::units`]; its angles are converted as values).
+/// The nodes of a node field, in order (empty when unset or NULL).
+fn child_ids(node: &Node, field: &str) -> Vec<NodeId> {
+    node.children(field).iter().map(|c| c.node).collect()
+}
+
 fn scene_root(doc: &Document) -> DMat4 {
     DMat4::from_scale(DVec3::splat(doc.units().length))
 }
@@ -448,7 +453,7 @@ impl Walker<'_> {
     ) {
         let doc = context.doc;
         let node = doc.node(id);
-        let kids: Vec<NodeId> = node.children("children").iter().map(|c| c.node).collect();
+        let kids = child_ids(node, "children");
         let mut inner = match super::fields::child(doc, id, "viewport") {
             Some(v) if doc.node(v).is_a("X3DViewportNode") => self.viewport_scope(doc, v, scope),
             _ => scope.clone(),

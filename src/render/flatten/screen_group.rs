@@ -14,7 +14,7 @@
 use glam::{DMat4, DVec3};
 
 use super::camera::{default_viewpoint, ViewpointFound};
-use super::{Context, Scope, Walker};
+use super::{child_ids, Context, Scope, Walker};
 use crate::model::NodeId;
 use crate::render::draw_list::Projection;
 
@@ -52,13 +52,7 @@ impl Walker<'_> {
             return;
         };
         let world = DMat4::from_scale_rotation_translation(DVec3::splat(pixel), rotation, origin);
-        let kids: Vec<NodeId> = context
-            .doc
-            .node(id)
-            .children("children")
-            .iter()
-            .map(|c| c.node)
-            .collect();
+        let kids = child_ids(context.doc.node(id), "children");
         self.walk_children(context, &kids, world, scope, depth);
     }
 }
