@@ -150,6 +150,13 @@ const ALL_FINDINGS: [&str; 5] = [
     "DEF_DUPLICATE@Switch",
 ];
 
+/// The findings outside the element a comment before `Transform` covers.
+const OUTSIDE_THE_COVERED_ELEMENT: [&str; 3] = [
+    "NODE_UNKNOWN@Foo",
+    "NODE_UNKNOWN@Baz",
+    "DEF_DUPLICATE@Switch",
+];
+
 #[test]
 fn without_a_comment_every_finding_is_reported() {
     for encoding in ENCODINGS {
@@ -185,15 +192,7 @@ fn a_comment_suppresses_its_code_in_what_follows_and_nowhere_else() {
 fn several_codes_in_one_comment() {
     for encoding in ENCODINGS {
         let (found, suppressed) = with_comment(encoding, "NODE_UNKNOWN, DEF_DUPLICATE", false);
-        assert_eq!(
-            found,
-            strings(&[
-                "NODE_UNKNOWN@Foo",
-                "NODE_UNKNOWN@Baz",
-                "DEF_DUPLICATE@Switch"
-            ]),
-            "{encoding:?}"
-        );
+        assert_eq!(found, strings(&OUTSIDE_THE_COVERED_ELEMENT), "{encoding:?}");
         assert_eq!(suppressed, 2, "{encoding:?}");
     }
 }
@@ -211,15 +210,7 @@ fn prefixes_all_and_any_case_as_for_ignore() {
             "{encoding:?}"
         );
         let (found, suppressed) = with_comment(encoding, "ALL", false);
-        assert_eq!(
-            found,
-            strings(&[
-                "NODE_UNKNOWN@Foo",
-                "NODE_UNKNOWN@Baz",
-                "DEF_DUPLICATE@Switch"
-            ]),
-            "{encoding:?}"
-        );
+        assert_eq!(found, strings(&OUTSIDE_THE_COVERED_ELEMENT), "{encoding:?}");
         assert_eq!(suppressed, 2, "{encoding:?}");
     }
 }
