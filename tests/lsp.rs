@@ -156,6 +156,10 @@ fn a_session_from_initialize_to_exit() {
         "{on_node}"
     );
     assert!(on_node.contains("12.4."), "the clause: {on_node}");
+    assert!(
+        on_node.contains("Material specifies surface rendering properties"),
+        "the UOM's description: {on_node}"
+    );
     let on_field = hover(&mut client, "diffuseColor", 3);
     assert!(
         on_field.contains("SFColor") && on_field.contains("inputOutput"),
@@ -164,6 +168,10 @@ fn a_session_from_initialize_to_exit() {
     assert!(
         on_field.contains("default `0.8 0.8 0.8`") && on_field.contains("range [0"),
         "{on_field}"
+    );
+    assert!(
+        on_field.contains("how much direct, angle-dependent light is reflected"),
+        "the UOM's description: {on_field}"
     );
     let on_use = hover(&mut client, "USE='Ball'", 6);
     assert!(
@@ -214,11 +222,24 @@ fn a_session_from_initialize_to_exit() {
         6,
     );
     assert!(fog.contains(&"EXPONENTIAL".into()), "{fog:?}");
+    // In a prototype body a USE names the body's DEFs, in the scene the scene's (4.4.4.3).
+    let protos = "<X3D profile='Immersive' version='4.0'><Scene>\
+        <ProtoDeclare name='P'><ProtoBody><Group DEF='Inner'/><Group USE='Inner'/></ProtoBody>\
+        </ProtoDeclare><Group DEF='Outer'/><Group USE='Outer'/></Scene></X3D>";
     client.notify(
         "textDocument/didChange",
-        json!({"textDocument": {"uri": uri, "version": 7}, "contentChanges": [{"text": fixed}]}),
+        json!({"textDocument": {"uri": uri, "version": 7}, "contentChanges": [{"text": protos}]}),
     );
     client.wait_for("textDocument/publishDiagnostics", |p| p["version"] == 7);
+    let in_body = labels(&mut client, &protos.replace("USE='Inner", "USE='|Inner"), 8);
+    assert_eq!(in_body, ["Inner"], "in the body");
+    let in_scene = labels(&mut client, &protos.replace("USE='Outer", "USE='|Outer"), 9);
+    assert_eq!(in_scene, ["Outer"], "in the scene");
+    client.notify(
+        "textDocument/didChange",
+        json!({"textDocument": {"uri": uri, "version": 10}, "contentChanges": [{"text": fixed}]}),
+    );
+    client.wait_for("textDocument/publishDiagnostics", |p| p["version"] == 10);
 
     // Definition from a USE and from a ROUTE's node names.
     let definition = |client: &mut Client, needle: &str, shift: usize| {

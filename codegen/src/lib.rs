@@ -1,7 +1,9 @@
-//! Generates `src/schema/generated.rs`, the checker's node and field tables, from the X3D
-//! Unified Object Model files in `../shared/oracle`.
+//! Generates `src/schema/generated.rs`, the checker's node and field tables, and
+//! `src/schema/descriptions.rs`, their documentation text, from the X3D Unified Object Model
+//! files in `../shared/oracle`.
 
 mod apply;
+mod describe;
 mod emit;
 mod uom;
 mod xml;
@@ -40,22 +42,25 @@ pub fn default_oracle_dir() -> PathBuf {
     workspace_root().join("../shared/oracle")
 }
 
-/// The generated file, relative to the workspace root.
-pub const OUTPUT: &str = "src/schema/generated.rs";
+/// A generated file's path relative to the workspace root, and its text.
+pub type Generated = (&'static str, String);
 
 /// Reads `X3dUnifiedObjectModel-<version>.xml` for every X3D version from `oracle_dir`,
 /// applies the corrections of `src/schema/overrides.rs`, derives VRML97's table from X3D
-/// 3.0's with `src/schema/vrml97.rs` and returns the text of `generated.rs`.
+/// 3.0's with `src/schema/vrml97.rs` and returns the text of `generated.rs`, with the
+/// descriptions of the nodes and fields in `descriptions.rs`.
 /// Prints to stderr what it left out of the tables and what the corrections did.
-pub fn generate(oracle_dir: &Path) -> Result<String, String> {
+pub fn generate(oracle_dir: &Path) -> Result<[Generated; 2], String> {
     let mut notes = Notes::default();
     let mut applied = apply::Applied::default();
+    let mut descriptions = describe::Descriptions::default();
     let mut schemas = Vec::new();
     for version in Version::X3D {
         let path = oracle_dir.join(format!("X3dUnifiedObjectModel-{version}.xml"));
         let in_file = |e: String| format!("{}: {e}", path.display());
         let text = fs::read_to_string(&path).map_err(|e| in_file(e.to_string()))?;
         let root = xml::parse(&text).map_err(in_file)?;
+        descriptions.read(&root);
         let mut schema = uom::read(version, &root, &mut notes).map_err(in_file)?;
         apply::apply(&mut schema, &mut applied)?;
         schemas.push(schema);
@@ -76,7 +81,10 @@ pub fn generate(oracle_dir: &Path) -> Result<String, String> {
         "overrides the UOM already agrees with (kept to pin the value)",
         &applied.no_ops,
     );
-    Ok(emit::render(&schemas))
+    Ok([
+        ("src/schema/generated.rs", emit::render(&schemas)),
+        ("src/schema/descriptions.rs", descriptions.render(&schemas)),
+    ])
 }
 
 fn print_notes(notes: &Notes) {

@@ -1,4 +1,5 @@
-//! `cargo run -p x3dcheck-codegen`: regenerates `src/schema/generated.rs`.
+//! `cargo run -p x3dcheck-codegen`: regenerates `src/schema/generated.rs` and
+//! `src/schema/descriptions.rs`.
 
 use std::fs;
 use std::process::ExitCode;
@@ -7,23 +8,21 @@ use std::time::Instant;
 fn main() -> ExitCode {
     let started = Instant::now();
     let oracle_dir = x3dcheck_codegen::default_oracle_dir();
-    let text = match x3dcheck_codegen::generate(&oracle_dir) {
-        Ok(text) => text,
+    let generated = match x3dcheck_codegen::generate(&oracle_dir) {
+        Ok(generated) => generated,
         Err(e) => {
             eprintln!("codegen: {e}");
             return ExitCode::FAILURE;
         }
     };
-    let output = x3dcheck_codegen::workspace_root().join(x3dcheck_codegen::OUTPUT);
-    if let Err(e) = fs::write(&output, &text) {
-        eprintln!("codegen: {}: {e}", output.display());
-        return ExitCode::FAILURE;
+    for (path, text) in &generated {
+        let output = x3dcheck_codegen::workspace_root().join(path);
+        if let Err(e) = fs::write(&output, text) {
+            eprintln!("codegen: {}: {e}", output.display());
+            return ExitCode::FAILURE;
+        }
+        eprintln!("codegen: wrote {path} ({} bytes)", text.len());
     }
-    eprintln!(
-        "codegen: wrote {} ({} bytes) in {:.2?}",
-        x3dcheck_codegen::OUTPUT,
-        text.len(),
-        started.elapsed()
-    );
+    eprintln!("codegen: done in {:.2?}", started.elapsed());
     ExitCode::SUCCESS
 }

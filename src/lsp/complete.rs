@@ -1,13 +1,16 @@
 //! Completion: node types the enclosing field accepts, a node's field names (attribute
-//! names in XML, `@`/`-` keys in JSON), enumeration values, and DEF names after USE.
+//! names in XML, `@`/`-` keys in JSON), enumeration values, and the DEF names a USE there
+//! may name.
 
 use lsp_types::{CompletionItem, CompletionItemKind, Documentation, MarkupContent, MarkupKind};
 
 use super::context::{context, Context, Syntax};
-use super::hover::{field_hover, node_type_markdown};
+use super::hover::{escape_markdown, field_hover, node_type_markdown};
 use super::Analysis;
-use crate::model::Scope;
-use crate::schema::{schema, FieldDef, FieldType, NodeDef, Version, VersionSchema};
+use crate::model::{Document, Scope};
+use crate::schema::{
+    schema, value_description, FieldDef, FieldType, NodeDef, Version, VersionSchema,
+};
 
 /// A completion's label, kind, detail and Markdown documentation.
 pub struct Candidate {
@@ -66,7 +69,7 @@ pub fn complete(text: &[u8], offset: usize, analysis: Option<&Analysis>) -> Vec<
                         label: value.to_string(),
                         kind: CompletionItemKind::ENUM_MEMBER,
                         detail: Some(format!("{} of {node}", field.name)),
-                        doc: None,
+                        doc: value_description(&node, field.name, value).map(escape_markdown),
                     })
                     .collect()
             })
@@ -75,10 +78,11 @@ pub fn complete(text: &[u8], offset: usize, analysis: Option<&Analysis>) -> Vec<
             let Some(doc) = doc else {
                 return Vec::new();
             };
+            let scope = scope_at(doc, offset);
             let mut names: Vec<Candidate> = doc
                 .defs
                 .iter()
-                .filter(|((scope, _), _)| *scope == Scope::Scene)
+                .filter(|((def_scope, _), _)| *def_scope == scope)
                 .map(|((_, name), node)| Candidate {
                     label: name.clone(),
                     kind: CompletionItemKind::REFERENCE,
@@ -94,6 +98,32 @@ pub fn complete(text: &[u8], offset: usize, analysis: Option<&Analysis>) -> Vec<
         }
         None => Vec::new(),
     }
+}
+
+/// The scope whose DEF names a USE at `offset` may name: the body of the innermost
+/// prototype whose body (from its first node or ROUTE to its last) holds the offset, else
+/// the scene. The document may be an older check's (while the newest text does not parse),
+/// whose places are then near, not exact.
+fn scope_at(doc: &Document, offset: usize) -> Scope {
+    let body_extent = |index: usize| {
+        let nodes = doc.protos[index].body.iter().map(|child| child.span);
+        let routes = doc
+            .routes
+            .iter()
+            .filter(|route| route.scope == Scope::Proto(index))
+            .map(|route| route.span);
+        nodes
+            .chain(routes)
+            .fold(None, |extent: Option<(usize, usize)>, span| {
+                let (start, end) = (span.start as usize, span.end as usize);
+                Some(extent.map_or((start, end), |(s, e)| (s.min(start), e.max(end))))
+            })
+    };
+    (0..doc.protos.len())
+        .filter_map(|index| Some((index, body_extent(index)?)))
+        .filter(|(_, (start, end))| *start < offset && offset < *end)
+        .min_by_key(|(_, (start, end))| end - start)
+        .map_or(Scope::Scene, |(index, _)| Scope::Proto(index))
 }
 
 /// Whether node field `field` accepts a node of type `node`.
@@ -236,5 +266,12 @@ mod tests {
         assert!(json.contains(&"@bboxSize".to_string()));
         let fog = labels("<X3D><Scene><Fog fogType='|");
         assert_eq!(fog, ["LINEAR", "EXPONENTIAL"].map(String::from).to_vec());
+        let offset = "<X3D><Scene><Fog fogType='".len();
+        let linear = complete(b"<X3D><Scene><Fog fogType='", offset, None)
+            .into_iter()
+            .next()
+            .and_then(|c| c.doc)
+            .unwrap_or_default();
+        assert!(linear.contains("linear blending"), "{linear}");
     }
 }

@@ -2,8 +2,8 @@
 //! access type, default, range, enumeration, accepted node types), a USE or ROUTE name (the
 //! DEF it names and where), and the rule docs of the findings at the place.
 //!
-//! The schema tables (generated from the X3D Unified Object Model) carry no description
-//! text, so hovers show what they do carry.
+//! Node and field descriptions are the X3D Unified Object Model's, generated into
+//! `schema::descriptions` at the newest version's wording.
 
 use std::fmt::Write as _;
 
@@ -13,7 +13,9 @@ use super::position::Lines;
 use super::Analysis;
 use crate::diagnostic::Span;
 use crate::model::{Document, FieldRef, Node, NodeKind};
-use crate::schema::{clauses, range_text, FieldDef, NodeDef, Version};
+use crate::schema::{
+    clauses, field_description, node_description, range_text, FieldDef, NodeDef, Version,
+};
 use crate::validate::find_rule;
 
 /// The hover at `offset`: the span it concerns and its Markdown.
@@ -102,6 +104,9 @@ pub fn node_type_markdown(def: &NodeDef, version: Version) -> String {
     if let Some(clause) = clauses::node_subclause(version, def.name) {
         let _ = write!(out, " · ISO/IEC 19775-1 {clause}");
     }
+    if let Some(text) = node_description(def.name) {
+        let _ = write!(out, "\n\n{}", escape_markdown(text));
+    }
     let _ = write!(
         out,
         "\n\ndefault containerField `{}` · {} fields",
@@ -122,6 +127,9 @@ pub fn field_hover(def: &FieldDef, node: &str) -> String {
         def.ty.as_str(),
         def.access.as_str()
     );
+    if let Some(text) = field_description(node, def.name) {
+        let _ = write!(out, "\n\n{}", escape_markdown(text));
+    }
     if !def.default.is_empty() {
         let _ = write!(out, "\n\ndefault `{}`", def.default);
     }
@@ -153,6 +161,22 @@ pub fn field_hover(def: &FieldDef, node: &str) -> String {
             "\n\nneeds component {} level {}",
             level.component, level.level
         );
+    }
+    out
+}
+
+/// UOM prose as Markdown text: the characters Markdown would read as emphasis, code, links
+/// or HTML are escaped (descriptions say `x*y`, `<Shape>` and `[0,1]`).
+pub fn escape_markdown(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        if matches!(
+            c,
+            '\\' | '*' | '_' | '`' | '<' | '>' | '[' | ']' | '#' | '|'
+        ) {
+            out.push('\\');
+        }
+        out.push(c);
     }
     out
 }

@@ -184,3 +184,51 @@ pub fn json_object_member(source: &[u8], from: usize, to: usize, name: &str) -> 
     }
     None
 }
+
+/// Where an XML document's header ends: at its `<head>` or `<Scene>` start tag after
+/// `from`, whichever comes first.
+pub fn xml_header_end(source: &[u8], from: usize) -> Option<usize> {
+    ["head", "Scene"]
+        .into_iter()
+        .filter_map(|name| xml_start_tag(source, from, source.len(), name))
+        .min()
+}
+
+/// Where the members of a JSON document's `X3D` object that describe it end: at its
+/// `"head"` or `"Scene"` key after `from`, whichever comes first.
+pub fn json_header_end(source: &[u8], from: usize) -> Option<usize> {
+    let rest = source.get(from..)?;
+    [&b"\"head\""[..], b"\"Scene\""]
+        .into_iter()
+        .filter_map(|key| memchr::memmem::find(rest, key))
+        .min()
+        .map(|at| from + at)
+}
+
+/// The version numbers `version` in the names of the DTD and schema files written in
+/// `source[..end]`: the DOCTYPE's public identifier (`DTD X3D 3.3//EN`) and system file
+/// (`x3d-3.3.dtd`), the XML Schema (`x3d-3.3.xsd`) and the JSON schema
+/// (`x3d-3.3-JSONSchema.json`).
+pub fn schema_file_versions(source: &[u8], end: usize, version: &str) -> Vec<Span> {
+    const NAMES: [(&str, &str); 4] = [
+        ("DTD X3D ", "//EN"),
+        ("x3d-", ".dtd"),
+        ("x3d-", ".xsd"),
+        ("x3d-", "-JSONSchema.json"),
+    ];
+    let header = &source[..end.min(source.len())];
+    let mut spans: Vec<Span> = NAMES
+        .iter()
+        .flat_map(|(before, after)| {
+            let name = format!("{before}{version}{after}");
+            memchr::memmem::find_iter(header, name.as_bytes())
+                .map(|at| {
+                    let start = at + before.len();
+                    Span::new(start, start + version.len())
+                })
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    spans.sort_by_key(|span| span.start);
+    spans
+}

@@ -1,7 +1,7 @@
 //! NODE_NOT_IN_VERSION: a node type of another X3D version (or one X3D added to VRML97).
 
 use crate::diagnostic::{Applicability, Fix, Span};
-use crate::model::NodeKind;
+use crate::model::{Encoding, NodeKind};
 use crate::report::Diagnostic;
 use crate::schema::{self, versions, Version};
 use crate::validate::{edits, Ctx};
@@ -30,9 +30,11 @@ crate::declare_rule! {
     /// In an X3D document (not VRML97), where every node so reported exists in a later
     /// version, the fix raises the `version` (XML attribute, JSON `@version`, ClassicVRML
     /// header) to the first version that has them all; each finding carries that same
-    /// fix. It is unsafe: browsers of the old version no longer load the scene, other
-    /// rules of the new version apply (deprecations, profile and component levels), and
-    /// an XML document's DOCTYPE or schema location still names the old version's files.
+    /// fix, which also raises the number in the DTD and schema files the header names
+    /// (the DOCTYPE's `DTD X3D 3.3//EN` and `x3d-3.3.dtd`, `xsd:noNamespaceSchemaLocation`'s
+    /// `x3d-3.3.xsd`, JSON's `x3d-3.3-JSONSchema.json`). It is unsafe: browsers of the old
+    /// version no longer load the scene, and other rules of the new version apply
+    /// (deprecations, profile and component levels).
     /// A node that a later version removed (a VRML97 one) has no fix.
     ///
     /// ## Clause
@@ -86,7 +88,8 @@ fn check(ctx: &mut Ctx) {
     }
 }
 
-/// Replaces the version as written with `target`'s number.
+/// Replaces the version as written with `target`'s number, and the number in the names of
+/// the DTD and schema files an XML or JSON document's header names.
 fn raise_version(ctx: &Ctx, target: Version) -> Option<Fix> {
     if ctx.version == Version::Vrml97 || target <= ctx.version {
         return None;
@@ -95,10 +98,23 @@ fn raise_version(ctx: &Ctx, target: Version) -> Option<Fix> {
     let number = target.name().strip_prefix("X3D ")?;
     let text = ctx.source.get(written.span.range())?;
     let at = memchr::memmem::find(text, written.text.as_bytes())? + written.span.start as usize;
+    let mut edits = vec![edits::edit(Span::new(at, at + written.text.len()), number)];
+    let header_end = match ctx.doc.encoding {
+        Encoding::Xml => edits::xml_header_end(ctx.source, written.span.end as usize),
+        Encoding::Json => edits::json_header_end(ctx.source, written.span.end as usize),
+        Encoding::ClassicVrml | Encoding::Vrml97 => None,
+    };
+    if let Some(end) = header_end {
+        edits.extend(
+            edits::schema_file_versions(ctx.source, end, &written.text)
+                .into_iter()
+                .map(|span| edits::edit(span, number)),
+        );
+    }
     Some(edits::fix(
         format!("Raise the version to {number}"),
         Applicability::Unsafe,
-        vec![edits::edit(Span::new(at, at + written.text.len()), number)],
+        edits,
     ))
 }
 
