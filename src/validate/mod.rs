@@ -11,6 +11,7 @@ pub mod lighting;
 pub mod navigation;
 pub mod networking;
 pub mod numbers;
+pub mod nurbs;
 pub mod prototypes;
 mod registry;
 pub mod rendering;

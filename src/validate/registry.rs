@@ -5,8 +5,8 @@
 use std::sync::LazyLock;
 
 use super::{
-    document, events, interpolation, lighting, navigation, networking, prototypes, rendering,
-    scripting, shaders, shape, texturing, Check, Rule,
+    document, events, interpolation, lighting, navigation, networking, nurbs, prototypes,
+    rendering, scripting, shaders, shape, texturing, Check, Rule,
 };
 
 /// Every rule with its check function (None for those reported while reading).
@@ -24,6 +24,7 @@ pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {
         scripting::RULES,
         interpolation::RULES,
         navigation::RULES,
+        nurbs::RULES,
     ]
     .concat()
 });
