@@ -386,7 +386,7 @@ impl Walker<'_> {
         if let Some(entry) = self.texture_cache.get(&key) {
             return *entry;
         }
-        let loaded = match textures::load(doc, texture, context.base, &self.options.base_dir) {
+        let loaded = match textures::load(doc, texture, context.base, &self.options.root) {
             Ok(loaded) => {
                 let bytes: usize = loaded.texture.levels.iter().map(Vec::len).sum();
                 if self.spent.texture_bytes + bytes > MAX_TEXTURE_BYTES {
