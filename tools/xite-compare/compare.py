@@ -77,7 +77,7 @@ CAUSE_CLASSES = {
     "HAnimHumanoid children, ScreenGroup scale, Inline bounds): re-run after the merge",
     "xite": "X_ITE departs from the spec (the spec wins)",
     "reported": "what x3dcheck reports as not drawn or drawn approximately (a documented "
-    "limit: linetype, FillProperties, shaders, movies, cube maps, …)",
+    "limit: FillProperties, shaders, movies, cube maps, …)",
     "extension": "nodes or field values outside the spec (a browser's own), which X_ITE "
     "draws or rejects its own way",
     "choice": "the spec leaves it to the browser (texture filtering: 18.4.9, DEFAULT "
