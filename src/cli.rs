@@ -678,6 +678,7 @@ fn check_input(
         let preview = x3dcheck::render::prepare(
             render,
             Path::new(&name),
+            config.root.as_deref(),
             &source,
             document.as_ref(),
             &mut report,

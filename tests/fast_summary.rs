@@ -246,9 +246,10 @@ fn render_at_fast_keeps_the_values_and_draws_what_standard_draws() {
             quality: x3dcheck::render::Quality::Balanced,
             camera: "auto".to_string(),
         };
-        let preview = x3dcheck::render::prepare(&args, &scene, &source, doc.as_ref(), &mut report)
-            .unwrap()
-            .unwrap();
+        let preview =
+            x3dcheck::render::prepare(&args, &scene, None, &source, doc.as_ref(), &mut report)
+                .unwrap()
+                .unwrap();
         (
             preview.list().meshes().count(),
             format!("{:?}", preview.list()),

@@ -354,7 +354,15 @@ fn image_bombs_are_not_drawn() {
         camera: "auto".to_string(),
     };
     let started = Instant::now();
-    render_image(&args, &path, source.as_bytes(), doc.as_ref(), &mut report).unwrap();
+    render_image(
+        &args,
+        &path,
+        None,
+        source.as_bytes(),
+        doc.as_ref(),
+        &mut report,
+    )
+    .unwrap();
     assert!(started.elapsed() < QUICK);
     let limits = limits_of(&report);
     assert_eq!(limits.len(), 1, "{report:?}");
@@ -396,6 +404,54 @@ fn urls_leaving_the_tree_are_not_read() {
     assert!(
         !codes(&report).contains(&"IMAGE_UNREADABLE"),
         "{messages:#?}"
+    );
+}
+
+/// `--render` reads Inlines from the tree the check reads from: for a file named on the
+/// command line, the current directory when the file lies in it (`cli/discover.rs`), so a
+/// scene's `../models/` Inline is drawn from the directory above and refused from its own.
+#[cfg(feature = "render")]
+#[test]
+fn render_reads_inlines_from_the_tree_being_checked() {
+    let dir = scratch(
+        "render-tree",
+        &[
+            (
+                "scenes/s.x3d",
+                &scene("<Inline url='\"../models/box.x3d\"'/>"),
+            ),
+            ("models/box.x3d", &scene("<Shape><Box/></Shape>")),
+        ],
+    );
+    let inline_notes = |cwd: &Path, file: &str| -> Vec<String> {
+        let output = x3dcheck(
+            cwd,
+            &[
+                file,
+                "--render",
+                "out.png",
+                "--size",
+                "32x24",
+                "--format",
+                "json",
+                "--exit-zero",
+            ],
+        );
+        let report: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+        report["files"][0]["diagnostics"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter_map(|d| d["message"].as_str())
+            .filter(|m| m.contains("Inline not drawn"))
+            .map(str::to_string)
+            .collect()
+    };
+    assert_eq!(inline_notes(&dir, "scenes/s.x3d"), Vec::<String>::new());
+    let refused = inline_notes(&dir.join("scenes"), "s.x3d");
+    assert!(
+        refused.len() == 1 && refused[0].contains("is outside"),
+        "{refused:?}"
     );
 }
 

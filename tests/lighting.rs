@@ -528,6 +528,7 @@ fn flattened_lights(fields: &str) -> Vec<Light> {
         &args,
         settings,
         Path::new("lights.x3d"),
+        None,
         source.as_bytes(),
         doc.as_ref(),
         &mut report,

@@ -102,8 +102,15 @@ fn render_cases_match_their_references() {
     let mut failures = Vec::new();
     for case in &cases {
         let (scene, source, mut report, doc) = checked_case(case);
-        let image = render_image(&case_args(case), &scene, &source, doc.as_ref(), &mut report)
-            .unwrap_or_else(|e| panic!("{}: {e}", case.display()));
+        let image = render_image(
+            &case_args(case),
+            &scene,
+            None,
+            &source,
+            doc.as_ref(),
+            &mut report,
+        )
+        .unwrap_or_else(|e| panic!("{}: {e}", case.display()));
         let reference_path = case.join("reference.png");
         if update || !reference_path.exists() {
             image.save(&reference_path).unwrap();
@@ -186,6 +193,7 @@ fn a_far_away_tiny_box_renders_like_a_big_one_at_the_origin() {
         render_image(
             &args(),
             Path::new("scene.x3d"),
+            None,
             source.as_bytes(),
             doc.as_ref(),
             &mut report,
@@ -262,6 +270,7 @@ fn check_and_render(name: &str, scene: &str) -> (std::time::Duration, FileReport
     render_image(
         &args(),
         Path::new(name),
+        None,
         scene.as_bytes(),
         doc.as_ref(),
         &mut report,
@@ -429,6 +438,7 @@ fn coordinate_double_far_from_the_origin_keeps_its_precision() {
         render_image(
             &args(),
             Path::new("scene.x3d"),
+            None,
             source.as_bytes(),
             doc.as_ref(),
             &mut report,
@@ -462,11 +472,13 @@ fn one_open_device_draws_several_images_like_a_device_each() {
             .join(name);
         let (scene, source, mut report, doc) = checked_case(&case);
         let args = case_args(&case);
-        let own_device = render_image(&args, &scene, &source, doc.as_ref(), &mut report).unwrap();
+        let own_device =
+            render_image(&args, &scene, None, &source, doc.as_ref(), &mut report).unwrap();
         let shared = preview(
             &args,
             args.quality.settings(),
             &scene,
+            None,
             &source,
             doc.as_ref(),
             &mut report,
@@ -535,6 +547,7 @@ fn draw_list_of(scene: &str) -> (x3dcheck::render::draw_list::DrawList, Vec<Stri
         &args(),
         Quality::Balanced.settings(),
         Path::new("scene.x3d"),
+        None,
         scene.as_bytes(),
         doc.as_ref(),
         &mut report,

@@ -411,6 +411,7 @@ impl Loaded {
             &args,
             settings,
             &self.path,
+            None,
             &self.source,
             Some(&self.doc),
             &mut report,

@@ -244,6 +244,10 @@ pub struct Mesh {
 pub struct Stroke {
     /// At least 1, finite.
     pub size: f32,
+    /// Lines: the pattern of 12.4.3 Table 12.3, 1 solid, 2 dashed, 3 dotted, 4
+    /// dash-dotted, 5 dash-dot-dot (the ones browsers shall support), laid along each
+    /// polyline in image pixels, `size` times longer for wider lines.
+    pub linetype: u32,
     /// Points: the size is divided by a + b·r + c·r² (r the distance from the viewer),
     /// then clamped to [min, max]. (1, 0, 0) and [size, size] for lines.
     pub attenuation: [f32; 3],
@@ -255,6 +259,7 @@ impl Default for Stroke {
     fn default() -> Self {
         Stroke {
             size: 1.0,
+            linetype: 1,
             attenuation: [1.0, 0.0, 0.0],
             min: 1.0,
             max: 1.0,

@@ -112,11 +112,14 @@ impl Preview {
 
 /// `--render`: takes `doc` (as [`crate::check::check_document`] read it, from `source`,
 /// the document at `path`) apart into a [`Preview`], adding what cannot be drawn to
-/// `report`. None when `--render` was not given; Err: why no image can be made (no
+/// `report`. Inlines and textures are read from the tree `root` (the check's
+/// [`crate::config::CheckConfig::root`]; None: the document's directory) and never from
+/// outside it. None when `--render` was not given; Err: why no image can be made (no
 /// document, bad --camera, a build without the renderer).
 pub fn prepare(
     args: &RenderArgs,
     path: &Path,
+    root: Option<&Path>,
     source: &[u8],
     doc: Option<&Document>,
     report: &mut FileReport,
@@ -126,11 +129,20 @@ pub fn prepare(
     }
     #[cfg(feature = "render")]
     {
-        preview(args, args.quality.settings(), path, source, doc, report).map(Some)
+        preview(
+            args,
+            args.quality.settings(),
+            path,
+            root,
+            source,
+            doc,
+            report,
+        )
+        .map(Some)
     }
     #[cfg(not(feature = "render"))]
     {
-        let _ = (path, source, doc, report);
+        let _ = (path, root, source, doc, report);
         Err("--render: this x3dcheck was built without the `render` feature".to_string())
     }
 }
@@ -140,11 +152,21 @@ pub fn prepare(
 pub fn render_image(
     args: &RenderArgs,
     path: &Path,
+    root: Option<&Path>,
     source: &[u8],
     doc: Option<&Document>,
     report: &mut FileReport,
 ) -> Result<image::RgbaImage, String> {
-    preview(args, args.quality.settings(), path, source, doc, report)?.draw()
+    preview(
+        args,
+        args.quality.settings(),
+        path,
+        root,
+        source,
+        doc,
+        report,
+    )?
+    .draw()
 }
 
 /// The [`Preview`] of `doc` with explicit [`Settings`] instead of a quality preset (the
@@ -154,6 +176,7 @@ pub fn preview(
     args: &RenderArgs,
     settings: Settings,
     path: &Path,
+    root: Option<&Path>,
     source: &[u8],
     doc: Option<&Document>,
     report: &mut FileReport,
@@ -168,6 +191,7 @@ pub fn preview(
         .to_path_buf();
     let options = flatten::Options {
         camera: flatten::CameraChoice::parse(&args.camera),
+        root: root.map_or_else(|| base_dir.clone(), Path::to_path_buf),
         base_dir,
         x3d_version_3: doc
             .version_text

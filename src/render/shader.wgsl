@@ -45,7 +45,7 @@ struct Draw {
     factor: vec4<f32>,             // MultiTexture colour and alpha
     cutoff: vec4<f32>,             // alpha cutoff
     stroke: vec4<f32>,             // line width or point size (image pixels), min, max, points
-    stroke_attenuation: vec4<f32>, // points: size / (a + b·r + c·r²)
+    stroke_attenuation: vec4<f32>, // points: size / (a + b·r + c·r²); lines: linetype
     stages: array<vec4<u32>, 4>,   // mode, alpha mode, source, function
     clip_planes: array<vec4<f32>, 4>,
 };
@@ -103,6 +103,8 @@ struct VertexOut {
     // Gouraud shading: the lit colours of the front and the back side.
     @location(6) lit_front: vec4<f32>,
     @location(7) lit_back: vec4<f32>,
+    // Lines: image pixels along the polyline, for its linetype pattern (linear on screen).
+    @location(8) @interpolate(linear) along_line: f32,
 };
 
 // X3D t runs up the image, texture rows run down.
@@ -131,8 +133,9 @@ fn vs_main(v: VertexIn) -> VertexOut {
 // wide only): one instance per segment (a, b) or point (a = b), six corners each.
 struct StrokeIn {
     @builtin(vertex_index) corner: u32,
-    @location(0) a: vec3<f32>,
-    @location(1) b: vec3<f32>,
+    // xyz, and the length of the polyline up to the end.
+    @location(0) a: vec4<f32>,
+    @location(1) b: vec4<f32>,
     @location(2) color_a: vec4<f32>,
     @location(3) color_b: vec4<f32>,
 };
@@ -147,8 +150,8 @@ fn vs_stroke(v: StrokeIn) -> VertexOut {
     let side = sides[v.corner % 6u];
     // Cut the segment at the near plane, so that both ends project.
     let near = globals.forward_near.w;
-    var pa = v.a;
-    var pb = v.b;
+    var pa = v.a.xyz;
+    var pb = v.b.xyz;
     let da = dot(pa, globals.forward_near.xyz);
     let db = dot(pb, globals.forward_near.xyz);
     if da < near && db < near {
@@ -183,10 +186,29 @@ fn vs_stroke(v: StrokeIn) -> VertexOut {
     clip = vec4<f32>(clip.xy + offset / half_pixels * clip.w, clip.zw);
     out.clip = clip;
     out.position = p;
+    // The pattern runs on from the polyline's length at a, in this segment's pixels per
+    // unit (so it bends with the polyline; the scale changes from segment to segment only
+    // with depth).
+    let pixels_per_unit = length(sb - sa) / globals.viewport.z / max(distance(pa, pb), 1e-30);
+    out.along_line = (v.a.w + distance(v.a.xyz, p)) * pixels_per_unit;
     out.color = select(v.color_a, v.color_b, end > 0.5);
     out.lit_front = material_color(draw.front, out.color);
     out.lit_back = out.lit_front;
     return out;
+}
+
+// Whether a line's pixel `along` its polyline (in units of its width) is drawn by its
+// linetype (12.4.3 Table 12.3; the lengths are the browser's): 2 dashed, 3 dotted,
+// 4 dash-dotted, 5 dash-dot-dot, repeating every 16; anything else solid.
+fn on_linetype(linetype: u32, along: f32) -> bool {
+    let p = along - 16.0 * floor(along / 16.0);
+    switch linetype {
+        case 2u: { return p < 9.0; }
+        case 3u: { return p - 4.0 * floor(p / 4.0) < 2.0; }
+        case 4u: { return p < 8.0 || (p >= 11.0 && p < 13.0); }
+        case 5u: { return p < 6.0 || (p >= 8.0 && p < 10.0) || (p >= 12.0 && p < 14.0); }
+        default: { return true; }
+    }
 }
 
 fn phong(s: Surface, p: vec3<f32>, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
@@ -452,6 +474,10 @@ fn fs_phong(in: VertexOut, @builtin(front_facing) front_facing: bool) -> @locati
         ambient_t = textureSample(t_ambient, s_ambient, uv_of(draw.sets_more.y, in));
     }
     clip(in.position);
+    // Surfaces and points have linetype 1 (solid).
+    if !on_linetype(u32(draw.stroke_attenuation.w), in.along_line / draw.stroke.x) {
+        discard;
+    }
 
     var m = draw.front;
     if !front_facing {

@@ -77,7 +77,7 @@ CAUSE_CLASSES = {
     "HAnimHumanoid children, ScreenGroup scale, Inline bounds): re-run after the merge",
     "xite": "X_ITE departs from the spec (the spec wins)",
     "reported": "what x3dcheck reports as not drawn or drawn approximately (a documented "
-    "limit: linetype, FillProperties, shaders, movies, cube maps, …)",
+    "limit: FillProperties, shaders, movies, cube maps, …)",
     "extension": "nodes or field values outside the spec (a browser's own), which X_ITE "
     "draws or rejects its own way",
     "choice": "the spec leaves it to the browser (texture filtering: 18.4.9, DEFAULT "
@@ -109,10 +109,14 @@ def render_xite(args, scenes, folder):
 
 
 def render_x3dcheck(args, scene, png):
-    command = [args.x3dcheck, os.path.join(args.corpus, scene), "--render", png,
+    # Run in the corpus: a file named on the command line may read references from the
+    # current directory when it lies in it, as X_ITE reads them from the corpus's web
+    # root (Castle's fog scenes inline ../castle/).
+    command = [os.path.abspath(args.x3dcheck), scene, "--render", os.path.abspath(png),
                "--size", args.size, "--quality", args.quality, "--camera", "browser",
                "--format", "json", "--exit-zero", "-q"]
-    run = subprocess.run(command, capture_output=True, text=True, timeout=600)
+    run = subprocess.run(command, capture_output=True, text=True, timeout=600,
+                         cwd=args.corpus)
     notes = []
     try:
         report = json.loads(run.stdout)

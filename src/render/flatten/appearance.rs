@@ -212,24 +212,29 @@ impl Walker<'_> {
     }
 
     /// LineProperties (12.4.4): when applied, linewidthScaleFactor times the nominal
-    /// one-pixel width (at least the minimum, one pixel); patterns other than solid are
-    /// noted and drawn solid.
+    /// one-pixel width (at least the minimum, one pixel) and linetypes 1 to 5, the ones
+    /// browsers shall support (12.4.3); the other registered ones (arrows, chain lines,
+    /// user patterns) are noted and drawn solid, as unsupported values shall be.
     fn line_properties(&mut self, context: Context, id: NodeId) -> Stroke {
         let doc = context.doc;
         if !boolean(doc, id, "applied", true) {
             return Stroke::default();
         }
-        let linetype = doc.i32_of(id, "linetype").unwrap_or(1);
-        if linetype != 1 {
-            self.note(
-                context,
-                id,
-                format!("LineProperties linetype {linetype} is drawn solid"),
-            );
-        }
+        let linetype = match doc.i32_of(id, "linetype").unwrap_or(1) {
+            supported @ 1..=5 => supported as u32,
+            other => {
+                self.note(
+                    context,
+                    id,
+                    format!("LineProperties linetype {other} is drawn solid"),
+                );
+                1
+            }
+        };
         let size = float(doc, id, "linewidthScaleFactor", 0.0).clamp(1.0, MAX_STROKE);
         Stroke {
             size,
+            linetype,
             min: size,
             max: size,
             ..Stroke::default()
@@ -386,7 +391,7 @@ impl Walker<'_> {
         if let Some(entry) = self.texture_cache.get(&key) {
             return *entry;
         }
-        let loaded = match textures::load(doc, texture, context.base, &self.options.base_dir) {
+        let loaded = match textures::load(doc, texture, context.base, &self.options.root) {
             Ok(loaded) => {
                 let bytes: usize = loaded.texture.levels.iter().map(Vec::len).sum();
                 if self.spent.texture_bytes + bytes > MAX_TEXTURE_BYTES {
@@ -509,6 +514,7 @@ fn point_properties(doc: &crate::model::Document, id: NodeId) -> Stroke {
         // A minimum above the maximum (POINT_SIZE_MIN_EXCEEDS_MAX) gives way to it.
         min: min.min(max),
         max,
+        ..Stroke::default()
     }
 }
 

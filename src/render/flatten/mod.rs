@@ -92,8 +92,10 @@ impl<'a> CameraChoice<'a> {
 
 pub struct Options<'a> {
     pub camera: CameraChoice<'a>,
-    /// The document's directory (relative urls), and the tree files may be read from.
+    /// The document's directory (relative urls).
     pub base_dir: PathBuf,
+    /// The directory tree Inlines and textures may be read from, at or above `base_dir`.
+    pub root: PathBuf,
     pub x3d_version_3: bool,
     /// Triangles, lines and points drawn at most (see [`primitive_budget`]).
     pub primitive_budget: usize,
@@ -510,17 +512,14 @@ impl Walker<'_> {
                     continue;
                 }
                 None => {
-                    let path = match super::textures::local_file(
-                        url,
-                        context.base,
-                        &self.options.base_dir,
-                    ) {
-                        Ok(path) => path,
-                        Err(e) => {
-                            reasons.push(format!("{url}: {e}"));
-                            continue;
-                        }
-                    };
+                    let path =
+                        match super::textures::local_file(url, context.base, &self.options.root) {
+                            Ok(path) => path,
+                            Err(e) => {
+                                reasons.push(format!("{url}: {e}"));
+                                continue;
+                            }
+                        };
                     if self.inline_stack.contains(&path) {
                         reasons.push(format!("{url}: inlines itself"));
                         continue;

@@ -611,6 +611,7 @@ mod tests {
             &args,
             Quality::Balanced.settings(),
             std::path::Path::new("passes.x3d"),
+            None,
             source.as_bytes(),
             doc.as_ref(),
             &mut report,

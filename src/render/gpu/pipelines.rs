@@ -31,8 +31,8 @@ const FORMATS: [wgpu::VertexFormat; VERTEX_SLOTS] = [
 ];
 
 /// Lines and points are drawn as instanced quads: per instance the two ends (a point's
-/// twice), then their two colours.
-pub const STROKE_ENDS_STRIDE: u64 = 24;
+/// twice) each with the length of its polyline up to it, then their two colours.
+pub const STROKE_ENDS_STRIDE: u64 = 32;
 pub const STROKE_COLORS_STRIDE: u64 = 32;
 
 /// Which pipeline a mesh needs.
@@ -199,7 +199,7 @@ impl<'d> Pipelines<'d> {
             Some(wgpu::VertexBufferLayout {
                 array_stride: STROKE_ENDS_STRIDE,
                 step_mode: wgpu::VertexStepMode::Instance,
-                attributes: &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3],
+                attributes: &wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4],
             }),
             Some(wgpu::VertexBufferLayout {
                 array_stride: STROKE_COLORS_STRIDE,

@@ -245,12 +245,14 @@ fn upload_stroke(mesh: &mut Mesh, buffer: impl Fn(&[u8]) -> wgpu::Buffer) -> Mes
     }
 }
 
-/// A line's or point's two ends, and their colours.
-type Ends = [[f32; 3]; 2];
+/// A line's or point's two ends, each with the length of its polyline up to it (the
+/// shader lays linetype patterns along it), and their colours.
+type Ends = [[f32; 4]; 2];
 type EndColors = [[f32; 4]; 2];
 
 /// The instance arrays of a line or point mesh: ends [a, b] and colours [a, b] (white
-/// without per-vertex colours: the shader then uses the material's).
+/// without per-vertex colours: the shader then uses the material's). A segment starting
+/// where the one before it ended continues its polyline's length; any other starts at 0.
 fn stroke_instances(mesh: &Mesh) -> (Vec<Ends>, Vec<EndColors>) {
     let per = mesh.primitive.arity();
     let color = |i: u32| {
@@ -259,16 +261,29 @@ fn stroke_instances(mesh: &Mesh) -> (Vec<Ends>, Vec<EndColors>) {
             .and_then(|c| c.get(i as usize).copied())
             .unwrap_or([1.0; 4])
     };
+    let mut previous_end: Option<([f32; 3], f32)> = None;
     mesh.indices
         .chunks_exact(per)
         .map(|ends| {
             let (a, b) = (ends[0], ends[per - 1]);
+            let (pa, pb) = (mesh.positions[a as usize], mesh.positions[b as usize]);
+            let start = match previous_end {
+                Some((end, length)) if end == pa => length,
+                _ => 0.0,
+            };
+            let length = start + distance(pa, pb);
+            previous_end = Some((pb, length));
             (
-                [mesh.positions[a as usize], mesh.positions[b as usize]],
+                [[pa[0], pa[1], pa[2], start], [pb[0], pb[1], pb[2], length]],
                 [color(a), color(b)],
             )
         })
         .unzip()
+}
+
+fn distance(a: [f32; 3], b: [f32; 3]) -> f32 {
+    let d = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+    (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()
 }
 
 #[cfg(test)]
@@ -298,19 +313,24 @@ mod tests {
             stroke: Default::default(),
         };
         let (ends, colors) = stroke_instances(&mesh);
+        // The second segment continues the first: its length runs on from 1.
         assert_eq!(
             ends,
             vec![
-                [[0.0; 3], [1.0, 0.0, 0.0]],
-                [[1.0, 0.0, 0.0], [1.0, 1.0, 0.0]]
+                [[0.0; 4], [1.0, 0.0, 0.0, 1.0]],
+                [[1.0, 0.0, 0.0, 1.0], [1.0, 1.0, 0.0, 2.0]]
             ]
         );
         assert_eq!(colors[1], [[0.0, 1.0, 0.0, 1.0], [0.0; 4]]);
+        // A segment starting elsewhere starts a polyline of its own.
+        mesh.indices = vec![0, 1, 2, 0];
+        let (ends, _) = stroke_instances(&mesh);
+        assert_eq!(ends[1][0], [1.0, 1.0, 0.0, 0.0]);
         mesh.primitive = Primitive::Points;
         mesh.colors = None;
         mesh.indices = vec![2];
         let (ends, colors) = stroke_instances(&mesh);
-        assert_eq!(ends, vec![[[1.0, 1.0, 0.0]; 2]]);
+        assert_eq!(ends, vec![[[1.0, 1.0, 0.0, 0.0]; 2]]);
         assert_eq!(colors, vec![[[1.0; 4]; 2]]);
     }
 

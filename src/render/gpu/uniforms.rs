@@ -163,7 +163,7 @@ pub fn draw_uniform(mesh: &Mesh) -> GpuDraw {
         ],
         stroke_attenuation: {
             let [a, b, c] = mesh.stroke.attenuation;
-            [a, b, c, 0.0]
+            [a, b, c, mesh.stroke.linetype as f32]
         },
         stages,
         clip_planes,
