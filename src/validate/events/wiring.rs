@@ -9,7 +9,7 @@
 use std::collections::{HashMap, HashSet};
 
 use super::endpoint::route_node;
-use crate::model::{Document, NodeId, NodeKind, Value};
+use crate::model::{Document, Encoding, NodeId, NodeKind, Scope, Value};
 use crate::validate::Ctx;
 
 pub(crate) struct Wiring {
@@ -51,11 +51,14 @@ impl Wiring {
                 routed_into.entry(node).or_default().push(field.to_string());
             }
         }
-        let exported = doc
+        let mut exported: HashSet<NodeId> = doc
             .exports
             .iter()
             .filter_map(|export| route_node(doc, export.scope, &export.local_def.text))
             .collect();
+        if doc.encoding == Encoding::Vrml97 {
+            exported.extend(vrml97_exports(doc, ctx.source));
+        }
         Wiring {
             routed_from,
             routed_into,
@@ -118,6 +121,20 @@ fn held_nodes(doc: &Document) -> HashSet<NodeId> {
         }
     }
     held
+}
+
+/// The nodes a VRML97 file names in EXPORT statements. VRML97 has none (the reader reports
+/// them as VRML_MALFORMED and drops them), but browsers that read X3D's statements in
+/// VRML97 files too (Castle Game Engine) export the node, so it may be routed from outside.
+fn vrml97_exports<'a>(doc: &'a Document, source: &'a [u8]) -> impl Iterator<Item = NodeId> + 'a {
+    source
+        .split(|byte| *byte == b'\n')
+        .filter_map(|line| {
+            let line = std::str::from_utf8(line).ok()?;
+            let mut words = line.split_whitespace();
+            (words.next() == Some("EXPORT")).then(|| words.next())?
+        })
+        .filter_map(|name| route_node(doc, Scope::Scene, name))
 }
 
 fn script_text(ctx: &Ctx) -> ScriptText {

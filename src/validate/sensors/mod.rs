@@ -8,7 +8,7 @@ pub mod sensor_size_zero;
 pub mod sensor_unrouted;
 
 use super::Check;
-use crate::model::{Node, Span};
+use crate::model::{Document, Node, Place, Span};
 
 /// This group's rules, in catalogue order.
 pub static RULES: &[&Check] = &[
@@ -36,4 +36,19 @@ fn written_disabled(node: &Node) -> Option<Span> {
     }
     let entry = node.entry("enabled")?;
     (entry.value.as_bools()? == [false]).then_some(entry.span)
+}
+
+/// Whether what the document writes for the node is not what the scene holds: it is the
+/// value of a node field that takes the instance's value through `IS`, or a prototype
+/// interface's default (placed wherever the prototype puts it).
+fn is_replaced(doc: &Document, node: &Node) -> bool {
+    match node.place {
+        Place::Field { parent, entry } => {
+            let parent = doc.node(parent);
+            let field = parent.fields.get(entry as usize).map(|e| e.name());
+            field.is_some_and(|name| parent.is_connected(name))
+        }
+        Place::ProtoField { .. } => true,
+        _ => false,
+    }
 }

@@ -1,6 +1,6 @@
 //! SENSOR_NEVER_ENABLED: a sensor with `enabled FALSE` that nothing can enable.
 
-use super::{is_sensor, written_disabled};
+use super::{is_replaced, is_sensor, written_disabled};
 use crate::report::Diagnostic;
 use crate::validate::events::wiring::Wiring;
 use crate::validate::Ctx;
@@ -50,7 +50,7 @@ fn check(ctx: &mut Ctx) {
     let candidates: Vec<_> = doc
         .iter()
         .take(doc.written_nodes().len())
-        .filter(|(_, node)| is_sensor(node))
+        .filter(|(_, node)| is_sensor(node) && !is_replaced(doc, node))
         .filter_map(|(id, node)| Some((id, written_disabled(node)?)))
         .collect();
     if candidates.is_empty() {

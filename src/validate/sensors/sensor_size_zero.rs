@@ -1,5 +1,6 @@
 //! SENSOR_SIZE_ZERO: a ProximitySensor or TransformSensor whose box has no volume.
 
+use super::is_replaced;
 use crate::model::{Node, Span};
 use crate::report::Diagnostic;
 use crate::validate::events::wiring::Wiring;
@@ -52,6 +53,7 @@ fn check(ctx: &mut Ctx) {
         .filter(|(_, node)| {
             matches!(node.type_name(), "ProximitySensor" | "TransformSensor")
                 && !node.is_connected("size")
+                && !is_replaced(doc, node)
         })
         .filter_map(|(id, node)| Some((id, flat_box(node)?)))
         .collect();

@@ -1,6 +1,6 @@
 //! SENSOR_UNROUTED: a sensor with a DEF name that no ROUTE, IS, Script or EXPORT connects.
 
-use super::{is_sensor, written_disabled};
+use super::{is_replaced, is_sensor, written_disabled};
 use crate::report::Diagnostic;
 use crate::validate::events::wiring::Wiring;
 use crate::validate::Ctx;
@@ -58,6 +58,7 @@ fn check(ctx: &mut Ctx) {
         .take(doc.written_nodes().len())
         .filter(|(_, node)| {
             is_sensor(node)
+                && !is_replaced(doc, node)
                 && node.def_name.is_some()
                 && node.connects.is_empty()
                 && written_disabled(node).is_none()
