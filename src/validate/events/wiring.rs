@@ -1,10 +1,10 @@
 //! How a node's events can reach other nodes, or other nodes' events reach it, after the
 //! scene loads: the ROUTEs that name it, a prototype's `IS` on its fields, a Script or
 //! prototype instance that holds it in a field (a Script with `directOutput` may send it
-//! events and add routes, 29.4.2), an EXPORT (an importing scene may route to it, 4.9.3),
-//! and Script code that may look it up by its DEF name. The rules that say a node's
-//! events go nowhere ([`Wiring::is_reachable_by_code`]) ask here, and stay silent
-//! wherever one of these may connect it.
+//! events and add routes), an EXPORT (an importing scene may route to it), and Script code
+//! that may look it up by its DEF name. The rules that say a node's events go nowhere, or
+//! that it never receives one, ask here, and stay silent wherever one of these may
+//! connect it.
 
 use std::collections::{HashMap, HashSet};
 
