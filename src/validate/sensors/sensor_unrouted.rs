@@ -40,8 +40,9 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 7.3.7 X3DSensorNode ("the base type for all sensors", whose output is its
-    /// events), 4.4.8 (events travel along routes). Reading: a node kept only for its
-    /// events, whose events nothing can receive, does nothing; information.
+    /// events). Reading: events reach other nodes only along ROUTEs (or through Scripts and
+    /// prototype interfaces), so a node kept only for its events, whose events nothing can
+    /// receive, does nothing; information.
     pub static SENSOR_UNROUTED = {
         severity: Info,
         level: Standard,
