@@ -102,6 +102,13 @@ const fn incl(value: f64) -> Option<Bound> {
     })
 }
 
+const fn excl(value: f64) -> Option<Bound> {
+    Some(Bound {
+        value,
+        inclusive: false,
+    })
+}
+
 const fn level(component: &'static str, level: u8) -> ComponentLevel {
     ComponentLevel { component, level }
 }
@@ -398,6 +405,15 @@ pub static FIELD_OVERRIDES: &[FieldOverride] = &[
         change: Change::Strict,
         clause: "18.4.3 Table 18.5",
         why: "the table lists the valid values of function; the UOM has the same values but marks them as suggestions",
+    },
+    // ---- 8 Time ----
+    FieldOverride {
+        versions: ALL,
+        node: "TimeSensor",
+        field: "cycleInterval",
+        change: Change::Min(excl(0.0)),
+        clause: "8.4.1 TimeSensor",
+        why: "the table gives (0,∞), as VRML97 6.50 does (a cycle of no length has no fraction); the 3.1–4.1 UOMs say [0,∞)",
     },
     // ---- Defaults printed as multiples of π in other clauses ----
     FieldOverride {

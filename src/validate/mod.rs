@@ -16,6 +16,7 @@ pub mod prototypes;
 mod registry;
 pub mod rendering;
 pub mod scripting;
+pub mod sensors;
 pub mod shaders;
 pub mod shape;
 pub mod suggest;

@@ -6,7 +6,7 @@ use std::sync::LazyLock;
 
 use super::{
     document, events, interpolation, lighting, navigation, networking, nurbs, prototypes,
-    rendering, scripting, shaders, shape, texturing, Check, Rule,
+    rendering, scripting, sensors, shaders, shape, texturing, Check, Rule,
 };
 
 /// Every rule with its check function (None for those reported while reading).
@@ -23,6 +23,7 @@ pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {
         networking::RULES,
         scripting::RULES,
         interpolation::RULES,
+        sensors::RULES,
         navigation::RULES,
         nurbs::RULES,
     ]

@@ -10,6 +10,7 @@ pub mod proto_field_unknown;
 pub mod route_field_unknown;
 pub mod route_node_undefined;
 pub mod route_type_mismatch;
+pub(crate) mod wiring;
 
 /// This group's rules, in catalogue order.
 pub static RULES: &[&Check] = &[

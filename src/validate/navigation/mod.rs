@@ -1,8 +1,13 @@
-//! Navigation component (clause 23), and GeoViewpoint (25), an X3DViewpointNode.
+//! Navigation component (clause 23), and GeoViewpoint (25), an X3DViewpointNode; the
+//! binding stacks of NavigationInfo, Background and Fog (7.2.2).
 
+pub mod bindable_never_bound;
 pub mod viewpoint_orientation_axis_zero;
 
 use super::Check;
 
 /// This group's rules, in catalogue order.
-pub static RULES: &[&Check] = &[&viewpoint_orientation_axis_zero::CHECK];
+pub static RULES: &[&Check] = &[
+    &viewpoint_orientation_axis_zero::CHECK,
+    &bindable_never_bound::CHECK,
+];

@@ -1,0 +1,153 @@
+//! How a node's events can reach other nodes, or other nodes' events reach it, after the
+//! scene loads: the ROUTEs that name it, a prototype's `IS` on its fields, a Script or
+//! prototype instance that holds it in a field (a Script with `directOutput` may send it
+//! events and add routes), an EXPORT (an importing scene may route to it), and Script code
+//! that may look it up by its DEF name. The rules that say a node's events go nowhere, or
+//! that it never receives one, ask here, and stay silent wherever one of these may
+//! connect it.
+
+use std::collections::{HashMap, HashSet};
+
+use super::endpoint::route_node;
+use crate::model::{Document, Encoding, NodeId, NodeKind, Scope, Value};
+use crate::validate::Ctx;
+
+pub(crate) struct Wiring {
+    /// Per node: the fields ROUTEs read from it.
+    routed_from: HashMap<NodeId, Vec<String>>,
+    /// Per node: the fields ROUTEs write to it, without `set_` (`set_bind` → `bind`).
+    routed_into: HashMap<NodeId, Vec<String>>,
+    /// Nodes a Script field or a ProtoInstance fieldValue holds.
+    held: HashSet<NodeId>,
+    /// Nodes an EXPORT of this file names.
+    exported: HashSet<NodeId>,
+    /// What Script code may name a node by its DEF name.
+    scripts: ScriptText,
+}
+
+/// The Script code of the document, for DEF names it may look nodes up by.
+enum ScriptText {
+    /// Every Script's running code was read (or there are no Scripts).
+    Known(Vec<String>),
+    /// Some Script runs code that was not read (a `.js` file below the deep level, a
+    /// network URL, another language): it may name any node.
+    Unknown,
+}
+
+impl Wiring {
+    pub(crate) fn new(ctx: &Ctx) -> Wiring {
+        let doc = ctx.doc;
+        let mut routed_from: HashMap<NodeId, Vec<String>> = HashMap::new();
+        let mut routed_into: HashMap<NodeId, Vec<String>> = HashMap::new();
+        for route in &doc.routes {
+            if let Some(node) = route_node(doc, route.scope, &route.from_node.text) {
+                let field = route.from_field.text.as_str();
+                let field = field.strip_suffix("_changed").unwrap_or(field);
+                routed_from.entry(node).or_default().push(field.to_string());
+            }
+            if let Some(node) = route_node(doc, route.scope, &route.to_node.text) {
+                let field = route.to_field.text.as_str();
+                let field = field.strip_prefix("set_").unwrap_or(field);
+                routed_into.entry(node).or_default().push(field.to_string());
+            }
+        }
+        let mut exported: HashSet<NodeId> = doc
+            .exports
+            .iter()
+            .filter_map(|export| route_node(doc, export.scope, &export.local_def.text))
+            .collect();
+        if doc.encoding == Encoding::Vrml97 {
+            exported.extend(vrml97_exports(doc, ctx.source));
+        }
+        Wiring {
+            routed_from,
+            routed_into,
+            held: held_nodes(doc),
+            exported,
+            scripts: script_text(ctx),
+        }
+    }
+
+    /// Whether a ROUTE reads any field of `id`.
+    pub(crate) fn is_routed_from(&self, id: NodeId) -> bool {
+        self.routed_from.contains_key(&id)
+    }
+
+    /// Whether a ROUTE writes any field of `id`.
+    pub(crate) fn is_routed_into(&self, id: NodeId) -> bool {
+        self.routed_into.contains_key(&id)
+    }
+
+    /// Whether a ROUTE writes field `field` of `id` (named `field` or `set_field`).
+    pub(crate) fn is_routed_into_field(&self, id: NodeId, field: &str) -> bool {
+        self.routed_into
+            .get(&id)
+            .is_some_and(|fields| fields.iter().any(|f| f == field))
+    }
+
+    /// Whether something other than a ROUTE may send `id` events or read its events: a
+    /// Script or prototype instance holding it, an EXPORT, or Script code that may name
+    /// its DEF name (with `Browser.currentScene.getNamedNode`, `addRoute`).
+    pub(crate) fn is_reachable_by_code(&self, doc: &Document, id: NodeId) -> bool {
+        if self.held.contains(&id) || self.exported.contains(&id) {
+            return true;
+        }
+        let Some(name) = &doc.node(id).def_name else {
+            return false;
+        };
+        match &self.scripts {
+            ScriptText::Unknown => true,
+            ScriptText::Known(codes) => codes.iter().any(|code| code.contains(&name.text)),
+        }
+    }
+}
+
+/// The nodes that Script fields and ProtoInstance fieldValues hold (by DEF or USE).
+fn held_nodes(doc: &Document) -> HashSet<NodeId> {
+    let mut held = HashSet::new();
+    for (_, node) in doc.iter() {
+        let holder = node.is_a("Script") || matches!(node.kind, NodeKind::ProtoInstance { .. });
+        if !holder {
+            continue;
+        }
+        let declared = node.declared.iter().filter_map(|d| d.value.as_ref());
+        let values = declared
+            .map(|(value, _)| value)
+            .chain(node.fields.iter().map(|entry| &entry.value));
+        for value in values {
+            if let Value::Nodes(children) = value {
+                held.extend(children.iter().map(|child| child.node));
+            }
+        }
+    }
+    held
+}
+
+/// The nodes a VRML97 file names in EXPORT statements. VRML97 has none (the reader reports
+/// them as VRML_MALFORMED and drops them), but browsers that read X3D's statements in
+/// VRML97 files too (Castle Game Engine) export the node, so it may be routed from outside.
+fn vrml97_exports<'a>(doc: &'a Document, source: &'a [u8]) -> impl Iterator<Item = NodeId> + 'a {
+    source
+        .split(|byte| *byte == b'\n')
+        .filter_map(|line| {
+            let line = std::str::from_utf8(line).ok()?;
+            let mut words = line.split_whitespace();
+            (words.next() == Some("EXPORT")).then(|| words.next())?
+        })
+        .filter_map(|name| route_node(doc, Scope::Scene, name))
+}
+
+fn script_text(ctx: &Ctx) -> ScriptText {
+    if !ctx.doc.written_nodes().iter().any(|n| n.is_a("Script")) {
+        return ScriptText::Known(Vec::new());
+    }
+    let scripts = &ctx.scripts().scripts;
+    if scripts.iter().any(|script| script.unchecked.is_some()) {
+        return ScriptText::Unknown;
+    }
+    let codes = scripts
+        .iter()
+        .flat_map(|script| script.parsed.iter().map(|code| code.code().to_string()))
+        .collect();
+    ScriptText::Known(codes)
+}
