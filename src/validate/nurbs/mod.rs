@@ -9,8 +9,9 @@ pub mod nurbs_weight_count_mismatch;
 use std::collections::HashSet;
 
 use super::interpolation::{routed_fields, set_elsewhere};
-use super::Check;
+use super::{Check, Ctx, Rule};
 use crate::model::{Document, NodeId, Span};
+use crate::report::Diagnostic;
 use crate::schema::FieldType;
 
 /// This group's rules, in catalogue order.
@@ -155,6 +156,18 @@ pub(crate) fn control_points(
     }
     let values = doc.value_of(holder, name)?.len();
     (values % arity == 0).then_some(values / arity)
+}
+
+/// Reports each `(node, place, message)` of `found` under `rule`, with one help for all.
+pub(crate) fn report(
+    ctx: &mut Ctx,
+    rule: &'static Rule,
+    found: Vec<(NodeId, Span, String)>,
+    help: &str,
+) {
+    for (id, span, message) in found {
+        ctx.report(Diagnostic::new(rule, span, message).node(id).help(help));
+    }
 }
 
 pub(crate) fn plural(n: usize, what: &str) -> String {

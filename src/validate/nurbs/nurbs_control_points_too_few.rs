@@ -1,7 +1,6 @@
 //! NURBS_CONTROL_POINTS_TOO_FEW: fewer control points than the order.
 
-use super::nurbs_nodes;
-use crate::report::Diagnostic;
+use super::{nurbs_nodes, report};
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -69,11 +68,10 @@ fn check(ctx: &mut Ctx) {
             found.push((id, span, message));
         }
     }
-    for (id, span, message) in found {
-        ctx.report(
-            Diagnostic::new(&NURBS_CONTROL_POINTS_TOO_FEW, span, message)
-                .node(id)
-                .help("lower the order to the number of control points, or add control points"),
-        );
-    }
+    report(
+        ctx,
+        &NURBS_CONTROL_POINTS_TOO_FEW,
+        found,
+        "lower the order to the number of control points, or add control points",
+    );
 }

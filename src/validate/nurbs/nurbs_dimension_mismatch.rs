@@ -1,7 +1,6 @@
 //! NURBS_DIMENSION_MISMATCH: a surface whose control points are not uDimension × vDimension.
 
-use super::{control_points, is_surface, nurbs_nodes, plural};
-use crate::report::Diagnostic;
+use super::{control_points, is_surface, nurbs_nodes, plural, report};
 use crate::validate::interpolation::routed_fields;
 use crate::validate::Ctx;
 
@@ -78,11 +77,10 @@ fn check(ctx: &mut Ctx) {
         );
         found.push((id, span, message));
     }
-    for (id, span, message) in found {
-        ctx.report(
-            Diagnostic::new(&NURBS_DIMENSION_MISMATCH, span, message)
-                .node(id)
-                .help("set uDimension and vDimension to the rows and columns of the control-point grid"),
-        );
-    }
+    report(
+        ctx,
+        &NURBS_DIMENSION_MISMATCH,
+        found,
+        "set uDimension and vDimension to the rows and columns of the control-point grid",
+    );
 }

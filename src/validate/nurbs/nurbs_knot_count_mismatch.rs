@@ -1,8 +1,7 @@
 //! NURBS_KNOT_COUNT_MISMATCH: a knot vector whose length is not the number of control
 //! points plus the order.
 
-use super::{nurbs_nodes, plural};
-use crate::report::Diagnostic;
+use super::{nurbs_nodes, plural, report};
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -77,11 +76,5 @@ fn check(ctx: &mut Ctx) {
             found.push((id, span, message));
         }
     }
-    for (id, span, message) in found {
-        ctx.report(
-            Diagnostic::new(&NURBS_KNOT_COUNT_MISMATCH, span, message)
-                .node(id)
-                .help("give one knot more per control point than the order needs, or leave the knot vector empty for a uniform one"),
-        );
-    }
+    report(ctx, &NURBS_KNOT_COUNT_MISMATCH, found, "give one knot more per control point than the order needs, or leave the knot vector empty for a uniform one");
 }

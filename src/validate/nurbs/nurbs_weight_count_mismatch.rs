@@ -1,7 +1,6 @@
 //! NURBS_WEIGHT_COUNT_MISMATCH: weights written, but not one per control point.
 
-use super::{control_points, nurbs_nodes, plural};
-use crate::report::Diagnostic;
+use super::{control_points, nurbs_nodes, plural, report};
 use crate::validate::interpolation::{routed_fields, set_elsewhere};
 use crate::validate::Ctx;
 
@@ -81,11 +80,10 @@ fn check(ctx: &mut Ctx) {
         );
         found.push((id, entry.span, message));
     }
-    for (id, span, message) in found {
-        ctx.report(
-            Diagnostic::new(&NURBS_WEIGHT_COUNT_MISMATCH, span, message)
-                .node(id)
-                .help("give one weight per control point, in the order of the control points, or none"),
-        );
-    }
+    report(
+        ctx,
+        &NURBS_WEIGHT_COUNT_MISMATCH,
+        found,
+        "give one weight per control point, in the order of the control points, or none",
+    );
 }
