@@ -347,7 +347,7 @@ pub async fn draw(
 /// Fewer is not better: lavapipe's memory also grows with the number of passes in a
 /// frame. Measured on the benchmark scene (800×600, peak RSS while drawing, one run
 /// each): passes of 196,608 indices: fast 198 MB, balanced 213 MB, accurate 294 MB;
-/// 65,536: 185, 190, 249 MB; 16,384: fast 319 MB. The image is the same.
+/// 65,536: 186, 190, 249 MB; 16,384: fast 319 MB. The image is the same.
 pub const PASS_INDICES: u32 = 1 << 16;
 
 /// A draw call: part of one mesh's indices (or stroke instances).
