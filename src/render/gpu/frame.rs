@@ -344,10 +344,11 @@ pub async fn draw(
 /// one render pass by default. A software rasterizer keeps every binned triangle of a
 /// pass until the pass ends, several times the meshes' own size for millions of
 /// triangles; passes of this size, each finished before the next begins, bound that.
-/// Measured on the benchmark scene (balanced, 800×600, with buffers made per pass):
-/// 358 MB peak with passes of 786,432 indices, 235 MB with 196,608, 223 MB with 98,304;
-/// the image is the same.
-pub const PASS_INDICES: u32 = 3 << 16;
+/// Fewer is not better: lavapipe's memory also grows with the number of passes in a
+/// frame. Measured on the benchmark scene (800×600, peak RSS while drawing, one run
+/// each): passes of 196,608 indices: fast 198 MB, balanced 213 MB, accurate 294 MB;
+/// 65,536: 186, 190, 249 MB; 16,384: fast 319 MB. The image is the same.
+pub const PASS_INDICES: u32 = 1 << 16;
 
 /// A draw call: part of one mesh's indices (or stroke instances).
 struct Piece {
