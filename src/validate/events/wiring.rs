@@ -85,6 +85,22 @@ impl Wiring {
             .is_some_and(|fields| fields.iter().any(|f| f == field))
     }
 
+    /// The entries of `candidates` whose node's `field` keeps the file's value: no ROUTE
+    /// sends to it and no Script code can reach the node.
+    pub(crate) fn keep_unset<T>(
+        &self,
+        doc: &Document,
+        candidates: Vec<(NodeId, T)>,
+        field: &str,
+    ) -> Vec<(NodeId, T)> {
+        candidates
+            .into_iter()
+            .filter(|(id, _)| {
+                !self.is_routed_into_field(*id, field) && !self.is_reachable_by_code(doc, *id)
+            })
+            .collect()
+    }
+
     /// Whether something other than a ROUTE may send `id` events or read its events: a
     /// Script or prototype instance holding it, an EXPORT, or Script code that may name
     /// its DEF name (with `Browser.currentScene.getNamedNode`, `addRoute`).

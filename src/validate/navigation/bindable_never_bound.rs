@@ -98,12 +98,7 @@ fn check(ctx: &mut Ctx) {
         return;
     }
     let wiring = Wiring::new(ctx);
-    let found: Vec<_> = later
-        .into_iter()
-        .filter(|&(id, _)| {
-            !wiring.is_routed_into_field(id, "bind") && !wiring.is_reachable_by_code(doc, id)
-        })
-        .collect();
+    let found = wiring.keep_unset(doc, later, "bind");
     for (id, first) in found {
         let node = doc.node(id);
         let type_name = node.type_name();

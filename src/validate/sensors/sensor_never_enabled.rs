@@ -57,12 +57,7 @@ fn check(ctx: &mut Ctx) {
         return;
     }
     let wiring = Wiring::new(ctx);
-    let found: Vec<_> = candidates
-        .into_iter()
-        .filter(|&(id, _)| {
-            !wiring.is_routed_into_field(id, "enabled") && !wiring.is_reachable_by_code(doc, id)
-        })
-        .collect();
+    let found = wiring.keep_unset(doc, candidates, "enabled");
     for (id, span) in found {
         let node = doc.node(id);
         let routes_out = wiring.is_routed_from(id);

@@ -61,12 +61,7 @@ fn check(ctx: &mut Ctx) {
         return;
     }
     let wiring = Wiring::new(ctx);
-    let found: Vec<_> = candidates
-        .into_iter()
-        .filter(|&(id, _)| {
-            !wiring.is_routed_into_field(id, "size") && !wiring.is_reachable_by_code(doc, id)
-        })
-        .collect();
+    let found = wiring.keep_unset(doc, candidates, "size");
     for (id, (span, size)) in found {
         let node = doc.node(id);
         let written = if node.entry("size").is_some() {
