@@ -87,7 +87,8 @@ fn directions(
     id: NodeId,
 ) -> Option<Vec<Direction>> {
     let node = doc.node(id);
-    let fields: &[&str] = if CURVES.contains(&node.type_name()) {
+    let is_curve = CURVES.contains(&node.type_name());
+    let fields: &[&str] = if is_curve {
         &["knot", "order", "controlPoint"]
     } else if is_surface(doc, id) {
         &[
@@ -115,7 +116,7 @@ fn directions(
             dimension,
         })
     };
-    if fields.len() == 3 {
+    if is_curve {
         let points = control_points(doc, routed, id)?;
         return Some(vec![direction("knot", "order", points, None)?]);
     }

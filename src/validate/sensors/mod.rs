@@ -8,7 +8,7 @@ pub mod sensor_size_zero;
 pub mod sensor_unrouted;
 
 use super::Check;
-use crate::model::{Document, Node, Place, Span};
+use crate::model::{Document, Node, NodeId, Place, Span};
 
 /// This group's rules, in catalogue order.
 pub static RULES: &[&Check] = &[
@@ -36,6 +36,14 @@ fn written_disabled(node: &Node) -> Option<Span> {
     }
     let entry = node.entry("enabled")?;
     (entry.value.as_bools()? == [false]).then_some(entry.span)
+}
+
+/// The nodes this file writes (not prototype copies) that the scene holds as written
+/// (see [`is_replaced`]).
+fn written_in_scene(doc: &Document) -> impl Iterator<Item = (NodeId, &Node)> {
+    doc.iter()
+        .take(doc.written_nodes().len())
+        .filter(move |(_, node)| !is_replaced(doc, node))
 }
 
 /// Whether what the document writes for the node is not what the scene holds: it is the

@@ -1,6 +1,6 @@
 //! SENSOR_NEVER_ENABLED: a sensor with `enabled FALSE` that nothing can enable.
 
-use super::{is_replaced, is_sensor, written_disabled};
+use super::{is_sensor, written_disabled, written_in_scene};
 use crate::report::Diagnostic;
 use crate::validate::events::wiring::Wiring;
 use crate::validate::Ctx;
@@ -47,10 +47,8 @@ crate::declare_rule! {
 
 fn check(ctx: &mut Ctx) {
     let doc = ctx.doc;
-    let candidates: Vec<_> = doc
-        .iter()
-        .take(doc.written_nodes().len())
-        .filter(|(_, node)| is_sensor(node) && !is_replaced(doc, node))
+    let candidates: Vec<_> = written_in_scene(doc)
+        .filter(|(_, node)| is_sensor(node))
         .filter_map(|(id, node)| Some((id, written_disabled(node)?)))
         .collect();
     if candidates.is_empty() {

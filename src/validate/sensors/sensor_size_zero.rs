@@ -1,6 +1,6 @@
 //! SENSOR_SIZE_ZERO: a ProximitySensor or TransformSensor whose box has no volume.
 
-use super::is_replaced;
+use super::written_in_scene;
 use crate::model::{Node, Span};
 use crate::report::Diagnostic;
 use crate::validate::events::wiring::Wiring;
@@ -47,13 +47,10 @@ crate::declare_rule! {
 
 fn check(ctx: &mut Ctx) {
     let doc = ctx.doc;
-    let candidates: Vec<_> = doc
-        .iter()
-        .take(doc.written_nodes().len())
+    let candidates: Vec<_> = written_in_scene(doc)
         .filter(|(_, node)| {
             matches!(node.type_name(), "ProximitySensor" | "TransformSensor")
                 && !node.is_connected("size")
-                && !is_replaced(doc, node)
         })
         .filter_map(|(id, node)| Some((id, flat_box(node)?)))
         .collect();

@@ -1,6 +1,6 @@
 //! SENSOR_UNROUTED: a sensor with a DEF name that no ROUTE, IS, Script or EXPORT connects.
 
-use super::{is_replaced, is_sensor, written_disabled};
+use super::{is_sensor, written_disabled, written_in_scene};
 use crate::report::Diagnostic;
 use crate::validate::events::wiring::Wiring;
 use crate::validate::Ctx;
@@ -54,12 +54,9 @@ crate::declare_rule! {
 
 fn check(ctx: &mut Ctx) {
     let doc = ctx.doc;
-    let candidates: Vec<_> = doc
-        .iter()
-        .take(doc.written_nodes().len())
+    let candidates: Vec<_> = written_in_scene(doc)
         .filter(|(_, node)| {
             is_sensor(node)
-                && !is_replaced(doc, node)
                 && node.def_name.is_some()
                 && node.connects.is_empty()
                 && written_disabled(node).is_none()
