@@ -10,6 +10,7 @@ mod inlined;
 mod merge;
 mod progress;
 mod read;
+mod render_notes;
 mod rules;
 mod settings;
 
@@ -674,20 +675,54 @@ fn check_input(
             document,
             text: source,
         } = x3dcheck::check::check_document(&name, &bytes, &config);
-        // A file that cannot be drawn keeps its report: the findings say why.
-        let preview = x3dcheck::render::prepare(
-            render,
-            Path::new(&name),
-            config.root.as_deref(),
-            &source,
-            document.as_ref(),
-            &mut report,
-        );
+        let root = config.root.as_deref();
+        // A file's source is freed before the scene is flattened, and read again only when
+        // the renderer has notes to place; standard input cannot be read again.
+        let (preview, text) = match input {
+            Input::File { path, .. } if render.render.is_some() => {
+                let mut text = render_text(&report, &source, shown);
+                let checked = render_notes::Fingerprint::of(&source);
+                drop(source);
+                drop(bytes);
+                let preview = x3dcheck::render::prepare_unresolved(
+                    render,
+                    Path::new(&name),
+                    root,
+                    document.as_ref(),
+                )
+                .and_then(|unresolved| match (unresolved, &document) {
+                    (Some(unresolved), Some(doc)) => render_notes::place(
+                        unresolved,
+                        path,
+                        &checked,
+                        doc,
+                        &mut report,
+                        &mut text,
+                        shown,
+                    )
+                    .map(Some),
+                    _ => Ok(None),
+                });
+                (preview, text)
+            }
+            _ => {
+                // A file that cannot be drawn keeps its report: the findings say why.
+                let preview = x3dcheck::render::prepare(
+                    render,
+                    Path::new(&name),
+                    root,
+                    &source,
+                    document.as_ref(),
+                    &mut report,
+                );
+                let text = render_text(&report, &source, shown);
+                drop(source);
+                drop(bytes);
+                (preview, text)
+            }
+        };
+        // The preview no longer needs the document.
         drop(document);
-        let text = render_text(&report, &source, shown);
-        // The preview no longer needs the document or its source.
-        drop(source);
-        drop(bytes);
         let render_failure = match preview {
             Ok(Some(preview)) => preview.save().err(),
             Ok(None) => None,

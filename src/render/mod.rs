@@ -124,26 +124,73 @@ pub fn prepare(
     doc: Option<&Document>,
     report: &mut FileReport,
 ) -> Result<Option<Preview>, String> {
+    Ok(match (prepare_unresolved(args, path, root, doc)?, doc) {
+        (Some(unresolved), Some(doc)) => Some(unresolved.resolve(source, doc, report)),
+        _ => None,
+    })
+}
+
+/// [`prepare`] without the source: the notes are placed afterwards by
+/// [`Unresolved::resolve`], so that a caller can free the source before the scene is
+/// flattened (with the document and the draw list, it made the peak of a large scene's
+/// memory) and read it again only when there are notes to place.
+pub fn prepare_unresolved(
+    args: &RenderArgs,
+    path: &Path,
+    root: Option<&Path>,
+    doc: Option<&Document>,
+) -> Result<Option<Unresolved>, String> {
     if args.render.is_none() {
         return Ok(None);
     }
     #[cfg(feature = "render")]
     {
-        preview(
-            args,
-            args.quality.settings(),
-            path,
-            root,
-            source,
-            doc,
-            report,
-        )
-        .map(Some)
+        let doc = doc.ok_or_else(|| no_scene(path))?;
+        unresolved(args, args.quality.settings(), path, root, doc).map(Some)
     }
     #[cfg(not(feature = "render"))]
     {
-        let _ = (path, root, source, doc, report);
+        let _ = (path, root, doc);
         Err("--render: this x3dcheck was built without the `render` feature".to_string())
+    }
+}
+
+/// A [`Preview`] whose notes (what cannot be drawn) are not yet in the report: placing
+/// them takes the source.
+#[cfg(feature = "render")]
+pub struct Unresolved {
+    preview: Preview,
+    notes: Vec<Diagnostic>,
+}
+
+/// Without the renderer there is never a preview.
+#[cfg(not(feature = "render"))]
+pub enum Unresolved {}
+
+#[cfg(feature = "render")]
+impl Unresolved {
+    /// Whether [`Unresolved::resolve`] needs the source.
+    pub fn has_notes(&self) -> bool {
+        !self.notes.is_empty()
+    }
+
+    /// Adds the notes to `report`, placed in `source`, the text `doc` was read from.
+    pub fn resolve(self, source: &[u8], doc: &Document, report: &mut FileReport) -> Preview {
+        report
+            .diagnostics
+            .extend(resolve(&self.notes, source, Some(doc)));
+        self.preview
+    }
+}
+
+#[cfg(not(feature = "render"))]
+impl Unresolved {
+    pub fn has_notes(&self) -> bool {
+        match *self {}
+    }
+
+    pub fn resolve(self, _: &[u8], _: &Document, _: &mut FileReport) -> Preview {
+        match self {}
     }
 }
 
@@ -181,9 +228,24 @@ pub fn preview(
     doc: Option<&Document>,
     report: &mut FileReport,
 ) -> Result<Preview, String> {
-    let Some(doc) = doc else {
-        return Err(format!("{}: no scene to render", path.display()));
-    };
+    let doc = doc.ok_or_else(|| no_scene(path))?;
+    Ok(unresolved(args, settings, path, root, doc)?.resolve(source, doc, report))
+}
+
+#[cfg(feature = "render")]
+fn no_scene(path: &Path) -> String {
+    format!("{}: no scene to render", path.display())
+}
+
+/// The [`Unresolved`] preview of `doc` with explicit [`Settings`].
+#[cfg(feature = "render")]
+fn unresolved(
+    args: &RenderArgs,
+    settings: Settings,
+    path: &Path,
+    root: Option<&Path>,
+    doc: &Document,
+) -> Result<Unresolved, String> {
     let base_dir = path
         .parent()
         .filter(|p| !p.as_os_str().is_empty())
@@ -201,7 +263,7 @@ pub fn preview(
         image: (args.size.width, args.size.height),
     };
     let flattened = flatten::flatten(doc, &options)?;
-    let diagnostics: Vec<Diagnostic> = flattened
+    let notes: Vec<Diagnostic> = flattened
         .notes
         .iter()
         .map(|note| {
@@ -216,15 +278,15 @@ pub fn preview(
             d
         })
         .collect();
-    report
-        .diagnostics
-        .extend(resolve(&diagnostics, source, Some(doc)));
-    Ok(Preview {
-        list: flattened.list,
-        width: args.size.width,
-        height: args.size.height,
-        settings,
-        out: args.render.clone(),
+    Ok(Unresolved {
+        preview: Preview {
+            list: flattened.list,
+            width: args.size.width,
+            height: args.size.height,
+            settings,
+            out: args.render.clone(),
+        },
+        notes,
     })
 }
 
