@@ -134,14 +134,7 @@ async fn render_on(
             return Err(GpuError::Failed(error.to_string()));
         }
     }
-    let pixels = drawn?;
-    let image = image::RgbaImage::from_raw(target_width, target_height, pixels)
-        .ok_or_else(|| GpuError::Failed("the read-back image has the wrong size".into()))?;
-    Ok(if scale == 1 {
-        image
-    } else {
-        downsample(&image, scale)
-    })
+    drawn
 }
 
 /// A device on any adapter (see [`find_adapter`]); public for tests that run the WGSL.
@@ -151,6 +144,8 @@ pub async fn open_device() -> Result<(wgpu::Device, wgpu::Queue), GpuError> {
         .request_device(&wgpu::DeviceDescriptor {
             label: Some("x3dcheck"),
             required_limits: wgpu::Limits::downlevel_defaults().using_resolution(adapter.limits()),
+            // Vertex and index buffers written in place (see `resources::buffer`).
+            required_features: adapter.features() & wgpu::Features::MAPPABLE_PRIMARY_BUFFERS,
             ..Default::default()
         })
         .await
@@ -189,22 +184,4 @@ pub(super) async fn find_adapter() -> Option<wgpu::Adapter> {
         }
     }
     None
-}
-
-/// Averages `scale` × `scale` blocks (supersampling).
-fn downsample(image: &image::RgbaImage, scale: u32) -> image::RgbaImage {
-    let (width, height) = (image.width() / scale, image.height() / scale);
-    let count = scale * scale;
-    image::RgbaImage::from_fn(width, height, |x, y| {
-        let mut sum = [0u32; 4];
-        for dy in 0..scale {
-            for dx in 0..scale {
-                let p = image.get_pixel(x * scale + dx, y * scale + dy).0;
-                for c in 0..4 {
-                    sum[c] += u32::from(p[c]);
-                }
-            }
-        }
-        image::Rgba(sum.map(|s| ((s + count / 2) / count) as u8))
-    })
 }

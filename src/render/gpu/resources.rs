@@ -181,7 +181,36 @@ pub enum MeshBuffers {
     },
 }
 
+/// A buffer holding `bytes`. Where the device can map vertex and index buffers, they are
+/// written in place: `create_buffer_init` would stage the bytes in a second buffer first,
+/// which on a software driver is a second copy in the process's memory (6 MB of the
+/// benchmark scene's peak).
 fn buffer(device: &wgpu::Device, bytes: &[u8], usage: wgpu::BufferUsages) -> wgpu::Buffer {
+    if bytes.is_empty()
+        || !device
+            .features()
+            .contains(wgpu::Features::MAPPABLE_PRIMARY_BUFFERS)
+    {
+        return staged(device, bytes, usage);
+    }
+    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+        label: None,
+        size: (bytes.len() as u64).next_multiple_of(wgpu::COPY_BUFFER_ALIGNMENT),
+        usage: usage | wgpu::BufferUsages::MAP_WRITE,
+        mapped_at_creation: true,
+    });
+    let written = buffer
+        .slice(..)
+        .get_mapped_range_mut()
+        .map(|mut mapped| mapped.slice(..bytes.len()).copy_from_slice(bytes));
+    buffer.unmap();
+    match written {
+        Ok(()) => buffer,
+        Err(_) => staged(device, bytes, usage),
+    }
+}
+
+fn staged(device: &wgpu::Device, bytes: &[u8], usage: wgpu::BufferUsages) -> wgpu::Buffer {
     device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
         label: None,
         contents: bytes,
