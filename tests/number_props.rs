@@ -71,6 +71,11 @@ proptest! {
     }
 
     #[test]
+    fn i32_text_agrees_with_std(text in "[+-]?0{0,24}[0-9]{0,24}") {
+        prop_assert_eq!(parse_i32(text.as_bytes()), text.parse::<i32>().ok());
+    }
+
+    #[test]
     fn i32_agrees_with_std(x in any::<i64>()) {
         let text = x.to_string();
         prop_assert_eq!(parse_i32(text.as_bytes()), text.parse::<i32>().ok());
