@@ -744,7 +744,10 @@ mod tests {
         assert_eq!(parse_i32("9".repeat(10_000).as_bytes()), None);
         // Leading zeros, then digits read eight at a time: 2^64 would wrap to 0.
         assert_eq!(parse_i32(b"000000000000000000000000042"), Some(42));
-        assert_eq!(parse_i32(b"-0000000000000000000002147483648"), Some(i32::MIN));
+        assert_eq!(
+            parse_i32(b"-0000000000000000000002147483648"),
+            Some(i32::MIN)
+        );
         assert_eq!(parse_i32(b"18446744073709551616"), None);
         assert_eq!(parse_i32(b"9999999999999999999"), None);
         assert_eq!(
