@@ -43,7 +43,10 @@ pub fn pieces(s: &[u8], piece: usize) -> Vec<Range<usize>> {
         out.push(start..end);
         start = end;
     }
-    out.push(start..s.len());
+    // The last token may have run to the end: no empty piece after it.
+    if start < s.len() || out.is_empty() {
+        out.push(start..s.len());
+    }
     out
 }
 
