@@ -4,7 +4,7 @@
 use proptest::prelude::*;
 use x3dcheck::model::Value;
 use x3dcheck::parse::number::{parse_f32, parse_f64, parse_i32};
-use x3dcheck::parse::xml_value::parse_value;
+use x3dcheck::parse::xml_value::{parse_value, parse_value_in, parse_value_in_pieces, Syntax};
 use x3dcheck::schema::FieldType;
 
 fn check_f32(text: &str) {
@@ -71,6 +71,11 @@ proptest! {
     }
 
     #[test]
+    fn i32_text_agrees_with_std(text in "[+-]?0{0,24}[0-9]{0,24}") {
+        prop_assert_eq!(parse_i32(text.as_bytes()), text.parse::<i32>().ok());
+    }
+
+    #[test]
     fn i32_agrees_with_std(x in any::<i64>()) {
         let text = x.to_string();
         prop_assert_eq!(parse_i32(text.as_bytes()), text.parse::<i32>().ok());
@@ -100,5 +105,39 @@ proptest! {
         let expected64: Vec<u64> = tokens.iter().map(|t| t.parse::<f64>().unwrap().to_bits()).collect();
         prop_assert_eq!(floats.iter().map(|v| v.to_bits()).collect::<Vec<_>>(), expected32);
         prop_assert_eq!(doubles.iter().map(|v| v.to_bits()).collect::<Vec<_>>(), expected64);
+    }
+
+    /// A value parsed in pieces (as long values are, on several threads) gives what the
+    /// one-piece parse gives: the same numbers bit for bit, or the same first error, at the
+    /// same place, or the same misplaced comma.
+    #[test]
+    fn pieces_parse_as_one(
+        tokens in prop::collection::vec(
+            prop_oneof![
+                8 => "[+-]?[0-9]{1,6}(\\.[0-9]{0,8})?([eE][+-]?[0-9]{1,2})?",
+                1 => "(NaN|-INF|1\\.2\\.3|x|0x1F|99999999999|true)",
+            ],
+            0..60,
+        ),
+        separators in prop::collection::vec(prop_oneof![8 => "[ \t\r\n]{1,3}", 1 => " ?, ?"], 60),
+        ty in prop_oneof![
+            Just(FieldType::MFFloat),
+            Just(FieldType::MFVec3f),
+            Just(FieldType::MFVec2d),
+            Just(FieldType::MFInt32),
+            Just(FieldType::MFRotation),
+        ],
+        classic in any::<bool>(),
+        piece in 1usize..40,
+    ) {
+        let mut text = String::new();
+        for (token, separator) in tokens.iter().zip(&separators) {
+            text.push_str(token);
+            text.push_str(separator);
+        }
+        let syntax = if classic { Syntax::Classic } else { Syntax::Xml };
+        let whole = parse_value_in(syntax, ty, &text);
+        let pieces = parse_value_in_pieces(syntax, ty, &text, piece);
+        prop_assert_eq!(format!("{pieces:?}"), format!("{whole:?}"), "{:?} in pieces of {}", text, piece);
     }
 }

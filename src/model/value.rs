@@ -141,6 +141,16 @@ pub trait Sink<T> {
     fn push(&mut self, value: T);
     /// How many numbers it took.
     fn count(&self) -> usize;
+    /// Takes `values` in order, as one `push` each (the numbers of a value parsed in
+    /// pieces on several threads).
+    fn extend_from(&mut self, values: &[T])
+    where
+        T: Copy,
+    {
+        for &value in values {
+            self.push(value);
+        }
+    }
 }
 
 impl<T> Sink<T> for Vec<T> {
@@ -152,6 +162,13 @@ impl<T> Sink<T> for Vec<T> {
     #[inline(always)]
     fn count(&self) -> usize {
         Vec::len(self)
+    }
+
+    fn extend_from(&mut self, values: &[T])
+    where
+        T: Copy,
+    {
+        self.extend_from_slice(values);
     }
 }
 

@@ -179,16 +179,21 @@ impl<'s> Tree<'s> {
     /// The elements of array `i`, in order.
     pub fn elements(&self, i: usize) -> Elements<'_, 's> {
         let array = &self.items[i];
-        debug_assert_eq!(array.kind, Kind::Array);
-        let base = array.start as usize + 1;
         Elements {
             tree: self,
-            text: &self.src.as_bytes()[base..array.end as usize - 1],
-            base,
+            text: self.array_text(i),
+            base: array.start as usize + 1,
             at: 0,
             container: i + 1,
             left: array.len,
         }
+    }
+
+    /// The text of array `i` between its brackets.
+    pub fn array_text(&self, i: usize) -> &'s [u8] {
+        let array = &self.items[i];
+        debug_assert_eq!(array.kind, Kind::Array);
+        &self.src.as_bytes()[array.start as usize + 1..array.end as usize - 1]
     }
 
     /// The value of the first member of object `i` whose key is `key` (keys compared as

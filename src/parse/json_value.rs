@@ -10,9 +10,14 @@
 //! precision (an SFFloat `1e39` is +∞ for a rule to report, not an error here), into one
 //! vector per field.
 
+use std::ops::Range;
+
+use rayon::prelude::*;
+
 use super::tree::{Kind, ScanNumber, Tree, ValueRef, NOT_INTEGER};
 use crate::model::{Image, Node, Sink, Summarized, Summarizer, Value};
-use crate::parse::number::{parse_f32, parse_f64, scan_float, scan_i32};
+use crate::parse::number::{is_separator, parse_f32, parse_f64, scan_float, scan_i32};
+use crate::parse::split;
 use crate::schema::{FieldDef, FieldType, Scalar};
 
 /// A value that does not fit its field's type. `span` is a byte range in the input: the
@@ -65,7 +70,7 @@ pub fn convert_summary(
     }
 }
 
-fn summarize<T: Summarized>(
+fn summarize<T: Summarized + Send>(
     tree: &Tree,
     i: usize,
     node: &Node,
@@ -432,7 +437,7 @@ fn scalar<T>(tree: &Tree, e: ValueRef, read: Scalarize<T>) -> Option<Result<T, S
     (item.kind == Kind::Number).then(|| read(tree.raw_bytes(e), item.flags & NOT_INTEGER == 0))
 }
 
-fn numbers<T>(
+fn numbers<T: Copy + Send>(
     tree: &Tree,
     i: usize,
     ty: FieldType,
@@ -474,7 +479,7 @@ fn bad_number(
 }
 
 /// The numbers of the array at item `i` into `values`, its count checked.
-fn numbers_into<T, S: Sink<T>>(
+fn numbers_into<T: Copy + Send, S: Sink<T>>(
     tree: &Tree,
     i: usize,
     ty: FieldType,
@@ -483,6 +488,12 @@ fn numbers_into<T, S: Sink<T>>(
 ) -> Result<(), ValueError> {
     if tree.kind(i) != Kind::Array {
         return Err(wrong_kind(tree, i, ty));
+    }
+    if let Some(pieces) = numbers_in_pieces(tree, i, number.scan) {
+        for numbers in &pieces {
+            values.extend_from(numbers);
+        }
+        return check_count(tree, i, ty, values.count());
     }
     let mut elements = tree.elements(i);
     loop {
@@ -500,6 +511,51 @@ fn numbers_into<T, S: Sink<T>>(
         }
     }
     check_count(tree, i, ty, values.count())
+}
+
+/// The numbers of a long array holding numbers only, read in pieces on the pool's
+/// threads ([`split`]), each piece's in a vector. `None` when the array is short, or holds
+/// anything [`Elements::next_number`] leaves to the one-by-one reading (which then reads
+/// the array and reports what is wrong), so the numbers are always those it would read.
+///
+/// [`Elements::next_number`]: super::tree::Elements::next_number
+fn numbers_in_pieces<T: Copy + Send>(
+    tree: &Tree,
+    array: usize,
+    scan: ScanNumber<T>,
+) -> Option<Vec<Vec<T>>> {
+    let text = tree.array_text(array);
+    let piece = split::piece_size(text.len(), rayon::current_num_threads)?;
+    let pieces = split::pieces(text, piece)
+        .into_par_iter()
+        .map(|range| numbers_of_piece(text, range, scan))
+        .collect::<Option<Vec<_>>>()?;
+    let count: usize = pieces.iter().map(Vec::len).sum();
+    (count == tree.item(array).len as usize).then_some(pieces)
+}
+
+/// The numbers in `text[range]`, each read as [`Elements::next_number`] reads it; `None`
+/// at the first element that it would not read.
+///
+/// [`Elements::next_number`]: super::tree::Elements::next_number
+fn numbers_of_piece<T>(text: &[u8], range: Range<usize>, scan: ScanNumber<T>) -> Option<Vec<T>> {
+    let text = &text[..range.end];
+    let mut numbers = Vec::with_capacity(range.len() / 4 + 1);
+    let mut at = range.start;
+    loop {
+        while at < text.len() && is_separator(text[at]) {
+            at += 1;
+        }
+        if at == text.len() {
+            return Some(numbers);
+        }
+        if !matches!(text[at], b'-' | b'0'..=b'9') {
+            return None;
+        }
+        let (value, end) = scan(text, at)?;
+        numbers.push(value);
+        at = end;
+    }
 }
 
 fn strings(tree: &Tree, i: usize, ty: FieldType) -> Result<Vec<String>, ValueError> {

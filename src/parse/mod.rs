@@ -9,6 +9,7 @@ mod directive;
 pub mod json;
 pub mod number;
 pub mod rules;
+pub mod split;
 pub mod xml;
 mod xml_entities;
 pub mod xml_value;

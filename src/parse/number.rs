@@ -9,6 +9,12 @@
 //!
 //! The `scan_*` functions read one token starting at a given offset in a larger text and
 //! say where it ends; the `parse_*` functions read a whole token and nothing else.
+//!
+//! Written by hand rather than with a float crate because it measured best: on the
+//! benchmark scene's MF values (callgrind, a loop over every float token), this scanner
+//! took 183 instructions per float, fast-float2 0.2 191 and lexical-parse-float 1.0 223,
+//! with the same wall time for the first two. The standard library's slow path is itself
+//! fast_float's Eisel-Lemire algorithm, so a crate would not speed it up either.
 
 /// True for the bytes that separate values in the XML encoding: XML whitespace and the
 /// comma, which X3D treats as whitespace.
@@ -470,13 +476,15 @@ fn scan_integer(s: &[u8], start: usize) -> Result<(bool, u64, usize), usize> {
         }
     } else {
         digits_start = i;
-        while i < n {
-            let d = s[i].wrapping_sub(b'0');
-            if d > 9 {
-                break;
-            }
-            magnitude = magnitude.saturating_mul(10).saturating_add(d as u64);
+        // Leading zeros change nothing; after them, up to 19 digits fit in a u64 and
+        // more saturate.
+        while s.get(i) == Some(&b'0') {
             i += 1;
+        }
+        let significant = i;
+        i = scan_digits(s, i, &mut magnitude);
+        if i - significant > 19 {
+            magnitude = u64::MAX;
         }
     }
     if i == digits_start || (i < n && !is_separator(s[i])) {
@@ -734,6 +742,14 @@ mod tests {
         assert_eq!(parse_i32(b""), None);
         assert_eq!(parse_i32(b"-"), None);
         assert_eq!(parse_i32("9".repeat(10_000).as_bytes()), None);
+        // Leading zeros, then digits read eight at a time: 2^64 would wrap to 0.
+        assert_eq!(parse_i32(b"000000000000000000000000042"), Some(42));
+        assert_eq!(
+            parse_i32(b"-0000000000000000000002147483648"),
+            Some(i32::MIN)
+        );
+        assert_eq!(parse_i32(b"18446744073709551616"), None);
+        assert_eq!(parse_i32(b"9999999999999999999"), None);
         assert_eq!(
             scan_i32(b"99999999999 1", 0),
             Err((IntError::OutOfRange, 11))

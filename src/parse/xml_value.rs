@@ -10,8 +10,12 @@
 //! image's pixel count with its size.
 
 use std::fmt;
+use std::ops::Range;
+
+use rayon::prelude::*;
 
 use super::number::{is_separator, scan_float, scan_i32, scan_pixel, token_end, Float, IntError};
+use super::split;
 use crate::model::{Image, Node, Sink, Summarized, Summarizer, Value};
 use crate::schema::{FieldDef, FieldType, Scalar};
 
@@ -88,20 +92,51 @@ pub enum Syntax {
 
 /// [`parse_value`] for text in the given [`Syntax`].
 pub fn parse_value_in(syntax: Syntax, ty: FieldType, text: &str) -> Result<Value, SyntaxError> {
+    parse_value_split(syntax, ty, text, Split::Auto)
+}
+
+/// [`parse_value_in`] with a numeric MF value cut into pieces of about `piece` bytes,
+/// whatever its length and the number of threads: for the tests that pin that parsing in
+/// pieces gives what parsing in one piece does.
+#[doc(hidden)]
+pub fn parse_value_in_pieces(
+    syntax: Syntax,
+    ty: FieldType,
+    text: &str,
+    piece: usize,
+) -> Result<Value, SyntaxError> {
+    parse_value_split(syntax, ty, text, Split::Pieces(piece))
+}
+
+/// Whether and how a long numeric value is cut into pieces parsed on several threads.
+#[derive(Copy, Clone, Debug)]
+enum Split {
+    /// As [`split::piece_size`] says for its length and the current pool.
+    Auto,
+    /// In pieces of about this many bytes.
+    Pieces(usize),
+}
+
+fn parse_value_split(
+    syntax: Syntax,
+    ty: FieldType,
+    text: &str,
+    split: Split,
+) -> Result<Value, SyntaxError> {
     let s = text.as_bytes();
     let (value, comma) = match ty.scalar() {
         Scalar::Float => {
-            let (values, comma) = parse_floats::<f32>(ty, s)?;
+            let (values, comma) = parse_numbers::<f32>(ty, s, split)?;
             check_count(ty, s, values.len())?;
             (Value::Floats(values), comma)
         }
         Scalar::Double => {
-            let (values, comma) = parse_floats::<f64>(ty, s)?;
+            let (values, comma) = parse_numbers::<f64>(ty, s, split)?;
             check_count(ty, s, values.len())?;
             (Value::Doubles(values), comma)
         }
         Scalar::Int32 => {
-            let (values, comma) = parse_int32s(ty, s)?;
+            let (values, comma) = parse_numbers::<i32>(ty, s, split)?;
             check_count(ty, s, values.len())?;
             (Value::Int32s(values), comma)
         }
@@ -146,23 +181,20 @@ pub fn parse_summary(
     text: &str,
 ) -> Result<Value, SyntaxError> {
     match def.ty.scalar() {
-        Scalar::Float => summarize::<f32>(node, def, text.as_bytes(), scan_floats),
-        Scalar::Double => summarize::<f64>(node, def, text.as_bytes(), scan_floats),
-        _ => summarize::<i32>(node, def, text.as_bytes(), scan_int32s),
+        Scalar::Float => summarize::<f32>(node, def, text.as_bytes()),
+        Scalar::Double => summarize::<f64>(node, def, text.as_bytes()),
+        _ => summarize::<i32>(node, def, text.as_bytes()),
     }
 }
 
-/// [`scan_floats`] or [`scan_int32s`] into a summary.
-type Scan<T> = fn(FieldType, &[u8], &mut Summarizer<T>) -> Result<Option<usize>, SyntaxError>;
-
-fn summarize<T: Summarized>(
+/// The numbers of `s` into a summary.
+fn summarize<T: Summarized + Numeric>(
     node: &Node,
     def: &'static FieldDef,
     s: &[u8],
-    scan: Scan<T>,
 ) -> Result<Value, SyntaxError> {
     let mut summarizer = Summarizer::<T>::new(node, def);
-    let comma = scan(def.ty, s, &mut summarizer)?;
+    let comma = scan_numbers(def.ty, s, &mut summarizer, Split::Auto)?;
     check_count(def.ty, s, summarizer.count())?;
     match comma {
         None => Ok(summarizer.finish()),
@@ -278,15 +310,132 @@ fn check_count(ty: FieldType, s: &[u8], count: usize) -> Result<(), SyntaxError>
 /// The numbers of `s`, with the offset of the first comma 19776-1 5.1.2 does not allow.
 type Scanned<T> = (Vec<T>, Option<usize>);
 
-fn parse_floats<F: Float>(ty: FieldType, s: &[u8]) -> Result<Scanned<F>, SyntaxError> {
-    let mut values: Vec<F> = if ty.is_mf() {
+fn parse_numbers<T: Numeric>(
+    ty: FieldType,
+    s: &[u8],
+    split: Split,
+) -> Result<Scanned<T>, SyntaxError> {
+    let mut values: Vec<T> = if ty.is_mf() {
         Vec::with_capacity(estimate(s))
     } else {
         Vec::with_capacity(ty.arity())
     };
-    let comma = scan_floats(ty, s, &mut values)?;
+    let comma = scan_numbers(ty, s, &mut values, split)?;
     trim_capacity(&mut values);
     Ok((values, comma))
+}
+
+/// A numeric scalar type with its one-piece scanner.
+trait Numeric: Copy + Send {
+    /// The numbers of `s` into `values`; the offset of the first misplaced comma.
+    fn scan<S: Sink<Self>>(
+        ty: FieldType,
+        s: &[u8],
+        values: &mut S,
+    ) -> Result<Option<usize>, SyntaxError>;
+}
+
+impl Numeric for f32 {
+    fn scan<S: Sink<f32>>(
+        ty: FieldType,
+        s: &[u8],
+        values: &mut S,
+    ) -> Result<Option<usize>, SyntaxError> {
+        scan_floats(ty, s, values)
+    }
+}
+
+impl Numeric for f64 {
+    fn scan<S: Sink<f64>>(
+        ty: FieldType,
+        s: &[u8],
+        values: &mut S,
+    ) -> Result<Option<usize>, SyntaxError> {
+        scan_floats(ty, s, values)
+    }
+}
+
+impl Numeric for i32 {
+    fn scan<S: Sink<i32>>(
+        ty: FieldType,
+        s: &[u8],
+        values: &mut S,
+    ) -> Result<Option<usize>, SyntaxError> {
+        scan_int32s(ty, s, values)
+    }
+}
+
+/// [`Numeric::scan`], in pieces on several threads when an MF value is long
+/// ([`split`]). The numbers, the error and the misplaced comma are those of the one-piece
+/// scan: the first piece with an error has the first error, and commas are judged once
+/// the count before each piece is known.
+fn scan_numbers<T: Numeric, S: Sink<T> + Send>(
+    ty: FieldType,
+    s: &[u8],
+    values: &mut S,
+    split: Split,
+) -> Result<Option<usize>, SyntaxError> {
+    let piece = match split {
+        Split::Auto => split::piece_size(s.len(), rayon::current_num_threads),
+        Split::Pieces(bytes) => Some(bytes),
+    };
+    let Some(piece) = piece.filter(|_| ty.is_mf()) else {
+        return T::scan(ty, s, values);
+    };
+    let counted = split::scan_pieces(
+        s,
+        piece,
+        values,
+        |range, values| scan_piece(ty, s, range, values),
+        |range, values| scan_piece(ty, s, range, values),
+    )?;
+    if memchr::memchr(b',', s).is_none() {
+        return Ok(None);
+    }
+    Ok(counted
+        .into_par_iter()
+        .find_map_first(|(range, before)| first_misplaced_comma(ty, s, range, before)))
+}
+
+/// The numbers of the tokens in `s[range]`, with errors placed in `s`; commas are judged
+/// by [`first_misplaced_comma`].
+fn scan_piece<T: Numeric, S: Sink<T>>(
+    ty: FieldType,
+    s: &[u8],
+    range: Range<usize>,
+    values: &mut S,
+) -> Result<(), SyntaxError> {
+    let start = range.start;
+    match T::scan(ty, &s[range], values) {
+        Ok(_) => Ok(()),
+        Err(mut error) => {
+            error.offset += start;
+            Err(error)
+        }
+    }
+}
+
+/// The first comma in `s[range]` that [`comma_allowed`] refuses, `before` scalars
+/// preceding the range: what the one-piece scan notes as it goes.
+fn first_misplaced_comma(
+    ty: FieldType,
+    s: &[u8],
+    range: Range<usize>,
+    before: usize,
+) -> Option<usize> {
+    memchr::memchr(b',', &s[range.clone()])?;
+    let s = &s[..range.end];
+    let mut comma = None;
+    let mut count = before;
+    let mut i = range.start;
+    loop {
+        i = skip_separators(ty, s, i, count, &mut comma);
+        if comma.is_some() || i >= s.len() {
+            return comma;
+        }
+        i = token_end(s, i);
+        count += 1;
+    }
 }
 
 /// Whether a comma may follow `count` scalars of a value of type `ty`: only between the
@@ -426,17 +575,6 @@ fn float_error(ty: FieldType, s: &[u8], start: usize, end: usize) -> SyntaxError
         String::new()
     };
     SyntaxError::at((start, end), format!("`{token}` is not a number{hint}"))
-}
-
-fn parse_int32s(ty: FieldType, s: &[u8]) -> Result<Scanned<i32>, SyntaxError> {
-    let mut values: Vec<i32> = if ty.is_mf() {
-        Vec::with_capacity(estimate(s))
-    } else {
-        Vec::with_capacity(1)
-    };
-    let comma = scan_int32s(ty, s, &mut values)?;
-    trim_capacity(&mut values);
-    Ok((values, comma))
 }
 
 /// The whole numbers of `s` into `values`; the offset of the first misplaced comma.
