@@ -14,7 +14,9 @@ crate::declare_rule! {
     /// Reports an HAnimHumanoid whose `joints`, `segments` or `sites` field is written
     /// (not empty) but leaves out an HAnimJoint, HAnimSegment or HAnimSite of its
     /// `skeleton` (a site listed in `viewpoints` instead counts as listed), and each node
-    /// such a list holds that is not in the skeleton. An empty list is left alone, as is
+    /// such a list holds that is not in the skeleton (except a site the humanoid also
+    /// holds in `viewpoints`: a viewpoint site outside the skeleton, which some
+    /// exporters list in `sites` too). An empty list is left alone, as is
     /// a humanoid whose skeleton holds prototype instances or is set by a ROUTE or `IS`.
     ///
     /// ## Why it matters
@@ -108,14 +110,22 @@ fn check_list(
     }
     let skeleton = humanoid.of_type(type_name);
     let in_skeleton: HashSet<NodeId> = skeleton.iter().copied().collect();
+    // A site with a Viewpoint that the humanoid holds in `viewpoints` may be listed in
+    // `sites` as well, and a site of the skeleton listed in `viewpoints` counts as listed.
+    let viewpoints: HashSet<NodeId> = if field == "sites" {
+        node.children("viewpoints").iter().map(|c| c.node).collect()
+    } else {
+        HashSet::new()
+    };
     let mut listed_set: HashSet<NodeId> = listed.iter().map(|c| c.node).collect();
-    if field == "sites" {
-        listed_set.extend(node.children("viewpoints").iter().map(|c| c.node));
-    }
+    listed_set.extend(viewpoints.iter().copied());
     let mut out = Vec::new();
     for child in listed {
         let listed_node = doc.node(child.node);
-        if listed_node.type_name() != type_name || in_skeleton.contains(&child.node) {
+        if listed_node.type_name() != type_name
+            || in_skeleton.contains(&child.node)
+            || viewpoints.contains(&child.node)
+        {
             continue;
         }
         let message = format!(
@@ -135,7 +145,11 @@ fn check_list(
         .filter(|id| !listed_set.contains(id))
         .collect();
     if !missing.is_empty() {
-        let names: Vec<String> = missing.iter().take(NOTES).map(|&id| describe(doc, id)).collect();
+        let names: Vec<String> = missing
+            .iter()
+            .take(NOTES)
+            .map(|&id| describe(doc, id))
+            .collect();
         let more = if missing.len() > NOTES { ", …" } else { "" };
         let message = format!(
             "HAnimHumanoid `{field}` leaves out {} of the {} {type_name} nodes of its skeleton: {}{more}",
@@ -145,7 +159,9 @@ fn check_list(
         );
         let mut diagnostic = Diagnostic::new(&HANIM_LIST_MISMATCH, entry.span, message)
             .node(humanoid.id)
-            .help(format!("add a USE of each to `{field}` (containerField='{field}')"));
+            .help(format!(
+                "add a USE of each to `{field}` (containerField='{field}')"
+            ));
         for &id in missing.iter().take(NOTES) {
             diagnostic = diagnostic.related(doc.node(id).span, "not listed");
         }

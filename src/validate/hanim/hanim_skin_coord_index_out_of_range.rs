@@ -112,11 +112,7 @@ fn check(ctx: &mut Ctx) {
 }
 
 /// The skinCoord of a humanoid, when it is a coordinate node whose points the file gives.
-fn skin(
-    ctx: &Ctx,
-    routed: &HashSet<(NodeId, String)>,
-    humanoid: NodeId,
-) -> Option<Skin> {
+fn skin(ctx: &Ctx, routed: &HashSet<(NodeId, String)>, humanoid: NodeId) -> Option<Skin> {
     let doc = ctx.doc;
     if set_elsewhere(doc, routed, humanoid, "skinCoord") {
         return None;

@@ -4,9 +4,12 @@
 
 pub mod hanim_list_mismatch;
 pub mod hanim_name_duplicate;
+pub mod hanim_name_not_standard;
 pub mod hanim_skin_coord_index_out_of_range;
 pub mod hanim_skin_weight_count_mismatch;
 pub mod hanim_skin_weight_out_of_range;
+#[rustfmt::skip]
+pub mod names;
 
 use std::collections::HashSet;
 
@@ -21,6 +24,7 @@ pub static RULES: &[&Check] = &[
     &hanim_skin_weight_out_of_range::CHECK,
     &hanim_list_mismatch::CHECK,
     &hanim_name_duplicate::CHECK,
+    &hanim_name_not_standard::CHECK,
 ];
 
 /// One HAnimHumanoid and what its skeleton holds.
@@ -120,12 +124,4 @@ pub(crate) fn describe(doc: &Document, id: NodeId) -> String {
         (None, Some(def)) => format!("{} DEF `{}`", node.type_name(), def.text),
         (None, None) => node.type_name().to_string(),
     }
-}
-
-/// The joint → humanoid map: each HAnimJoint reached from a humanoid's skeleton, with it.
-pub(crate) fn joint_owners(humanoids: &[Humanoid]) -> Vec<(NodeId, &Humanoid)> {
-    humanoids
-        .iter()
-        .flat_map(|h| h.joints.iter().map(move |&j| (j, h)))
-        .collect()
 }
