@@ -16,7 +16,7 @@ crate::declare_rule! {
     /// `skeleton` (a site listed in `viewpoints` instead counts as listed), and each node
     /// such a list holds that is not in the skeleton (except a site the humanoid also
     /// holds in `viewpoints`: a viewpoint site outside the skeleton, which some
-    /// exporters list in `sites` too). An empty list is left alone, as is
+    /// exporters list in `sites` too), and a node such a list holds more than once. An empty list is left alone, as is
     /// a humanoid whose skeleton holds prototype instances or is set by a ROUTE or `IS`.
     ///
     /// ## Why it matters
@@ -50,8 +50,8 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 26.3.2 HAnimHumanoid, with the Humanoid object of ISO/IEC 19774 and 19774-1:
-    /// the joints field holds a reference to each Joint object of the skeleton hierarchy,
-    /// and segments and sites likewise (the X3D object model: "The joints field contains a
+    /// the joints field holds one reference for each Joint object of the skeleton
+    /// hierarchy, and segments and sites likewise (the X3D object model: "The joints field contains a
     /// list of USE references for all HAnimJoint node instances found within the preceding
     /// skeleton hierarchy"). Reading: an empty list is common in files that never use the
     /// lists and is not reported; a warning, since the skeleton itself is whole.
@@ -120,8 +120,23 @@ fn check_list(
     let mut listed_set: HashSet<NodeId> = listed.iter().map(|c| c.node).collect();
     listed_set.extend(viewpoints.iter().copied());
     let mut out = Vec::new();
+    let mut seen = HashSet::new();
     for child in listed {
         let listed_node = doc.node(child.node);
+        if !seen.insert(child.node) {
+            let message = format!(
+                "HAnimHumanoid `{field}` lists {} more than once",
+                describe(doc, child.node)
+            );
+            out.push(
+                Diagnostic::new(&HANIM_LIST_MISMATCH, child.span, message)
+                    .node(humanoid.id)
+                    .help(format!(
+                        "list each {type_name} of the skeleton once in `{field}`"
+                    )),
+            );
+            continue;
+        }
         if listed_node.type_name() != type_name
             || in_skeleton.contains(&child.node)
             || viewpoints.contains(&child.node)
