@@ -1,10 +1,12 @@
-//! Generates `src/schema/generated.rs`, the checker's node and field tables, and
-//! `src/schema/descriptions.rs`, their documentation text, from the X3D Unified Object Model
+//! Generates `src/schema/generated.rs`, the checker's node and field tables,
+//! `src/schema/descriptions.rs`, their documentation text, and `src/validate/hanim/names.rs`,
+//! the HAnim 2.0 joint and segment names, from the X3D Unified Object Model
 //! files in `../shared/oracle`.
 
 mod apply;
 mod describe;
 mod emit;
+mod hanim;
 mod uom;
 mod xml;
 
@@ -50,17 +52,21 @@ pub type Generated = (&'static str, String);
 /// 3.0's with `src/schema/vrml97.rs` and returns the text of `generated.rs`, with the
 /// descriptions of the nodes and fields in `descriptions.rs`.
 /// Prints to stderr what it left out of the tables and what the corrections did.
-pub fn generate(oracle_dir: &Path) -> Result<[Generated; 2], String> {
+pub fn generate(oracle_dir: &Path) -> Result<[Generated; 3], String> {
     let mut notes = Notes::default();
     let mut applied = apply::Applied::default();
     let mut descriptions = describe::Descriptions::default();
     let mut schemas = Vec::new();
+    let mut hanim_names = None;
     for version in Version::X3D {
         let path = oracle_dir.join(format!("X3dUnifiedObjectModel-{version}.xml"));
         let in_file = |e: String| format!("{}: {e}", path.display());
         let text = fs::read_to_string(&path).map_err(|e| in_file(e.to_string()))?;
         let root = xml::parse(&text).map_err(in_file)?;
         descriptions.read(&root);
+        if version.to_string() == hanim::SOURCE {
+            hanim_names = Some(hanim::render(&root).map_err(in_file)?);
+        }
         let mut schema = uom::read(version, &root, &mut notes).map_err(in_file)?;
         apply::apply(&mut schema, &mut applied)?;
         schemas.push(schema);
@@ -84,6 +90,10 @@ pub fn generate(oracle_dir: &Path) -> Result<[Generated; 2], String> {
     Ok([
         ("src/schema/generated.rs", emit::render(&schemas)),
         ("src/schema/descriptions.rs", descriptions.render(&schemas)),
+        (
+            "src/validate/hanim/names.rs",
+            hanim_names.ok_or(format!("no UOM of version {}", hanim::SOURCE))?,
+        ),
     ])
 }
 
