@@ -219,7 +219,9 @@ mod tests {
             ignore: vec!["index_".to_string()],
             ..Options::default()
         };
-        assert!(check(SCENE, &ignored).unwrap().files[0].diagnostics.is_empty());
+        assert!(check(SCENE, &ignored).unwrap().files[0]
+            .diagnostics
+            .is_empty());
         let wrong = Options {
             select: vec!["NO_SUCH_CODE".to_string()],
             ..Options::default()

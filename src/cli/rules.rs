@@ -2,10 +2,10 @@
 //! (each rule's summary wrapped on the lines below its code), one rule's documentation, or
 //! the rules as JSON for tools.
 
-use clap::{Args, ValueEnum};
 use crate::api::RuleInfo;
 use crate::config_file::select;
 use crate::validate::{Rule, RULES};
+use clap::{Args, ValueEnum};
 
 #[derive(Args, Debug)]
 pub struct RulesArgs {

@@ -10,7 +10,12 @@ use pyo3::exceptions::PyException;
 use pyo3::prelude::*;
 use x3dcheck::api;
 
-create_exception!(_native, CheckError, PyException, "Nothing was checked: why is the message.");
+create_exception!(
+    _native,
+    CheckError,
+    PyException,
+    "Nothing was checked: why is the message."
+);
 
 fn options(
     path: Option<PathBuf>,
