@@ -1,8 +1,8 @@
 //! The command line: arguments, finding the inputs (of one shard, `--shard`), checking them
 //! in parallel, writing the report, and the exit code — 0 nothing at or above the fail
 //! level, 1 something is, 2 usage, I/O or internal failure ("could not be checked" is never
-//! "invalid"). `merge` combines JSON reports ([`merge`]); `rules` lists them ([`rules`]);
-//! [`progress`] draws the bar; [`color`] decides on colour; [`settings`] shows what applies.
+//! "invalid"). [`main`] runs it. Inside: `merge` combines JSON reports, `rules` lists the
+//! rules, `progress` draws the bar, `color` decides on colour, `settings` shows what applies.
 
 mod color;
 mod discover;
