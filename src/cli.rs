@@ -200,6 +200,7 @@ where
     I: IntoIterator<Item = T>,
     T: Into<std::ffi::OsString> + Clone,
 {
+    // Before any thread starts: changing the environment later would race with readers.
     crate::render::prepare_environment();
     run(Cli::parse_from(args))
 }
