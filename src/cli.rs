@@ -1,8 +1,8 @@
 //! The command line: arguments, finding the inputs (of one shard, `--shard`), checking them
 //! in parallel, writing the report, and the exit code — 0 nothing at or above the fail
 //! level, 1 something is, 2 usage, I/O or internal failure ("could not be checked" is never
-//! "invalid"). `merge` combines JSON reports ([`merge`]); `rules` lists them ([`rules`]);
-//! [`progress`] draws the bar; [`color`] decides on colour; [`settings`] shows what applies.
+//! "invalid"). [`main`] runs it. Inside: `merge` combines JSON reports, `rules` lists the
+//! rules, `progress` draws the bar, `color` decides on colour, `settings` shows what applies.
 
 mod color;
 mod discover;
@@ -18,20 +18,19 @@ use std::borrow::Cow;
 use std::fs;
 use std::io::{self, IsTerminal, Write};
 use std::path::{Path, PathBuf};
-use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use rayon::prelude::*;
 
-use x3dcheck::check::STDIN_NAME;
-use x3dcheck::config::CheckConfig;
-use x3dcheck::config_file::{select_codes, Effective, Resolver, Settings};
-use x3dcheck::fix;
-use x3dcheck::model::MAX_INPUT_BYTES;
-use x3dcheck::report::{concise, github, human, json, junit, sarif, statistics};
-use x3dcheck::report::{FileReport, Summary};
-use x3dcheck::shard::Shard;
-use x3dcheck::validate::{Level, Severity};
+use crate::check::STDIN_NAME;
+use crate::config::CheckConfig;
+use crate::config_file::{select_codes, Effective, Resolver, Settings};
+use crate::fix;
+use crate::model::MAX_INPUT_BYTES;
+use crate::report::{concise, github, human, json, junit, sarif, statistics};
+use crate::report::{FileReport, Summary};
+use crate::shard::Shard;
+use crate::validate::{Level, Severity};
 
 use color::{ColorChoice, ColorEnv};
 
@@ -44,7 +43,7 @@ use color::{ColorChoice, ColorEnv};
     subcommand_negates_reqs = true,
     after_help = EXIT_CODES
 )]
-pub struct Cli {
+struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
     #[command(flatten)]
@@ -162,7 +161,7 @@ struct CheckArgs {
     #[arg(long, conflicts_with = "render")]
     diff: bool,
     #[command(flatten)]
-    render: x3dcheck::render::RenderArgs,
+    render: crate::render::RenderArgs,
 }
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
@@ -192,26 +191,41 @@ Exit codes:
   1  a finding at or above the fail level
   2  a usage or configuration error, an input that could not be read, or an internal failure";
 
-pub fn run(cli: Cli) -> ExitCode {
+/// The `x3dcheck` command run with `args` (the program name first, as
+/// [`std::env::args_os`] gives them): what the binary does, and what the Python package's
+/// `x3dcheck` command calls. Call it before starting threads: it sets up the environment the
+/// renderer's graphics driver reads. On `--help`, `--version` and usage errors it prints
+/// and exits the process, as the binary does. Returns the exit code.
+pub fn main<I, T>(args: I) -> u8
+where
+    I: IntoIterator<Item = T>,
+    T: Into<std::ffi::OsString> + Clone,
+{
+    // Before any thread starts: changing the environment later would race with readers.
+    crate::render::prepare_environment();
+    run(Cli::parse_from(args))
+}
+
+fn run(cli: Cli) -> u8 {
     read::guard_stdout();
     let result = match cli.command {
         Some(Command::Rules(args)) => rules::rules(&args)
             .and_then(|text| write_output(None, &text))
-            .map(|()| ExitCode::SUCCESS),
+            .map(|()| 0),
         Some(Command::Merge(args)) => merge::merge(&args),
-        Some(Command::Server) => x3dcheck::lsp::run().map(|()| ExitCode::SUCCESS),
+        Some(Command::Server) => crate::lsp::run().map(|()| 0),
         None => check(&cli.check),
     };
     match result {
         Ok(code) => code,
         Err(message) => {
             eprintln!("x3dcheck: {message}");
-            ExitCode::from(USAGE)
+            USAGE
         }
     }
 }
 
-fn check(args: &CheckArgs) -> Result<ExitCode, String> {
+fn check(args: &CheckArgs) -> Result<u8, String> {
     check_statistics_format(args.statistics, args.format)?;
     let mut resolver =
         Resolver::new(args.config.as_deref(), settings(args)?).map_err(|e| e.to_string())?;
@@ -237,14 +251,14 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
             .map(|i| format!("{}\n", input_name(i)))
             .collect();
         write_output(args.output.as_deref(), &list)?;
-        return Ok(ExitCode::from(if failed { USAGE } else { 0 }));
+        return Ok(if failed { USAGE } else { 0 });
     }
     for output in [&args.output, &args.render.render].into_iter().flatten() {
         refuse_input_as_output(&inputs, output)?;
     }
     // One cache of prototype libraries for the whole batch: a library many scenes name is
     // read once.
-    let libraries = x3dcheck::library::Libraries::default();
+    let libraries = crate::library::Libraries::default();
     // Configuration errors stop the run before anything is checked.
     let mut configs = inputs
         .iter()
@@ -275,7 +289,7 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
             Input::File { path, .. } => path.display().to_string(),
         };
         write_output(None, &settings::show(&name, effective))?;
-        return Ok(ExitCode::from(if failed { USAGE } else { 0 }));
+        return Ok(if failed { USAGE } else { 0 });
     }
     let text_format = (!args.statistics).then_some(args.format);
     if args.render.render.is_some() && inputs.len() != 1 {
@@ -364,11 +378,11 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
         if !args.quiet {
             eprintln!("{}", fixes.would_fix_line());
         }
-        return Ok(ExitCode::from(if failed {
+        return Ok(if failed {
             USAGE
         } else {
             u8::from(fixes.changed_files > 0)
-        }));
+        });
     }
     // stdin fixed: its text goes to stdout, so the report goes to stderr (unless -o).
     let report_to_stderr = fixes.stdin_text.is_some() && args.output.is_none();
@@ -388,11 +402,11 @@ fn check(args: &CheckArgs) -> Result<ExitCode, String> {
         unsafe_fixes: args.unsafe_fixes,
     };
     let fails = report.write(&reports, &fail_levels, text)?;
-    Ok(ExitCode::from(if failed {
+    Ok(if failed {
         USAGE
     } else {
         u8::from(fails && !args.exit_zero)
-    }))
+    })
 }
 
 /// `--fix` or `--diff`, and whether unsafe fixes apply.
@@ -539,8 +553,6 @@ fn fail_level(fail_on: FailOn) -> Severity {
 
 /// The settings the command line gives; they win over x3dcheck.toml.
 fn settings(args: &CheckArgs) -> Result<Settings, String> {
-    let codes =
-        |selector: &str, option: &str| select_codes(selector).map_err(|e| format!("{option}: {e}"));
     let mut settings = Settings {
         level: args.level,
         fail_on: args.fail_on.map(fail_level),
@@ -549,15 +561,9 @@ fn settings(args: &CheckArgs) -> Result<Settings, String> {
         ..Settings::default()
     };
     if !args.select.is_empty() {
-        let mut select = Vec::new();
-        for selector in &args.select {
-            select.extend(codes(selector, "--select")?);
-        }
-        settings.select = Some(select);
+        settings.select = Some(codes(&args.select, "--select")?);
     }
-    for selector in &args.ignore {
-        settings.ignore.extend(codes(selector, "--ignore")?);
-    }
+    settings.ignore = codes(&args.ignore, "--ignore")?;
     for item in &args.severity {
         let (selector, level) = item
             .split_once('=')
@@ -565,7 +571,7 @@ fn settings(args: &CheckArgs) -> Result<Settings, String> {
         let level = Severity::parse(level).ok_or_else(|| {
             format!("unknown severity `{level}` for {selector} (error, warning, info or hint)")
         })?;
-        for code in codes(selector, "--severity")? {
+        for code in codes(&[selector], "--severity")? {
             settings.severity.push((code, level));
         }
     }
@@ -580,7 +586,38 @@ fn settings(args: &CheckArgs) -> Result<Settings, String> {
     Ok(settings)
 }
 
+/// The codes `selectors` select, in order; an error names `option` and the selector that
+/// matches no code.
+pub(crate) fn codes<S: AsRef<str>>(selectors: &[S], option: &str) -> Result<Vec<String>, String> {
+    let mut codes = Vec::new();
+    for selector in selectors {
+        codes.extend(select_codes(selector.as_ref()).map_err(|e| format!("{option}: {e}"))?);
+    }
+    Ok(codes)
+}
+
+pub(crate) use discover::file_root;
 use discover::Input;
+
+/// The reports of the files Inlines loaded (through `libraries`) that `listed` does not
+/// hold, as a run of one unsharded batch adds them; Err for one not checked.
+pub(crate) fn check_inlined_files(
+    libraries: &crate::library::Libraries,
+    listed: &[PathBuf],
+    resolver: &mut Resolver,
+) -> Vec<Result<FileReport, String>> {
+    let batch = inlined::Batch {
+        libraries,
+        listed,
+        shard: None,
+        format: None,
+        color: false,
+    };
+    inlined::check_inlined(&batch, resolver)
+        .into_iter()
+        .map(|outcome| outcome.map(|inlined| inlined.report))
+        .collect()
+}
 
 fn input_name(input: &Input) -> String {
     match input {
@@ -628,7 +665,7 @@ fn check_input(
     stdin_name: &str,
     config: &CheckConfig,
     shown: Presentation,
-    render: &x3dcheck::render::RenderArgs,
+    render: &crate::render::RenderArgs,
     fixing: Option<Fixing>,
 ) -> Outcome {
     let name = match input {
@@ -642,7 +679,7 @@ fn check_input(
     let bytes = match contents {
         read::Contents::Bytes(bytes) => bytes,
         read::Contents::TooLarge => {
-            let report = x3dcheck::check::check_too_large(&name, config);
+            let report = crate::check::check_too_large(&name, config);
             let text = render_text(&report, &[], shown);
             return Ok(Checked {
                 report,
@@ -670,11 +707,11 @@ fn check_input(
         .map_err(|_| failure)?;
     }
     std::panic::catch_unwind(move || {
-        let x3dcheck::check::Checked {
+        let crate::check::Checked {
             mut report,
             document,
             text: source,
-        } = x3dcheck::check::check_document(&name, &bytes, &config);
+        } = crate::check::check_document(&name, &bytes, &config);
         let root = config.root.as_deref();
         // A file's source is freed before the scene is flattened, and read again only when
         // the renderer has notes to place; standard input cannot be read again.
@@ -684,7 +721,7 @@ fn check_input(
                 let checked = render_notes::Fingerprint::of(&source);
                 drop(source);
                 drop(bytes);
-                let preview = x3dcheck::render::prepare_unresolved(
+                let preview = crate::render::prepare_unresolved(
                     render,
                     Path::new(&name),
                     root,
@@ -707,7 +744,7 @@ fn check_input(
             }
             _ => {
                 // A file that cannot be drawn keeps its report: the findings say why.
-                let preview = x3dcheck::render::prepare(
+                let preview = crate::render::prepare(
                     render,
                     Path::new(&name),
                     root,

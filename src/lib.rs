@@ -2,8 +2,14 @@
 //! and reports like a compiler.
 //!
 //! bytes ─parse→ [`model::Document`] ─validate→ [`report::Diagnostic`]s ─report→ formats
+//!
+//! Programs (and the Python and Node.js packages in `bindings/`) call [`api`]: a scene in
+//! memory or a file, checked as the command line checks it, into the command line's JSON
+//! report as a typed value. [`cli::main`] is the command line itself.
 
+pub mod api;
 pub mod check;
+pub mod cli;
 pub mod config;
 pub mod config_file;
 pub mod diagnostic;

@@ -1,14 +1,9 @@
-//! The `x3dcheck` command; everything it does is in [`cli`].
-
-mod cli;
-
-use clap::Parser;
+//! The `x3dcheck` command; everything it does is in [`x3dcheck::cli`], which the Python
+//! package's `x3dcheck` command runs too.
 
 fn main() -> std::process::ExitCode {
-    // Before any thread starts: changing the environment later would race with readers.
-    x3dcheck::render::prepare_environment();
     return_freed_memory();
-    cli::run(cli::Cli::parse())
+    std::process::ExitCode::from(x3dcheck::cli::main(std::env::args_os()))
 }
 
 /// glibc raises its mmap threshold to the size of each large block freed (up to 32 MB), so

@@ -19,10 +19,10 @@ use std::path::{Path, PathBuf};
 
 use ignore::WalkBuilder;
 
-use x3dcheck::config_file::glob::Glob;
-use x3dcheck::config_file::Resolver;
-use x3dcheck::parse::decode::GZIP_MAGIC;
-use x3dcheck::shard::Shard;
+use crate::config_file::glob::Glob;
+use crate::config_file::Resolver;
+use crate::parse::decode::GZIP_MAGIC;
+use crate::shard::Shard;
 
 use super::read;
 
@@ -148,7 +148,7 @@ fn first_time(seen: &mut HashSet<super::FileId>, path: &Path) -> bool {
 /// The tree a file named on the command line may read references from: the current
 /// directory when the file lies in it (textures in a sibling `../textures` folder are
 /// common), else the file's own directory. A directory argument is its own root.
-pub(super) fn file_root(file: &Path) -> PathBuf {
+pub(crate) fn file_root(file: &Path) -> PathBuf {
     let directory = file
         .parent()
         .filter(|d| !d.as_os_str().is_empty())
@@ -165,11 +165,11 @@ pub(super) fn file_root(file: &Path) -> PathBuf {
 struct Excludes {
     cli: Vec<Glob>,
     current_dir: PathBuf,
-    config: Option<std::sync::Arc<x3dcheck::config_file::ConfigFile>>,
+    config: Option<std::sync::Arc<crate::config_file::ConfigFile>>,
 }
 
 impl Excludes {
-    fn new(cli: &[String], config: Option<&x3dcheck::config_file::ConfigFile>) -> Excludes {
+    fn new(cli: &[String], config: Option<&crate::config_file::ConfigFile>) -> Excludes {
         Excludes {
             cli: cli.iter().map(|p| Glob::new(p)).collect(),
             current_dir: std::env::current_dir().unwrap_or_default(),

@@ -19,10 +19,10 @@ use std::path::{Component, Path, PathBuf};
 
 use rayon::prelude::*;
 
-use x3dcheck::config_file::{Effective, Resolver};
-use x3dcheck::library::Libraries;
-use x3dcheck::report::FileReport;
-use x3dcheck::shard::Shard;
+use crate::config_file::{Effective, Resolver};
+use crate::library::Libraries;
+use crate::report::FileReport;
+use crate::shard::Shard;
 
 use super::{render_text, Format, Presentation};
 
@@ -91,7 +91,7 @@ pub fn check_inlined(batch: &Batch, resolver: &mut Resolver) -> Vec<Result<Inlin
                 let effective = effective?;
                 let failure = format!("internal error while checking {name}");
                 std::panic::catch_unwind(|| {
-                    let report = x3dcheck::check::check_library(&name, &library, &effective.check);
+                    let report = crate::check::check_library(&name, &library, &effective.check);
                     let text = render_text(
                         &report,
                         &library.text,

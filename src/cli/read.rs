@@ -1,10 +1,10 @@
-//! The command line's side of reading: the input files are read by [`x3dcheck::read`]; here
+//! The command line's side of reading: the input files are read by [`crate::read`]; here
 //! standard output is guarded so that a report is never written into nothing.
 
 use std::fs;
 use std::sync::OnceLock;
 
-pub use x3dcheck::read::{open, read_path, read_stdin, Contents};
+pub use crate::read::{open, read_path, read_stdin, Contents};
 
 static STDOUT_CLOSED: OnceLock<bool> = OnceLock::new();
 

@@ -5,9 +5,9 @@
 use std::hash::{DefaultHasher, Hasher};
 use std::path::Path;
 
-use x3dcheck::model::Document;
-use x3dcheck::render::{Preview, Unresolved};
-use x3dcheck::report::FileReport;
+use crate::model::Document;
+use crate::render::{Preview, Unresolved};
+use crate::report::FileReport;
 
 use super::{read_file, render_text, Presentation};
 
@@ -39,7 +39,7 @@ pub fn place(
         return Ok(unresolved.resolve(&[], doc, report));
     }
     let bytes = read_file(path)?;
-    let source = x3dcheck::parse::decode(&bytes).text;
+    let source = crate::parse::decode(&bytes).text;
     if Fingerprint::of(&source) != *checked {
         return Err(format!(
             "{} changed while it was being drawn; run again",

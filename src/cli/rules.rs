@@ -2,11 +2,10 @@
 //! (each rule's summary wrapped on the lines below its code), one rule's documentation, or
 //! the rules as JSON for tools.
 
+use crate::api::RuleInfo;
+use crate::config_file::select;
+use crate::validate::{Rule, RULES};
 use clap::{Args, ValueEnum};
-use serde_json::json;
-
-use x3dcheck::config_file::select;
-use x3dcheck::validate::{Rule, RULES};
 
 #[derive(Args, Debug)]
 pub struct RulesArgs {
@@ -44,20 +43,7 @@ pub fn rules(args: &RulesArgs) -> Result<String, String> {
 }
 
 fn json_list(rules: &[&Rule]) -> String {
-    let list: Vec<serde_json::Value> = rules
-        .iter()
-        .map(|r| {
-            json!({
-                "code": r.code,
-                "severity": r.severity.to_string(),
-                "level": r.level.as_str(),
-                "versions": r.versions,
-                "clause": r.clause,
-                "summary": r.summary(),
-                "doc": doc_text(r),
-            })
-        })
-        .collect();
+    let list: Vec<RuleInfo> = rules.iter().map(|rule| RuleInfo::of(rule)).collect();
     let mut text = serde_json::to_string_pretty(&list).expect("strings serialize");
     text.push('\n');
     text
@@ -128,16 +114,6 @@ fn explain(rule: &Rule) -> String {
         rule.level.as_str(),
         rule.versions,
         rule.clause,
-        doc_text(rule)
+        RuleInfo::of(rule).doc
     )
-}
-
-/// The documentation as Markdown, without the one-space indent of doc comments.
-fn doc_text(rule: &Rule) -> String {
-    let mut out = String::new();
-    for line in rule.doc.lines() {
-        out.push_str(line.strip_prefix(' ').unwrap_or(line));
-        out.push('\n');
-    }
-    out
 }

@@ -4,7 +4,7 @@
 
 use std::fmt::Write as _;
 
-use x3dcheck::config_file::Effective;
+use crate::config_file::Effective;
 
 /// The settings `effective` holds for the input named `name`.
 pub fn show(name: &str, effective: &Effective) -> String {

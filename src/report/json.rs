@@ -8,8 +8,6 @@
 //! `unsafe`, and `edits`: `line`, `column`, `endLine`, `endColumn`, `content`); a report of a `--shard K/N` run says which shard it
 //! is (`"shard": { "index": K, "count": N }`).
 
-use std::borrow::Cow;
-
 use serde::{Deserialize, Serialize};
 
 use super::{FileReport, Related, Resolved, ResolvedEdit, ResolvedFix, Stats, Summary};
@@ -21,91 +19,116 @@ use crate::validate::{find_rule, Severity};
 const TOOL: &str = "x3dcheck";
 const VERSION: &str = env!("CARGO_PKG_VERSION");
 
-// Written from borrowed data, read into owned data: hence `Cow`s.
-#[derive(Serialize, Deserialize)]
+/// The JSON report: what `x3dcheck --format json` prints, and what
+/// [`crate::api::check`] returns. Fields are those of DESIGN.md; serializing it with
+/// [`Report::to_json`] gives the command line's bytes.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-struct Report<'a> {
-    tool: Cow<'a, str>,
-    version: Cow<'a, str>,
+pub struct Report {
+    /// Always `x3dcheck`.
+    pub tool: String,
+    /// The version of x3dcheck that wrote it.
+    pub version: String,
+    /// The part of a split (`--shard K/N`) the run checked.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    shard: Option<Shard>,
-    files: Vec<File<'a>>,
-    summary: Summary,
+    pub shard: Option<Shard>,
+    /// The inputs, then the files their Inlines load (deep level), in that order.
+    pub files: Vec<File>,
+    pub summary: Summary,
 }
 
-#[derive(Serialize, Deserialize)]
+/// The report of one file.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase", deny_unknown_fields)]
-struct File<'a> {
-    path: Cow<'a, str>,
-    encoding: Option<Encoding>,
-    /// Said only when true, so that reports of uncompressed input keep their bytes.
+pub struct File {
+    /// The name the file was checked under.
+    pub path: String,
+    /// The encoding read (`xml`, `json`, `classicvrml`, `vrml97`); None when it is no scene.
+    pub encoding: Option<Encoding>,
+    /// Whether it was gzip-compressed (positions are in the decompressed text). Said only
+    /// when true, so that reports of uncompressed input keep their bytes.
     #[serde(default, skip_serializing_if = "std::ops::Not::not")]
-    compressed: bool,
-    x3d_version: Option<Cow<'a, str>>,
-    profile: Option<Cow<'a, str>>,
-    diagnostics: Vec<Diagnostic<'a>>,
-    truncated: bool,
+    pub compressed: bool,
+    pub x3d_version: Option<String>,
+    pub profile: Option<String>,
+    /// In the order of their places in the file.
+    pub diagnostics: Vec<Diagnostic>,
+    /// Whether `max-diagnostics` dropped some.
+    pub truncated: bool,
     /// Findings inline comments suppressed; said only when some were.
     #[serde(default, skip_serializing_if = "is_zero")]
-    suppressed: usize,
-    stats: Cow<'a, Stats>,
+    pub suppressed: usize,
+    pub stats: Stats,
 }
 
-#[derive(Serialize, Deserialize)]
+/// One finding.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase", deny_unknown_fields)]
-struct Diagnostic<'a> {
-    code: Cow<'a, str>,
-    severity: Severity,
-    message: Cow<'a, str>,
-    line: usize,
-    column: usize,
-    end_line: usize,
-    end_column: usize,
-    path: Cow<'a, str>,
-    clause: Cow<'a, str>,
+pub struct Diagnostic {
+    /// The rule's code (`x3dcheck rules CODE` explains it).
+    pub code: String,
+    pub severity: Severity,
+    pub message: String,
+    /// 1-based; columns count Unicode scalar values.
+    pub line: usize,
+    pub column: usize,
+    /// Where the finding's place ends (exclusive).
+    pub end_line: usize,
+    pub end_column: usize,
+    /// The structural path of the node or field (`/X3D/Scene/Shape[0]/Appearance`).
+    pub path: String,
+    /// The ISO/IEC 19775-1 clause the rule enforces (or the node type's subclause).
+    pub clause: String,
+    /// The index of the offending value in an MF field.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    index: Option<usize>,
-    #[serde(default, skip_serializing_if = "<[usize]>::is_empty")]
-    indices: Cow<'a, [usize]>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    value: Option<Cow<'a, str>>,
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    help: Option<Cow<'a, str>>,
+    pub index: Option<usize>,
+    /// For a folded finding, the first indices it stands for.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    related: Vec<RelatedPlace<'a>>,
-    #[serde(default = "one", skip_serializing_if = "is_one")]
-    count: usize,
+    pub indices: Vec<usize>,
+    /// The offending value, as written.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    fix: Option<FixOut<'a>>,
+    pub value: Option<String>,
+    /// How to resolve it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub help: Option<String>,
+    /// Other places that explain it ("first defined here").
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub related: Vec<RelatedPlace>,
+    /// How many findings a folded one stands for (said when above 1).
+    #[serde(default = "one", skip_serializing_if = "is_one")]
+    pub count: usize,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fix: Option<Fix>,
 }
 
 /// A finding's fix: what it does, whether `--fix` applies it (`safe`) or only
 /// `--unsafe-fixes` (`unsafe`), and its edits in the decoded text.
-#[derive(Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-struct FixOut<'a> {
-    title: Cow<'a, str>,
-    applicability: Applicability,
-    edits: Vec<EditOut<'a>>,
+pub struct Fix {
+    pub title: String,
+    pub applicability: Applicability,
+    pub edits: Vec<Edit>,
 }
 
 /// The text from (line, column) to (endLine, endColumn), exclusive, becomes `content`.
-#[derive(Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase", deny_unknown_fields)]
-struct EditOut<'a> {
-    line: usize,
-    column: usize,
-    end_line: usize,
-    end_column: usize,
-    content: Cow<'a, str>,
+pub struct Edit {
+    pub line: usize,
+    pub column: usize,
+    pub end_line: usize,
+    pub end_column: usize,
+    pub content: String,
 }
 
-#[derive(Serialize, Deserialize)]
+/// Another place that explains a finding.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-struct RelatedPlace<'a> {
-    line: usize,
-    column: usize,
-    message: Cow<'a, str>,
+pub struct RelatedPlace {
+    pub line: usize,
+    pub column: usize,
+    pub message: String,
 }
 
 fn one() -> usize {
@@ -120,44 +143,44 @@ fn is_zero(count: &usize) -> bool {
     *count == 0
 }
 
-impl<'a> From<&'a Resolved> for Diagnostic<'a> {
-    fn from(d: &'a Resolved) -> Diagnostic<'a> {
+impl From<&Resolved> for Diagnostic {
+    fn from(d: &Resolved) -> Diagnostic {
         Diagnostic {
             code: d.code.into(),
             severity: d.severity,
-            message: d.message.as_str().into(),
+            message: d.message.clone(),
             line: d.line,
             column: d.column,
             end_line: d.end_line,
             end_column: d.end_column,
-            path: d.path.as_str().into(),
+            path: d.path.clone(),
             clause: d.clause.into(),
             index: d.index,
-            indices: d.indices.as_slice().into(),
-            value: d.value.as_deref().map(Cow::from),
-            help: d.help.as_deref().map(Cow::from),
+            indices: d.indices.clone(),
+            value: d.value.clone(),
+            help: d.help.clone(),
             related: d
                 .related
                 .iter()
                 .map(|r| RelatedPlace {
                     line: r.line,
                     column: r.column,
-                    message: r.label.as_str().into(),
+                    message: r.label.clone(),
                 })
                 .collect(),
             count: d.count,
-            fix: d.fix.as_ref().map(|fix| FixOut {
-                title: fix.title.as_str().into(),
+            fix: d.fix.as_ref().map(|fix| Fix {
+                title: fix.title.clone(),
                 applicability: fix.applicability,
                 edits: fix
                     .edits
                     .iter()
-                    .map(|e| EditOut {
+                    .map(|e| Edit {
                         line: e.line,
                         column: e.column,
                         end_line: e.end_line,
                         end_column: e.end_column,
-                        content: e.replacement.as_str().into(),
+                        content: e.replacement.clone(),
                     })
                     .collect(),
             }),
@@ -165,33 +188,48 @@ impl<'a> From<&'a Resolved> for Diagnostic<'a> {
     }
 }
 
+impl Report {
+    /// The report of checked files. `shard`: the part of a split this run checked, if any.
+    pub fn of(reports: &[FileReport], shard: Option<Shard>) -> Report {
+        Report {
+            tool: TOOL.into(),
+            version: VERSION.into(),
+            shard,
+            files: reports.iter().map(File::from).collect(),
+            summary: Summary::of(reports),
+        }
+    }
+
+    /// The report as `x3dcheck --format json` prints it: pretty-printed, with a trailing
+    /// newline.
+    pub fn to_json(&self) -> String {
+        // Plain structs with string keys: serializing cannot fail.
+        let mut text = serde_json::to_string_pretty(self).expect("the report serializes");
+        text.push('\n');
+        text
+    }
+}
+
+impl From<&FileReport> for File {
+    fn from(r: &FileReport) -> File {
+        File {
+            path: r.path.clone(),
+            encoding: r.encoding,
+            compressed: r.compressed,
+            x3d_version: r.x3d_version.clone(),
+            profile: r.profile.clone(),
+            diagnostics: r.diagnostics.iter().map(Diagnostic::from).collect(),
+            truncated: r.truncated,
+            suppressed: r.suppressed,
+            stats: r.stats.clone(),
+        }
+    }
+}
+
 /// The whole report, with a trailing newline. `shard`: the part of a split this run
 /// checked, if any.
 pub fn render(reports: &[FileReport], shard: Option<Shard>) -> String {
-    let report = Report {
-        tool: TOOL.into(),
-        version: VERSION.into(),
-        shard,
-        files: reports
-            .iter()
-            .map(|r| File {
-                path: r.path.as_str().into(),
-                encoding: r.encoding,
-                compressed: r.compressed,
-                x3d_version: r.x3d_version.as_deref().map(Cow::from),
-                profile: r.profile.as_deref().map(Cow::from),
-                diagnostics: r.diagnostics.iter().map(Diagnostic::from).collect(),
-                truncated: r.truncated,
-                suppressed: r.suppressed,
-                stats: Cow::Borrowed(&r.stats),
-            })
-            .collect(),
-        summary: Summary::of(reports),
-    };
-    // Plain structs with string keys: serializing cannot fail.
-    let mut text = serde_json::to_string_pretty(&report).expect("the report serializes");
-    text.push('\n');
-    text
+    Report::of(reports, shard).to_json()
 }
 
 /// A report read back.
@@ -275,32 +313,32 @@ fn file_report(file: File) -> Result<FileReport, ReadError> {
             Ok(Resolved {
                 code: rule.code,
                 severity: d.severity,
-                message: d.message.into_owned(),
+                message: d.message,
                 line: d.line,
                 column: d.column,
                 end_line: d.end_line,
                 end_column: d.end_column,
-                path: d.path.into_owned(),
+                path: d.path,
                 // A finding on a node cites that node type's subclause.
                 clause: crate::schema::clauses::known_subclause(&d.clause).unwrap_or(rule.clause),
                 index: d.index,
-                indices: d.indices.into_owned(),
-                value: d.value.map(Cow::into_owned),
-                help: d.help.map(Cow::into_owned),
+                indices: d.indices,
+                value: d.value,
+                help: d.help,
                 related: d
                     .related
                     .into_iter()
                     .map(|r| Related {
                         line: r.line,
                         column: r.column,
-                        label: r.message.into_owned(),
+                        label: r.message,
                         span: Span::default(),
                     })
                     .collect(),
                 count: d.count,
                 span: Span::default(),
                 fix: d.fix.map(|fix| ResolvedFix {
-                    title: fix.title.into_owned(),
+                    title: fix.title,
                     applicability: fix.applicability,
                     edits: fix
                         .edits
@@ -310,7 +348,7 @@ fn file_report(file: File) -> Result<FileReport, ReadError> {
                             column: e.column,
                             end_line: e.end_line,
                             end_column: e.end_column,
-                            replacement: e.content.into_owned(),
+                            replacement: e.content,
                             span: Span::default(),
                         })
                         .collect(),
@@ -319,15 +357,15 @@ fn file_report(file: File) -> Result<FileReport, ReadError> {
         })
         .collect::<Result<Vec<_>, ReadError>>()?;
     Ok(FileReport {
-        path: file.path.into_owned(),
+        path: file.path,
         encoding: file.encoding,
         compressed: file.compressed,
-        x3d_version: file.x3d_version.map(Cow::into_owned),
-        profile: file.profile.map(Cow::into_owned),
+        x3d_version: file.x3d_version,
+        profile: file.profile,
         diagnostics,
         truncated: file.truncated,
         suppressed: file.suppressed,
-        stats: file.stats.into_owned(),
+        stats: file.stats,
     })
 }
 
