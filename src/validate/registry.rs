@@ -5,7 +5,7 @@
 use std::sync::LazyLock;
 
 use super::{
-    document, events, interpolation, lighting, navigation, networking, nurbs, prototypes,
+    document, events, geospatial, interpolation, lighting, navigation, networking, nurbs, prototypes,
     rendering, scripting, sensors, shaders, shape, texturing, Check, Rule,
 };
 
@@ -26,6 +26,7 @@ pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {
         sensors::RULES,
         navigation::RULES,
         nurbs::RULES,
+        geospatial::RULES,
     ]
     .concat()
 });
