@@ -5,8 +5,8 @@
 use std::sync::LazyLock;
 
 use super::{
-    document, events, geospatial, interpolation, lighting, navigation, networking, nurbs, prototypes,
-    rendering, scripting, sensors, shaders, shape, texturing, Check, Rule,
+    document, events, geospatial, interpolation, lighting, navigation, networking, nurbs,
+    prototypes, rendering, scripting, sensors, shaders, shape, texturing, Check, Rule,
 };
 
 /// Every rule with its check function (None for those reported while reading).

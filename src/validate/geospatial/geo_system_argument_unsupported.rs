@@ -69,8 +69,11 @@ fn check(ctx: &mut Ctx) {
     for (id, span, value, text, frame, argument) in found {
         let node = doc.node(id);
         let why = match argument {
+            Argument::Unknown if text == "N" && frame == Frame::Utm => {
+                "no such argument (the northern hemisphere needs none: it is UTM's default without \"S\")".to_string()
+            }
             Argument::Unknown => match suggestion(&text) {
-                Some(known) => format!("no such argument (matching is case sensitive: `{known}`?)"),
+                Some(known) => format!("no such argument (did you mean \"{known}\"?)"),
                 None => "no such argument".to_string(),
             },
             _ if frame == Frame::Geocentric => {

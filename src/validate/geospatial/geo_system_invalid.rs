@@ -93,8 +93,10 @@ fn problems(strings: &[String]) -> Vec<String> {
             problems.push(format!("it names {} frames: {}", several.len(), codes.join(" and ")));
         }
     }
-    let arguments: Vec<(&str, Argument)> =
-        strings.iter().map(|s| (s.as_str(), Argument::of(s))).collect();
+    let arguments: Vec<(&str, Argument)> = strings
+        .iter()
+        .map(|s| (s.as_str(), Argument::of(s)))
+        .collect();
     if frames == [Frame::Utm] {
         let zones: Vec<_> = arguments
             .iter()
@@ -127,7 +129,11 @@ fn problems(strings: &[String]) -> Vec<String> {
         ellipsoids.dedup();
         if ellipsoids.len() > 1 {
             let codes: Vec<_> = ellipsoids.iter().map(|e| format!("\"{e}\"")).collect();
-            problems.push(format!("it names {} ellipsoids: {}", codes.len(), codes.join(" and ")));
+            problems.push(format!(
+                "it names {} ellipsoids: {}",
+                codes.len(),
+                codes.join(" and ")
+            ));
         }
     }
     problems

@@ -46,8 +46,8 @@ impl Frame {
 /// The earth ellipsoid codes of Table 25.3. The XSD's list leaves out `AA` (Airy 1830),
 /// which the table has.
 pub(crate) const ELLIPSOIDS: [&str; 23] = [
-    "AA", "AM", "AN", "BN", "BR", "CC", "CD", "EA", "EB", "EC", "ED", "EE", "EF", "FA", "HE",
-    "HO", "ID", "IN", "KA", "RF", "SA", "WD", "WE",
+    "AA", "AM", "AN", "BN", "BR", "CC", "CD", "EA", "EB", "EC", "ED", "EE", "EF", "FA", "HE", "HO",
+    "ID", "IN", "KA", "RF", "SA", "WD", "WE",
 ];
 
 /// What one argument of a `geoSystem` value is.

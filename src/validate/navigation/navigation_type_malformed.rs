@@ -21,7 +21,10 @@ crate::declare_rule! {
     /// Browsers compare these strings as written. A string that is no value they know is
     /// skipped, so `type='"Examine"'` leaves the user without the examine mode the
     /// author chose (X_ITE then falls back to its default), and `type='"EXAMINE ANY"'` is
-    /// a single string, not the two values it looks like, so neither applies.
+    /// a single string, not the two values it looks like, so neither applies. (A reader
+    /// that turns a JSON string back into XML attribute text may split
+    /// `"@type":"\"EXAMINE\" \"ANY\""` into two values; the JSON encoding writes an
+    /// MFString as an array, so the file still says one string.)
     ///
     /// ## Example
     /// ```xml
@@ -99,7 +102,7 @@ fn check(ctx: &mut Ctx) {
             Diagnostic::new(
                 &NAVIGATION_TYPE_MALFORMED,
                 span,
-                format!("NavigationInfo.{field} \"{text}\" {what}: browsers compare these strings as written and skip it"),
+                format!("NavigationInfo.{field} \"{text}\" {what}: a browser that compares the strings as written skips it"),
             )
             .node(id)
             .help(format!("write {fix}, each value its own quoted string in upper case")),
