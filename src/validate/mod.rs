@@ -5,6 +5,7 @@
 pub mod document;
 mod edits;
 pub mod events;
+pub mod geospatial;
 pub mod hanim;
 mod instances;
 pub mod interpolation;

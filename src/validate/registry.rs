@@ -5,8 +5,8 @@
 use std::sync::LazyLock;
 
 use super::{
-    document, events, hanim, interpolation, lighting, navigation, networking, nurbs, prototypes,
-    rendering, scripting, sensors, shaders, shape, texturing, Check, Rule,
+    document, events, geospatial, hanim, interpolation, lighting, navigation, networking, nurbs,
+    prototypes, rendering, scripting, sensors, shaders, shape, texturing, Check, Rule,
 };
 
 /// Every rule with its check function (None for those reported while reading).
@@ -27,6 +27,7 @@ pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {
         navigation::RULES,
         nurbs::RULES,
         hanim::RULES,
+        geospatial::RULES,
     ]
     .concat()
 });

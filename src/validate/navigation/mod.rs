@@ -2,6 +2,7 @@
 //! binding stacks of NavigationInfo, Background and Fog (7.2.2).
 
 pub mod bindable_never_bound;
+pub mod navigation_type_malformed;
 pub mod viewpoint_orientation_axis_zero;
 
 use super::Check;
@@ -10,4 +11,5 @@ use super::Check;
 pub static RULES: &[&Check] = &[
     &viewpoint_orientation_axis_zero::CHECK,
     &bindable_never_bound::CHECK,
+    &navigation_type_malformed::CHECK,
 ];
