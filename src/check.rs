@@ -31,7 +31,7 @@ pub struct Checked<'a> {
     /// numeric MF values are [`Summary`](crate::model::Summary)s unless `config.render` is
     /// set ([`CheckConfig::keep_values`]).
     pub document: Option<Document>,
-    /// The decoded text (decompressed, UTF-8: see [`parse::decode`]) that the report's
+    /// The decoded text (decompressed, UTF-8: see [`parse::decode()`]) that the report's
     /// positions and the document's spans are offsets into; what to show as the source.
     pub text: Cow<'a, [u8]>,
 }

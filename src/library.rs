@@ -6,7 +6,7 @@
 //! handle into each file's [`CheckConfig`](crate::config::CheckConfig)); files are checked in
 //! parallel, and a file two of them need at once is read by one while the other waits
 //! for it. A file is read like an input (any encoding, gzip, within
-//! [`MAX_INPUT_BYTES`](crate::limits::MAX_INPUT_BYTES)) and parsed here, not checked: the
+//! [`MAX_INPUT_BYTES`]) and parsed here, not checked: the
 //! scenes that load it read its prototypes, exports and Inlines. An inlined file's own
 //! findings are those of checking it as a scene of its own, with its own version and
 //! profile: the command line checks every inlined file the batch does not list from the

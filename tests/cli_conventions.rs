@@ -374,7 +374,7 @@ fn the_rule_table_fits_100_columns_with_whole_summaries() {
     // FIELD_OUT_OF_RANGE's summary, wrapped but whole.
     let joined = text.split_whitespace().collect::<Vec<_>>().join(" ");
     assert!(
-        joined.contains("(e.g. light `intensity` is [0,1] in 3.x and [0,∞) in 4.x)."),
+        joined.contains("(e.g. light `intensity` is `[0,1]` in 3.x and `[0,∞)` in 4.x)."),
         "{text}"
     );
     // A prefix lists its family only.

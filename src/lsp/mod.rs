@@ -1,12 +1,12 @@
 //! `x3dcheck server`: a Language Server Protocol server over stdio, on rust-analyzer's
 //! `lsp-server` scaffold. The main loop keeps the open documents' texts and answers
-//! requests from the newest check of each; checking runs on its own thread ([`worker`]),
+//! requests from the newest check of each; checking runs on its own thread (`worker`),
 //! with the command line's entry point ([`crate::check::check_document`]) and the
 //! x3dcheck.toml that applies to the file.
 //!
-//! Features: diagnostics (on open and change), hover ([`hover`]), completion
-//! ([`complete`]), go to definition and document symbols ([`navigate`]), and code actions
-//! from the findings' fixes ([`convert::code_actions`]).
+//! Features: diagnostics (on open and change), hover (`hover`), completion
+//! (`complete`), go to definition and document symbols (`navigate`), and code actions
+//! from the findings' fixes (`convert::code_actions`).
 
 mod complete;
 mod context;

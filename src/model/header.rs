@@ -70,7 +70,7 @@ pub fn statement_name(statement: &str) -> Option<&'static str> {
 /// attributes costs no more than this).
 pub const MAX_RECORDS: usize = MAX_DIAGNOSTICS;
 
-/// Pushes `item` unless `list` holds [`MAX_RECORDS`] already.
+/// Pushes `item` unless `list` holds `MAX_RECORDS` already.
 pub fn record<T>(list: &mut Vec<T>, item: T) {
     if list.len() < MAX_RECORDS {
         list.push(item);

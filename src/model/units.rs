@@ -9,10 +9,10 @@
 //!   converting all of them is the uniform scale [`Units::length`] applied at the root of
 //!   the file's scene (a scale commutes with the transforms, which have no length of their
 //!   own but their translations and centres, converted along with everything else); only
-//!   the lengths that are no coordinates of the scene ([`LENGTH_VALUES`]) are converted as
+//!   the lengths that are no coordinates of the scene (`LENGTH_VALUES`) are converted as
 //!   values;
 //! - angles are converted as values ([`in_base_units`]): the angle of every SFRotation and
-//!   MFRotation value, and the angle fields of [`ANGLE_FIELDS`].
+//!   MFRotation value, and the angle fields of `ANGLE_FIELDS`.
 
 use super::{Document, Value};
 use crate::schema::FieldType;
@@ -81,7 +81,7 @@ impl Document {
     }
 }
 
-/// The document with its angles and [`LENGTH_VALUES`] in base units; None when its units
+/// The document with its angles and `LENGTH_VALUES` in base units; None when its units
 /// are the base units (nothing to convert). Values the document leaves at their defaults
 /// are already in base units.
 pub fn in_base_units(doc: &Document) -> Option<Document> {

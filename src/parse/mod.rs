@@ -1,4 +1,4 @@
-//! Readers: decode the input ([`decode`]: gzip, character encodings), detect the encoding
+//! Readers: decode the input ([`decode`](mod@decode): gzip, character encodings), detect the encoding
 //! from the content (not the file name) and read XML, JSON, ClassicVRML or VRML97 into the
 //! one scene model. The readers read the decoded UTF-8 text.
 

@@ -1,6 +1,6 @@
 //! The XML encoding (ISO/IEC 19776-1) read with quick-xml straight from the input bytes
 //! into the scene model. Element and attribute positions are byte offsets into the input;
-//! field values are parsed from the attribute text by [`xml_value`](super::xml_value).
+//! field values are parsed from the attribute text by [`xml_value`].
 
 use std::borrow::Cow;
 

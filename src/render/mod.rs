@@ -1,5 +1,5 @@
 //! Preview rendering (`--render OUT.png`): [`flatten`] turns the scene model into a
-//! [`draw_list::DrawList`] (its guarantees are written there), [`gpu`] draws it offscreen
+//! [`draw_list::DrawList`] (its guarantees are written there), `gpu` draws it offscreen
 //! with wgpu, on any adapter including software ones (lavapipe, llvmpipe). What cannot be
 //! drawn is reported as VALIDATION_INCOMPLETE info diagnostics beginning "renderer:" (an
 //! image past the size limit of [`crate::limits`] as LIMIT_EXCEEDED).

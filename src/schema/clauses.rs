@@ -43,7 +43,7 @@ static SUBCLAUSES: LazyLock<HashMap<Version, HashMap<&'static str, String>>> =
     });
 
 /// The subclause that defines `node` in `version`; None for a node type of a component
-/// outside [`CHAPTERS`] or not in that version.
+/// outside `CHAPTERS` or not in that version.
 pub fn node_subclause(version: Version, node: &str) -> Option<&'static str> {
     SUBCLAUSES.get(&version)?.get(node).map(String::as_str)
 }
@@ -58,7 +58,7 @@ pub fn known_subclause(clause: &str) -> Option<&'static str> {
         .map(String::as_str)
 }
 
-/// Whether `clause` is a node subclause of a component of [`CHAPTERS`] (or that
+/// Whether `clause` is a node subclause of a component of `CHAPTERS` (or that
 /// component's whole node reference, "11.4"): a rule citing one states what a node
 /// type's definition requires, so its finding on another node type cites that type's.
 pub fn is_node_subclause(clause: &str) -> bool {

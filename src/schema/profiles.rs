@@ -3,7 +3,7 @@
 //! The UOM does not give these in structured form, so they are written out here.
 //!
 //! Sources and checks (see the tests): the tables are those of the published profile
-//! annexes, 3.2/3.3 and 4.0 (the 3.0 FDIS differs, see [`INTERACTIVE`]); every level named
+//! annexes, 3.2/3.3 and 4.0 (the 3.0 FDIS differs, see `INTERACTIVE`); every level named
 //! exists in the generated component tables; and every node the UOM's `profileNameChoices`
 //! text lists for a profile is allowed by the table, except for the few listed in the test
 //! `uom_profile_node_lists_agree`, where the annex and the UOM's list disagree and the annex

@@ -73,7 +73,7 @@ pub enum CameraChoice<'a> {
     /// The first Viewpoint, else a framing of the scene's bounds.
     Auto,
     /// The first Viewpoint, else the X3D default Viewpoint (position 0 0 10, looking down
-    /// −Z, fieldOfView π/4): the view a browser binds (see [`camera::default_viewpoint`]).
+    /// −Z, fieldOfView π/4): the view a browser binds (see `camera::default_viewpoint`).
     Browser,
     /// The Viewpoint DEF'd so.
     Named(&'a str),
@@ -100,7 +100,7 @@ pub struct Options<'a> {
     /// Triangles, lines and points drawn at most (see [`primitive_budget`]).
     pub primitive_budget: usize,
     /// The image's width and height in pixels: the shapes drawn may cover it
-    /// [`RENDER_FILL_IMAGES`] times over (the fill budget, see [`fill`]).
+    /// [`RENDER_FILL_IMAGES`] times over (the fill budget, see `fill`).
     pub image: (u32, u32),
 }
 

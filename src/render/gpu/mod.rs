@@ -137,7 +137,7 @@ async fn render_on(
     drawn
 }
 
-/// A device on any adapter (see [`find_adapter`]); public for tests that run the WGSL.
+/// A device on any adapter (see `find_adapter`); public for tests that run the WGSL.
 pub async fn open_device() -> Result<(wgpu::Device, wgpu::Queue), GpuError> {
     let adapter = find_adapter().await.ok_or(GpuError::NoAdapter)?;
     adapter

@@ -9,7 +9,7 @@ use crate::validate::Ctx;
 crate::declare_rule! {
     /// ## What it does
     /// Reports a value outside the range printed in the node's interface table for the
-    /// document's version (e.g. light `intensity` is [0,1] in 3.x and [0,∞) in 4.x).
+    /// document's version (e.g. light `intensity` is `[0,1]` in 3.x and `[0,∞)` in 4.x).
     /// Every element of an MF value and every component of a vector is checked; one
     /// diagnostic per field names the first offending element, its value, the range and
     /// how many elements are out of range in all.
@@ -19,7 +19,7 @@ crate::declare_rule! {
     /// (0,π/2] bound and `1.571` does not); SFDouble and SFTime values in f64; integers
     /// exactly. NaN is never in range; -0 equals 0. Text beyond the precision's largest
     /// finite value rounds to an infinity: FIELD_VALUE_NONFINITE, and outside the range
-    /// too when the range has a finite bound on that side (`1e39` is outside [0,1], not
+    /// too when the range has a finite bound on that side (`1e39` is outside `[0,1]`, not
     /// outside [0,∞)). Text below half the smallest subnormal rounds to a zero (`1e-46`
     /// is outside (0,∞) in an SFFloat, inside it in an SFDouble). Geometry index fields
     /// (`coordIndex`, `index`, …) are INDEX_NEGATIVE's: it knows the -1 separator.

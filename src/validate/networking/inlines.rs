@@ -3,7 +3,7 @@
 //! The url's entries are tried in order, as a browser tries them (19775-1 9.2.1, 9.4.2):
 //! the first that names a readable local file of the tree being checked is the one loaded,
 //! whatever it holds. Local paths resolve as texture and ExternProtoDeclare urls do
-//! ([`Resolver`]): relative to the document's directory, never outside the tree, and
+//! (`Resolver`): relative to the document's directory, never outside the tree, and
 //! network URLs are never fetched. The file is read once per batch
 //! ([`crate::library::Libraries`]), and the batch checks it as a scene of its own.
 //!

@@ -6,7 +6,7 @@
 //! is the top-level ProtoDeclare the `#Name` fragment names, else the file's first one
 //! (prototypes nested in a body are local to it). A url that is only `#Name` names a
 //! prototype of this document. Local paths resolve as texture urls do
-//! ([`Resolver`]): relative to the document's directory, never outside the tree being
+//! (`Resolver`): relative to the document's directory, never outside the tree being
 //! checked (the checking root, else the document's directory), and network URLs are never
 //! fetched. Library files are read once per batch ([`crate::library::Libraries`]).
 //!

@@ -13,7 +13,7 @@ crate::declare_rule! {
     /// sum is the number of coordinates the node needs.
     ///
     /// ## Why it matters
-    /// "Coordinates are assigned to each strip by taking stripCount[n] vertices from the
+    /// "Coordinates are assigned to each strip by taking `stripCount[n]` vertices from the
     /// coordinate field": the last polylines, strips or fans would take coordinates that
     /// do not exist, and browsers drop them or read garbage.
     ///

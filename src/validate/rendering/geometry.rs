@@ -399,7 +399,7 @@ pub fn counted(doc: &Document) -> impl Iterator<Item = (NodeId, Counted<'_>)> {
 }
 
 /// Reports every Normal vector that `judge` (given its f64 length) finds fault with, as
-/// "Normal.vector[k] = x y z <what judge says>" with the vector as the document writes it,
+/// `Normal.vector[k] = x y z <what judge says>` with the vector as the document writes it,
 /// folded per Normal node. Non-finite vectors are skipped: FIELD_VALUE_NONFINITE reports
 /// them.
 pub fn each_normal(ctx: &mut Ctx, rule: &'static Rule, judge: impl Fn(f64) -> Option<String>) {

@@ -1,5 +1,5 @@
 //! Scripts, RULES.md §8: the ECMAScript code of each Script node, found where a browser
-//! finds it, parsed ([`ecmascript`]) and checked for syntax errors and for the functions
+//! finds it, parsed (`ecmascript`) and checked for syntax errors and for the functions
 //! its input fields need.
 //!
 //! Where the code is, in the order a browser tries it (19775-1 9.2.1, 29.4.1: the url

@@ -1,7 +1,7 @@
 //! Programmable shaders (clause 31), RULES.md §8: the GLSL of ComposedShader and
-//! ProgramShader compiled by glslang ([`glsl`]), from CDATA, `data:` URLs, source text in
-//! url entries and, at the deep level, local files ([`source`]); their fields compared
-//! with the uniforms the source declares ([`uniforms`], Annex I). Nothing runs for a
+//! ProgramShader compiled by glslang (`glsl`), from CDATA, `data:` URLs, source text in
+//! url entries and, at the deep level, local files (`source`); their fields compared
+//! with the uniforms the source declares (`uniforms`, Annex I). Nothing runs for a
 //! document without shader nodes, and glslang is initialised on the first shader.
 
 use std::rc::Rc;

@@ -1,7 +1,7 @@
 //! Shape component (clause 12), RULES.md §2. Rules that depend on how an Appearance meets
 //! a geometry (texture mappings, backMaterial with `solid`, unlit normals) judge each
 //! Appearance × geometry pair the scene forms, since both are shared by USE
-//! ([`analysis::shape_pairs`]); the 12.2.4 resolution itself is
+//! (`analysis::shape_pairs`); the 12.2.4 resolution itself is
 //! [`crate::model::texture_mapping`], shared with the renderer.
 
 use super::Check;
