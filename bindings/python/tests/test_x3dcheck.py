@@ -91,26 +91,32 @@ def test_rules_are_listed():
 
 
 def test_the_gil_is_released_while_checking():
-    # About 1.5 MB of coordinates: long enough that a thread holding the GIL would starve
-    # the loop below for many switch intervals.
-    points = " ".join(f"{i} {i} {i}" for i in range(100_000))
-    scene = SCENE.replace("0 0 0 1 0 0 0 1 0", points)
-    ticks = 0
-    done = threading.Event()
+    # A thread that held the GIL through the check would starve the loop below: it could
+    # only count between checks. The scene doubles until one check lasts long enough to
+    # tell, whatever the machine's speed (from about 1.5 MB of coordinates).
+    count = 100_000
+    while True:
+        points = " ".join(f"{i} {i} {i}" for i in range(count))
+        scene = SCENE.replace("0 0 0 1 0 0 0 1 0", points)
+        ticks = 0
+        done = threading.Event()
 
-    def run():
-        x3dcheck.check(scene, level="deep")
-        done.set()
+        def run():
+            x3dcheck.check(scene, level="deep")
+            done.set()
 
-    thread = threading.Thread(target=run)
-    start = time.perf_counter()
-    thread.start()
-    while not done.is_set():
-        ticks += 1
-        time.sleep(0)
-    thread.join()
-    elapsed = time.perf_counter() - start
-    assert elapsed > 0.02, "the check was too quick to tell"
+        thread = threading.Thread(target=run)
+        start = time.perf_counter()
+        thread.start()
+        while not done.is_set():
+            ticks += 1
+            time.sleep(0)
+        thread.join()
+        elapsed = time.perf_counter() - start
+        if elapsed > 0.05 or count >= 3_200_000:
+            break
+        count *= 2
+    assert elapsed > 0.05, "the check was too quick to tell"
     assert ticks > 100
 
 
