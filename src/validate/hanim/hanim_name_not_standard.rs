@@ -2,7 +2,7 @@
 //! HAnim 2.0 names.
 
 use super::names::{JOINT_ALIASES, JOINT_NAMES, SEGMENT_ALIASES, SEGMENT_NAMES};
-use super::{humanoids, written_name, Humanoid};
+use super::{humanoids, name_suffix, written_name, Humanoid};
 use crate::model::{Document, NodeId};
 use crate::report::Diagnostic;
 use crate::schema::Version;
@@ -133,7 +133,7 @@ fn check_kind(
         )
         .collect();
     let more = if odd.len() > QUOTED { ", …" } else { "" };
-    let humanoid_name = written_name(doc, humanoid.id).map_or(String::new(), |n| format!(" `{n}`"));
+    let humanoid_name = name_suffix(doc, humanoid.id);
     let message = format!(
         "HAnimHumanoid{humanoid_name} (HAnim 2.0) has {} {type_name} {} not among the HAnim 2.0 {kind} names: {}{more}",
         odd.len(),

@@ -3,7 +3,7 @@
 
 use std::collections::HashSet;
 
-use super::{humanoids, written_name};
+use super::{humanoids, name_suffix};
 use crate::model::{NodeId, NodeKind, Span};
 use crate::report::Diagnostic;
 use crate::validate::interpolation::{routed_fields, set_elsewhere};
@@ -84,11 +84,11 @@ fn check(ctx: &mut Ctx) {
                 continue;
             };
             let mut spans = ScalarSpans::new(ctx.source, entry);
+            let name = name_suffix(doc, joint);
             for (at, &index) in indices.iter().enumerate() {
                 if index < 0 || (index as usize) < skin.points {
                     continue;
                 }
-                let name = written_name(doc, joint).map_or(String::new(), |n| format!(" `{n}`"));
                 ctx.report_repeated(
                     &HANIM_SKIN_COORD_INDEX_OUT_OF_RANGE,
                     joint,

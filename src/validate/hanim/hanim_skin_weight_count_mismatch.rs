@@ -80,7 +80,7 @@ fn check(ctx: &mut Ctx) {
         };
         let message = format!(
             "HAnimJoint{} has {} skinCoordIndex {} and {} skinCoordWeight {}: {effect}",
-            super::written_name(doc, id).map_or(String::new(), |n| format!(" `{n}`")),
+            super::name_suffix(doc, id),
             indices,
             if indices == 1 { "value" } else { "values" },
             weights,

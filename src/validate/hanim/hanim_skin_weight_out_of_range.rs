@@ -1,6 +1,6 @@
 //! HANIM_SKIN_WEIGHT_OUT_OF_RANGE: a skinCoordWeight outside [0, 1].
 
-use super::written_name;
+use super::name_suffix;
 use crate::report::Diagnostic;
 use crate::validate::interpolation::{routed_fields, set_elsewhere};
 use crate::validate::rendering::geometry::ScalarSpans;
@@ -57,7 +57,7 @@ fn check(ctx: &mut Ctx) {
         let Some(weights) = entry.value.as_floats() else {
             continue;
         };
-        let name = written_name(doc, id).map_or(String::new(), |n| format!(" `{n}`"));
+        let name = name_suffix(doc, id);
         let mut spans = ScalarSpans::new(ctx.source, entry);
         for (at, &weight) in weights.iter().enumerate() {
             if (0.0..=1.0).contains(&weight) {

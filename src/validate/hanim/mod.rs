@@ -115,6 +115,12 @@ pub(crate) fn written_name(doc: &Document, id: NodeId) -> Option<&str> {
     (!name.is_empty()).then_some(name.as_str())
 }
 
+/// The node's written name as a message puts it after the node type (" `l_elbow`"), or
+/// nothing when it has none.
+pub(crate) fn name_suffix(doc: &Document, id: NodeId) -> String {
+    written_name(doc, id).map_or(String::new(), |n| format!(" `{n}`"))
+}
+
 /// How a node is named in a message: `HAnimJoint "l_elbow"` (with its DEF when it has no
 /// name).
 pub(crate) fn describe(doc: &Document, id: NodeId) -> String {
