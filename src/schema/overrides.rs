@@ -494,7 +494,7 @@ pub static FIELD_OVERRIDES: &[FieldOverride] = &[
         node: "HAnimJoint",
         field: "children",
         change: Change::Acceptable(&["HAnimJoint", "HAnimSegment", "HAnimSite"]),
-        clause: "26.3.2 HAnimJoint (HAnim v2, ISO/IEC 19774-1:2019)",
+        clause: "26.3.3 HAnimJoint (HAnim 2.0, ISO/IEC 19774-1:2019)",
         why: "the 4.1 XML Schema documents HAnimJoint's content model as [HAnimJoint,HAnimSegment,HAnimSite] children although its element list, like the UOM, omits HAnimSite",
     },
 ];
