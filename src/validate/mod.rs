@@ -14,13 +14,16 @@ pub mod navigation;
 pub mod networking;
 pub mod numbers;
 pub mod nurbs;
+pub mod particles;
 pub mod prototypes;
 mod registry;
 pub mod rendering;
+pub mod rigid_body;
 pub mod scripting;
 pub mod sensors;
 pub mod shaders;
 pub mod shape;
+pub mod sound;
 pub mod suggest;
 pub mod texturing;
 

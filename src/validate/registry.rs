@@ -6,7 +6,8 @@ use std::sync::LazyLock;
 
 use super::{
     document, events, geospatial, hanim, interpolation, lighting, navigation, networking, nurbs,
-    prototypes, rendering, scripting, sensors, shaders, shape, texturing, Check, Rule,
+    particles, prototypes, rendering, rigid_body, scripting, sensors, shaders, shape, sound,
+    texturing, Check, Rule,
 };
 
 /// Every rule with its check function (None for those reported while reading).
@@ -28,6 +29,9 @@ pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {
         nurbs::RULES,
         hanim::RULES,
         geospatial::RULES,
+        sound::RULES,
+        particles::RULES,
+        rigid_body::RULES,
     ]
     .concat()
 });
