@@ -25,7 +25,7 @@ def default_container_fields():
     for version in ["3.0", "3.1", "3.2", "3.3", "4.0", "4.1"]:
         tree = etree.parse(str(ORACLE / f"X3dUnifiedObjectModel-{version}.xml"))
         for node in tree.iter("ConcreteNode", "Statement"):
-            field = node.find("containerField")
+            field = node.find("InterfaceDefinition/containerField")
             if field is not None:
                 defaults[node.get("name")] = field.get("default")
     return defaults

@@ -1,6 +1,7 @@
 """Run a Web3D X3D Schematron (.sch) over every *.x3d file under a corpus folder.
 
 Usage: run_schematron.py SCH CORPUS [-o findings.jsonl] [--only SUBSTRING]
+                         [--container-field-defaults] [--oracle FOLDER]
 
 The .sch declares no queryBinding (so XSLT 1.0) but its tests use XPath 2.0 syntax
 (value comparisons such as `number(@level) ge 2`, lower-case(), ends-with()), which an
@@ -10,6 +11,13 @@ XSLT 2.0 processor runs an XSLT 1.0 stylesheet in backwards-compatible mode, whe
 Schematron XSLT 1.0 skeleton that lxml ships and compiles and runs it with SaxonC-HE
 (saxonche). Each scene is read by lxml without its DTD and without the network (Saxon
 would fetch the DOCTYPE's DTD) and handed to Saxon as a tree.
+
+The Schematron's containerField tests read the attribute (`not(@containerField='children')`),
+which a parser that reads the X3D DTD fills in with the DTD's default. Without the DTD
+(it cannot be fetched here) they fire on every node that leaves containerField to its
+default. --container-field-defaults gives each element without a containerField the
+default of its node type in X3DUOM (the value the DTD declares), as the DTD would; the
+DTD's other attribute defaults are not applied.
 
 Writes one JSON object per finding (a failed assert or a successful report, as SVRL
 gives it): file (relative to CORPUS), role, element (the context node's name), line (the
@@ -29,6 +37,7 @@ from lxml import etree
 from saxonche import PySaxonProcessor
 
 SVRL = "http://purl.oclc.org/dsdl/svrl"
+ORACLE = Path(__file__).resolve().parents[3] / "shared" / "oracle"
 SKELETON = Path(lxml.isoschematron.__file__).parent / "resources/xsl/iso-schematron-xslt1"
 
 
@@ -43,10 +52,27 @@ def compile_validator(xslt, sch, work):
     return xslt.compile_stylesheet(stylesheet_file=current)
 
 
-def read_scene(path):
-    """The scene as lxml reads it with no DTD and no network (Saxon would fetch the DOCTYPE's DTD)."""
+def container_field_defaults(oracle):
+    """The default containerField of every node type and statement of every X3D version."""
+    defaults = {}
+    for version in ["3.0", "3.1", "3.2", "3.3", "4.0", "4.1"]:
+        tree = etree.parse(str(oracle / f"X3dUnifiedObjectModel-{version}.xml"))
+        for node in tree.iter("ConcreteNode", "Statement"):
+            field = node.find("InterfaceDefinition/containerField")
+            if field is not None:
+                defaults[node.get("name")] = field.get("default")
+    return defaults
+
+
+def read_scene(path, defaults):
+    """The scene as lxml reads it with no DTD and no network, with the containerField
+    defaults given (an empty mapping gives none)."""
     parser = etree.XMLParser(huge_tree=True, load_dtd=False, no_network=True, resolve_entities=False)
-    return etree.parse(str(path), parser)
+    tree = etree.parse(str(path), parser)
+    for element in tree.iter():
+        if isinstance(element.tag, str) and element.tag in defaults and "containerField" not in element.attrib:
+            element.set("containerField", defaults[element.tag])
+    return tree
 
 
 def findings(svrl_text, scene):
@@ -81,7 +107,11 @@ def main():
     parser.add_argument("corpus", type=Path)
     parser.add_argument("-o", "--output", type=Path, default=Path("schematron-findings.jsonl"))
     parser.add_argument("--only", help="check only the files whose path contains this")
+    parser.add_argument("--container-field-defaults", action="store_true",
+                        help="give elements the containerField default the X3D DTD declares")
+    parser.add_argument("--oracle", type=Path, default=ORACLE, help="the folder of X3dUnifiedObjectModel-*.xml")
     args = parser.parse_args()
+    defaults = container_field_defaults(args.oracle) if args.container_field_defaults else {}
 
     with PySaxonProcessor(license=False) as proc, tempfile.TemporaryDirectory() as work:
         xslt = proc.new_xslt30_processor()
@@ -94,7 +124,7 @@ def main():
                 relative = str(scene.relative_to(args.corpus))
                 print(f"[{number}/{len(scenes)}] {relative}", file=sys.stderr)
                 try:
-                    tree = read_scene(scene)
+                    tree = read_scene(scene, defaults)
                     node = proc.parse_xml(xml_text=etree.tostring(tree.getroot(), encoding="unicode"))
                     svrl_text = validator.transform_to_string(xdm_node=node)
                     if svrl_text is None:
