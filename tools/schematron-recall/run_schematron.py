@@ -16,8 +16,9 @@ The Schematron's containerField tests read the attribute (`not(@containerField='
 which a parser that reads the X3D DTD fills in with the DTD's default. Without the DTD
 (it cannot be fetched here) they fire on every node that leaves containerField to its
 default. --container-field-defaults gives each element without a containerField the
-default of its node type in X3DUOM (the value the DTD declares), as the DTD would; the
-DTD's other attribute defaults are not applied.
+default of its node type in the X3DUOM of the document's X3D version (the value that
+version's DTD and schema declare), as the DTD would; the DTD's other attribute defaults
+are not applied.
 
 Writes one JSON object per finding (a failed assert or a successful report, as SVRL
 gives it): file (relative to CORPUS), role, element (the context node's name), line (the
@@ -52,23 +53,33 @@ def compile_validator(xslt, sch, work):
     return xslt.compile_stylesheet(stylesheet_file=current)
 
 
+VERSIONS = ["3.0", "3.1", "3.2", "3.3", "4.0", "4.1"]
+
+
 def container_field_defaults(oracle):
-    """The default containerField of every node type and statement of every X3D version."""
+    """Per X3D version, the default containerField of every node type."""
     defaults = {}
-    for version in ["3.0", "3.1", "3.2", "3.3", "4.0", "4.1"]:
+    for version in VERSIONS:
         tree = etree.parse(str(oracle / f"X3dUnifiedObjectModel-{version}.xml"))
-        for node in tree.iter("ConcreteNode", "Statement"):
+        defaults[version] = {}
+        for node in tree.iter("ConcreteNode"):
             field = node.find("InterfaceDefinition/containerField")
             if field is not None:
-                defaults[node.get("name")] = field.get("default")
+                defaults[version][node.get("name")] = field.get("default")
     return defaults
 
 
 def read_scene(path, defaults):
     """The scene as lxml reads it with no DTD and no network, with the containerField
-    defaults given (an empty mapping gives none)."""
+    defaults of its version (none when `defaults` is empty)."""
     parser = etree.XMLParser(huge_tree=True, load_dtd=False, no_network=True, resolve_entities=False)
     tree = etree.parse(str(path), parser)
+    if not defaults:
+        return tree
+    version = tree.getroot().get("version") or ""
+    if version not in defaults:  # missing or unknown: the newest of its major version
+        version = "4.1" if version.startswith("4") else "3.3"
+    defaults = defaults[version]
     for element in tree.iter():
         if isinstance(element.tag, str) and element.tag in defaults and "containerField" not in element.attrib:
             element.set("containerField", defaults[element.tag])
