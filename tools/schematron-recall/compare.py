@@ -225,7 +225,7 @@ JUDGEMENTS = [
     (r"HAnim", r"not\(@USE\) and not\(HAnimSegment\)", BUG, [],
      "style: no shall-statement of 19775-1 26 asks for a segment under every joint (a skeleton may have joints without geometry)"),
     (r"HAnim", r"contains\(@DEF,concat\('_',@name\)\)", BUG, [],
-     "style: a DEF naming convention (the message cites H-Anim C.2, VRML binding); DEF names are free (4.4.3)"),
+     "style: a DEF naming convention (the message cites H-Anim C.2, VRML binding); 4.4.3 asks for no convention"),
     (r"HAnim", r"@center='0 0 0'|@center and \(string-length\(@center\) > 0\) and starts-with|translation='0 0 0'\) or|starts-with\(substring-after\(@translation", BUG, [],
      "heuristic about where joints and sites usually are (on the ground, above it, center rather than translation); no shall-statement"),
     (r"HAnimSegment", r"\(Shape\) and not\(Transform/Shape\)", BUG, [],
