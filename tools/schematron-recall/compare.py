@@ -205,7 +205,7 @@ JUDGEMENTS = [
     (r"HAnimJoint", r"\*\[not\(\(local-name\(\)='HAnimJoint'\)|^\$childrenNodes$",
      lambda e: TRUE if non_hanim_children(e) else (BUG, "a Metadata child (containerField='metadata') is allowed; the test forgets Metadata* nodes"),
      ["NODE_TYPE_NOT_ALLOWED"],
-     "26.3.3 HAnimJoint: children holds HAnimJoint, HAnimSegment and HAnimSite nodes only (4.4.2.2); x3dcheck reports each other child"),
+     "26.3.3 HAnimJoint: children takes HAnimJoint and HAnimSegment nodes (X3DUOM: HAnimJoint|HAnimSegment), not a Transform (4.4.2.2); x3dcheck reports each such child"),
     (r"OrthoViewpoint", r"not\(\*\) or \(IS and \(count\(\*\) = 1\)\)", VERSION, [],
      "'only a single Metadata* node is allowed': X3D 4 gave viewpoints the node field navigationInfo"),
     (r".", r"not\(\*\) or \(IS and \(count\(\*\) = 1\)\)", BUG, [],
