@@ -5,7 +5,9 @@
 use wgpu::util::DeviceExt;
 
 use super::pipelines::{PipelineKey, Pipelines, COLOR_FORMAT, DEPTH_FORMAT, VERTEX_SLOTS};
-use super::resources::{upload_indices, upload_mesh, MeshBuffers, TextureBindings};
+use super::resources::{
+    index_bounds, upload_indices, upload_mesh, upload_surface_part, MeshBuffers, TextureBindings,
+};
 use super::uniforms::{draw_uniform, globals, GpuDraw};
 use super::{GpuError, Shading};
 use crate::render::draw_list::{DrawList, Mesh, Primitive};
@@ -140,11 +142,12 @@ pub async fn draw(
         contents: &[0u8; 16],
         usage: wgpu::BufferUsages::VERTEX,
     });
-    // Each draw's pipeline and textures exist before the first pass begins; its vertex
-    // buffers are made for the first pass that draws it and freed after its last, and
-    // each pass gets only its own part of the indices, so the GPU holds about one pass's
-    // meshes at a time rather than the whole scene (on a software driver, in the
-    // process's own memory).
+    // Each draw's pipeline and textures exist before the first pass begins; each pass
+    // gets only its own part of the indices, and of a surface's vertices those its part
+    // names when they are few (see `local`); other vertex buffers are made for the
+    // first pass that draws the mesh and freed after its last. So the GPU holds about one
+    // pass's part of the scene at a time rather than the whole scene (on a software
+    // driver, in the process's own memory).
     let mut draws = Vec::with_capacity(order.len());
     let mut scissors = Vec::with_capacity(order.len());
     let mut counts = Vec::with_capacity(order.len());
@@ -227,26 +230,37 @@ pub async fn draw(
                 .poll(wgpu::PollType::wait_indefinitely())
                 .map_err(|e| GpuError::Failed(e.to_string()))?;
             for (slot, &last) in last_pass.iter().enumerate() {
-                if last == n - 1 && uploaded[slot].is_some() {
+                if last == n - 1 {
                     uploaded[slot] = None;
                     let (l, m) = order[slot];
-                    drop(std::mem::take(&mut list.layers[l].meshes[m].indices));
+                    free_arrays(&mut list.layers[l].meshes[m]);
                 }
             }
         }
-        // This pass's buffers: the vertices of meshes it draws first, its indices.
+        // This pass's buffers: a surface's part when its vertices are local, else the
+        // vertices of meshes it draws first and its indices.
+        let mut parts = Vec::with_capacity(pieces.len());
         let mut index_buffers = Vec::with_capacity(pieces.len());
         for piece in &pieces {
             let (l, m) = order[piece.slot];
             let mesh = &mut list.layers[l].meshes[m];
+            let range = piece.range.start as usize..piece.range.end as usize;
+            if uploaded[piece.slot].is_none()
+                && mesh.primitive == Primitive::Triangles
+                && local(index_bounds(&mesh.indices[range.clone()]), range.len())
+            {
+                parts.push(Some(upload_surface_part(device, mesh, range)));
+                index_buffers.push(None);
+                continue;
+            }
+            parts.push(None);
             if uploaded[piece.slot].is_none() {
                 uploaded[piece.slot] = Some(upload_mesh(device, mesh));
             }
             index_buffers.push(match uploaded[piece.slot] {
-                Some(MeshBuffers::Surface { .. }) => Some(upload_indices(
-                    device,
-                    &mesh.indices[piece.range.start as usize..piece.range.end as usize],
-                )),
+                Some(MeshBuffers::Surface { .. }) => {
+                    Some(upload_indices(device, &mesh.indices[range]))
+                }
                 _ => None,
             });
         }
@@ -297,7 +311,9 @@ pub async fn draw(
             pass.draw(0..3, 0..1);
         }
         let mut scissor = rects[l];
-        for (Piece { slot, range }, indices) in pieces.into_iter().zip(&index_buffers) {
+        for ((Piece { slot, range }, indices), part) in
+            pieces.into_iter().zip(&index_buffers).zip(&parts)
+        {
             let [sx, sy, sw, sh] = scissors[slot];
             if sw == 0 || sh == 0 {
                 continue;
@@ -310,6 +326,14 @@ pub async fn draw(
             pass.set_pipeline(pipelines.get(*key));
             pass.set_bind_group(1, &draw_group, &[(slot * stride) as u32]);
             pass.set_bind_group(2, bindings.group(textures), &[]);
+            if let Some(part) = part {
+                for (i, buffer) in part.vertices.iter().enumerate() {
+                    pass.set_vertex_buffer(i as u32, buffer.as_ref().unwrap_or(&zeros).slice(..));
+                }
+                pass.set_index_buffer(part.indices.slice(..), part.format);
+                pass.draw_indexed(0..range.end - range.start, 0, 0..1);
+                continue;
+            }
             match (&uploaded[slot], indices) {
                 (Some(MeshBuffers::Surface { vertices }), Some(indices)) => {
                     for (i, buffer) in vertices.iter().enumerate().take(VERTEX_SLOTS) {
@@ -331,6 +355,25 @@ pub async fn draw(
         }
     }
     read_back(device, queue, encoder, &resolved, &target).await
+}
+
+/// Whether a pass draws its part of a surface from buffers of only the vertices that part
+/// names (from the smallest index to the largest): when they are fewer than its indices.
+/// A connected mesh in a sensible order names few vertices per pass (a grid: about one per
+/// six indices); one whose indices jump across it would upload most of its vertices again
+/// for every pass, so it gets buffers of the whole mesh, made once.
+fn local((first, last): (u32, u32), indices: usize) -> bool {
+    ((last - first) as usize) < indices
+}
+
+/// Frees a mesh's arrays once its last pass is done.
+fn free_arrays(mesh: &mut Mesh) {
+    drop(std::mem::take(&mut mesh.positions));
+    mesh.normals = None;
+    mesh.tangents = None;
+    mesh.colors = None;
+    drop(std::mem::take(&mut mesh.tex_coords));
+    drop(std::mem::take(&mut mesh.indices));
 }
 
 /// At most this many indices (or line and point instances, six vertices each) go into

@@ -262,6 +262,67 @@ pub fn upload_indices(device: &wgpu::Device, indices: &[u32]) -> wgpu::Buffer {
     )
 }
 
+/// One pass's part of a surface on the GPU: the vertices from the smallest to the
+/// largest index it draws (one buffer per vertex slot, None: the constant zero buffer)
+/// and its indices counted from the smallest.
+pub struct SurfacePart {
+    pub vertices: Box<[Option<wgpu::Buffer>; VERTEX_SLOTS]>,
+    pub indices: wgpu::Buffer,
+    pub format: wgpu::IndexFormat,
+}
+
+/// The smallest and largest of some indices ((0, 0) for none).
+pub fn index_bounds(indices: &[u32]) -> (u32, u32) {
+    let first = indices.iter().copied().min().unwrap_or(0);
+    (first, indices.iter().copied().max().unwrap_or(first))
+}
+
+/// Uploads the part of a surface that one pass draws, `indices` of its own (whole
+/// triangles of `mesh.indices`), leaving the mesh's arrays in place for its other parts:
+/// only the vertices from the smallest to the largest index they name, and the indices
+/// counted from the smallest, in 16 bits when they span fewer than 65,536 vertices.
+pub fn upload_surface_part(
+    device: &wgpu::Device,
+    mesh: &Mesh,
+    indices: std::ops::Range<usize>,
+) -> SurfacePart {
+    let indices = &mesh.indices[indices];
+    let (first, last) = index_bounds(indices);
+    let span = first as usize..last as usize + 1;
+    let vertex = |bytes: &[u8]| Some(buffer(device, bytes, wgpu::BufferUsages::VERTEX));
+    let mut vertices: [Option<wgpu::Buffer>; VERTEX_SLOTS] = Default::default();
+    vertices[0] = vertex(bytemuck::cast_slice(&mesh.positions[span.clone()]));
+    vertices[1] = mesh
+        .normals
+        .as_ref()
+        .and_then(|n| vertex(bytemuck::cast_slice(&n[span.clone()])));
+    vertices[2] = mesh
+        .colors
+        .as_ref()
+        .and_then(|c| vertex(bytemuck::cast_slice(&c[span.clone()])));
+    vertices[3] = mesh
+        .tangents
+        .as_ref()
+        .and_then(|t| vertex(bytemuck::cast_slice(&t[span.clone()])));
+    for (slot, set) in vertices[4..].iter_mut().zip(&mesh.tex_coords) {
+        *slot = vertex(bytemuck::cast_slice(&set[span.clone()]));
+    }
+    let (bytes, format): (Vec<u8>, _) = if last - first < 1 << 16 {
+        let bytes = indices
+            .iter()
+            .flat_map(|&i| ((i - first) as u16).to_ne_bytes());
+        (bytes.collect(), wgpu::IndexFormat::Uint16)
+    } else {
+        let bytes = indices.iter().flat_map(|&i| (i - first).to_ne_bytes());
+        (bytes.collect(), wgpu::IndexFormat::Uint32)
+    };
+    SurfacePart {
+        vertices: Box::new(vertices),
+        indices: buffer(device, &bytes, wgpu::BufferUsages::INDEX),
+        format,
+    }
+}
+
 /// Lines and points as instances: a segment's two ends (a point twice), in index order.
 fn upload_stroke(mesh: &mut Mesh, buffer: impl Fn(&[u8]) -> wgpu::Buffer) -> MeshBuffers {
     let (ends, colors) = stroke_instances(mesh);
