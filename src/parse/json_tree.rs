@@ -1384,6 +1384,27 @@ mod tests {
     }
 
     #[test]
+    fn digit_runs_end_where_a_byte_at_a_time_says() {
+        // Every byte value after runs of every length around the eight-byte steps, with
+        // digits after it that must not count.
+        for len in 0..20 {
+            for stop in 0..=255u8 {
+                let mut s = vec![b'7'; len];
+                s.push(stop);
+                s.extend_from_slice(b"0123456789");
+                for from in 0..=len {
+                    let slow = from
+                        + s[from..]
+                            .iter()
+                            .position(|b| !b.is_ascii_digit())
+                            .unwrap_or(s.len() - from);
+                    assert_eq!(digits_end(&s, from), slow, "{len} digits, then {stop}");
+                }
+            }
+        }
+    }
+
+    #[test]
     fn numbers_of_every_shape() {
         for (number, integer) in [
             ("0", true),
