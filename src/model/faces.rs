@@ -239,6 +239,14 @@ impl<'a> Polygonal<'a> {
         })
     }
 
+    /// The index list positions are offsets into, for the indexed nodes.
+    pub fn indices(&self) -> Option<&'a [i32]> {
+        match self.stream {
+            Stream::Indexed(list) => Some(list),
+            _ => None,
+        }
+    }
+
     /// Length of the vertex stream.
     pub fn stream_len(&self) -> usize {
         match self.stream {
@@ -250,6 +258,7 @@ impl<'a> Polygonal<'a> {
 
     /// The coordinate index (grid vertex number) at a stream position; None for a
     /// negative index or a position past the stream.
+    #[inline]
     pub fn coord_index(&self, position: usize) -> Option<usize> {
         match self.stream {
             Stream::Indexed(list) => list.get(position).and_then(|&i| usize::try_from(i).ok()),
@@ -305,8 +314,15 @@ impl<'a> Polygonal<'a> {
         face: &Face,
         position: usize,
     ) -> Option<usize> {
+        self.bound_index(self.binding(attribute), face, position)
+    }
+
+    /// [`Polygonal::attribute_index`] with the attribute's binding already looked up, for
+    /// callers that visit every corner.
+    #[inline]
+    pub fn bound_index(&self, binding: Binding, face: &Face, position: usize) -> Option<usize> {
         let index = |list: &[i32], at: usize| list.get(at).and_then(|&i| usize::try_from(i).ok());
-        match self.binding(attribute) {
+        match binding {
             Binding::PerVertex { index: Some(list) } if position < list.len() => {
                 index(list, position)
             }
@@ -354,6 +370,7 @@ impl Face {
     }
 
     /// The stream position of corner `k` (`k < len()`).
+    #[inline]
     pub fn corner(&self, k: usize) -> usize {
         match &self.corners {
             Corners::Run(range) => range.start + k,

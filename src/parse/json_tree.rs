@@ -550,23 +550,51 @@ impl<'s> Scanner<'s> {
                             self.i += 1;
                             state = State::Key;
                         }
+                        // The common case of big arrays: the numbers that follow, each
+                        // with its comma, in one loop over local copies of the cursor and
+                        // the count, without going round the state machine (and without
+                        // an item).
                         (b',', false) => {
-                            self.i += 1;
-                            self.skip_ws();
-                            match self.s.get(self.i) {
-                                Some(b']') => {
-                                    return Err(self.error_here(
-                                        "a trailing comma before `]` is not allowed in JSON",
-                                    ));
+                            let s = self.s;
+                            let mut i = self.i;
+                            let mut numbers = 0;
+                            let outcome = loop {
+                                i = ws_end(s, i + 1);
+                                match s.get(i) {
+                                    Some(b']') => {
+                                        self.i = i;
+                                        break Err(self.error_here(
+                                            "a trailing comma before `]` is not allowed in JSON",
+                                        ));
+                                    }
+                                    Some(b'-' | b'0'..=b'9') => {
+                                        numbers += 1;
+                                        match simple_number(s, i) {
+                                            Some((_, end)) => i = end,
+                                            None => {
+                                                self.i = i;
+                                                if let Err(error) = self.number_full() {
+                                                    break Err(error);
+                                                }
+                                                i = self.i;
+                                            }
+                                        }
+                                        i = ws_end(s, i);
+                                        if s.get(i) != Some(&b',') {
+                                            break Ok(());
+                                        }
+                                    }
+                                    _ => {
+                                        state = State::Value;
+                                        break Ok(());
+                                    }
                                 }
-                                // The common case of big arrays: the next number, without
-                                // going round the state machine (and without an item).
-                                Some(b'-' | b'0'..=b'9') => {
-                                    self.items[top as usize].len += 1;
-                                    self.number()?;
-                                }
-                                _ => state = State::Value,
+                            };
+                            if outcome.is_ok() {
+                                self.i = i;
                             }
+                            self.items[top as usize].len += numbers;
+                            outcome?;
                         }
                         (b'}', true) | (b']', false) => {
                             self.i += 1;
@@ -819,23 +847,8 @@ impl<'s> Scanner<'s> {
     /// span.
     #[inline(always)]
     fn number(&mut self) -> Result<(u8, usize, usize), Error> {
-        let s = self.s;
         let start = self.i;
-        let int_start = start + usize::from(s[start] == b'-');
-        let int_end = digits_end(s, int_start);
-        let mut end = int_end;
-        let mut flags = 0;
-        if s.get(end) == Some(&b'.') {
-            end = digits_end(s, end + 1);
-            flags = NOT_INTEGER;
-        }
-        let simple = int_end > int_start
-            && (s[int_start] != b'0' || int_end - int_start == 1)
-            // A decimal point needs a digit after it.
-            && (flags == 0 || end > int_end + 1)
-            && s.get(end)
-                .is_none_or(|&b| NUMBER_CLASS[b as usize] & (EXP_SIGN | LETTER | DOT) == 0);
-        if simple {
+        if let Some((flags, end)) = simple_number(self.s, start) {
             self.i = end;
             return Ok((flags, start, end));
         }
@@ -1025,9 +1038,53 @@ impl<'s> Scanner<'s> {
     }
 }
 
-/// The end of the run of ASCII digits starting at `i`.
+/// A number of the common shape `-?digits(.digits)?` at `start` (a `-` or a digit), whole
+/// (not followed by an exponent, a letter or a dot): its flags and its end. None for
+/// anything else, which [`Scanner::number_full`] reads or refuses.
+#[inline(always)]
+fn simple_number(s: &[u8], start: usize) -> Option<(u8, usize)> {
+    let int_start = start + usize::from(s[start] == b'-');
+    let int_end = digits_end(s, int_start);
+    let mut end = int_end;
+    let mut flags = 0;
+    if s.get(end) == Some(&b'.') {
+        end = digits_end(s, end + 1);
+        flags = NOT_INTEGER;
+    }
+    let simple = int_end > int_start
+        && (s[int_start] != b'0' || int_end - int_start == 1)
+        // A decimal point needs a digit after it.
+        && (flags == 0 || end > int_end + 1)
+        && s.get(end)
+            .is_none_or(|&b| NUMBER_CLASS[b as usize] & (EXP_SIGN | LETTER | DOT) == 0);
+    simple.then_some((flags, end))
+}
+
+/// The end of the run of JSON whitespace starting at `i`.
+#[inline(always)]
+fn ws_end(s: &[u8], mut i: usize) -> usize {
+    while let Some(b' ' | b'\n' | b'\r' | b'\t') = s.get(i) {
+        i += 1;
+    }
+    i
+}
+
+/// The end of the run of ASCII digits starting at `i`, eight bytes at a time while eight
+/// remain: a byte is no digit when subtracting `0` or adding 0x46 sets its top bit, and
+/// the lowest such byte is the first non-digit, as borrows and carries only move up from
+/// a non-digit.
 #[inline(always)]
 fn digits_end(s: &[u8], mut i: usize) -> usize {
+    while let Some(&chunk) = s.get(i..).and_then(|rest| rest.first_chunk::<8>()) {
+        let word = u64::from_le_bytes(chunk);
+        let not_digits = (word.wrapping_sub(0x3030_3030_3030_3030)
+            | word.wrapping_add(0x4646_4646_4646_4646))
+            & 0x8080_8080_8080_8080;
+        if not_digits != 0 {
+            return i + (not_digits.trailing_zeros() / 8) as usize;
+        }
+        i += 8;
+    }
     while s.get(i).is_some_and(u8::is_ascii_digit) {
         i += 1;
     }
@@ -1323,6 +1380,27 @@ mod tests {
                 "message for {src:?}: {:?}",
                 e.message
             );
+        }
+    }
+
+    #[test]
+    fn digit_runs_end_where_a_byte_at_a_time_says() {
+        // Every byte value after runs of every length around the eight-byte steps, with
+        // digits after it that must not count.
+        for len in 0..20 {
+            for stop in 0..=255u8 {
+                let mut s = vec![b'7'; len];
+                s.push(stop);
+                s.extend_from_slice(b"0123456789");
+                for from in 0..=len {
+                    let slow = from
+                        + s[from..]
+                            .iter()
+                            .position(|b| !b.is_ascii_digit())
+                            .unwrap_or(s.len() - from);
+                    assert_eq!(digits_end(&s, from), slow, "{len} digits, then {stop}");
+                }
+            }
         }
     }
 

@@ -75,11 +75,30 @@ pub struct Ctx<'a> {
     pub imports: networking::imports::Imports,
     /// The code of each Script, read and parsed when a rule first asks ([`Ctx::scripts`]).
     scripts: std::cell::OnceCell<scripting::Scripts>,
+    /// The faces of the polygonal geometries as the deep rules judge them, walked when a
+    /// rule first asks ([`Ctx::face_survey`]).
+    face_survey: std::cell::OnceCell<std::rc::Rc<FaceSurveys<'a>>>,
     diagnostics: Vec<Diagnostic>,
     /// Folded findings: (code, node, field) → index in `diagnostics`.
     folded: HashMap<(&'static str, NodeId, String), usize>,
     /// Whether [`MAX_DIAGNOSTICS`] was reached (and reported).
     full: bool,
+}
+
+/// Each judged polygonal geometry with what [`rendering::face_survey`] found in it.
+type FaceSurveys<'a> = Vec<(
+    rendering::geometry::Checked<'a>,
+    rendering::face_survey::Survey,
+)>;
+
+impl<'a> Ctx<'a> {
+    /// The faces of the polygonal geometries, walked once for the deep rules that judge
+    /// them (DEGENERATE_TRIANGLE, NORMALS_CONTRADICT_CCW), on first use.
+    pub fn face_survey(&self) -> std::rc::Rc<FaceSurveys<'a>> {
+        self.face_survey
+            .get_or_init(|| std::rc::Rc::new(rendering::face_survey::survey(self.doc, self.config)))
+            .clone()
+    }
 }
 
 /// How many element indices a folded diagnostic lists.
@@ -276,6 +295,7 @@ pub fn check_with(
         inlines,
         imports,
         scripts: std::cell::OnceCell::new(),
+        face_survey: std::cell::OnceCell::new(),
         diagnostics: Vec::new(),
         folded: HashMap::new(),
         full: false,

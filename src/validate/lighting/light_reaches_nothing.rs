@@ -57,6 +57,10 @@ fn check(ctx: &mut Ctx) {
     if !doc.head.units.is_empty() {
         return;
     }
+    // The shapes' bounds, a walk over every point, matter only when there is a light.
+    if !doc.iter().any(|(_, node)| is_positional_light(node)) {
+        return;
+    }
     let mut shapes: Vec<Bounds> = Vec::new();
     let mut lights: HashMap<NodeId, Vec<Reach>> = HashMap::new();
     let mut unknown = false;

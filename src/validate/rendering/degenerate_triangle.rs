@@ -1,12 +1,9 @@
 //! DEGENERATE_TRIANGLE: zero-area faces, counted per geometry (deep level).
 
-use std::ops::Range;
-
-use super::geometry::{
-    corner_point, face_is_degenerate, is_degenerate, judge_polygonal, Checked, Points, ScalarSpans,
-};
-use crate::model::faces::{counted_runs, runs, PolygonKind};
-use crate::model::{Span, Value};
+use super::face_survey::counts_runs;
+use super::geometry::{Checked, ScalarSpans};
+use crate::model::faces::PolygonKind;
+use crate::model::Span;
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -53,52 +50,12 @@ crate::declare_rule! {
     }
 }
 
-/// The first zero-area face (or strip) found, and how many there are of how many.
-struct Count {
-    first: Option<(usize, usize)>,
-    degenerate: usize,
-    total: usize,
-}
-
-impl Count {
-    fn add(&mut self, number: usize, position: usize, degenerate: bool) {
-        self.total += 1;
-        if degenerate {
-            self.degenerate += 1;
-            self.first.get_or_insert((number, position));
-        }
-    }
-}
-
 fn check(ctx: &mut Ctx) {
-    let doc = ctx.doc;
-    let judged = judge_polygonal(doc, |geometry| {
-        let points = Points::of(doc, geometry)?;
-        let mut count = Count {
-            first: None,
-            degenerate: 0,
-            total: 0,
+    let surveyed = ctx.face_survey();
+    for (geometry, survey) in surveyed.iter() {
+        let Some(count) = &survey.degenerate else {
+            continue;
         };
-        if counts_runs(geometry.faces.kind) {
-            let fan = matches!(
-                geometry.faces.kind,
-                PolygonKind::IndexedTriangleFanSet | PolygonKind::TriangleFanSet
-            );
-            for (number, run) in strip_runs(geometry).enumerate() {
-                if let Some(degenerate) = run_is_degenerate(geometry, &points, run.clone(), fan) {
-                    count.add(number, run.start, degenerate);
-                }
-            }
-        } else {
-            for face in geometry.faces.faces() {
-                if let Some(degenerate) = face_is_degenerate(geometry, &points, &face) {
-                    count.add(face.number, face.corner(0), degenerate);
-                }
-            }
-        }
-        Some(count)
-    });
-    for (geometry, count) in judged {
         let kind = geometry.faces.kind;
         let count_runs = counts_runs(kind);
         let noun = match kind {
@@ -111,7 +68,7 @@ fn check(ctx: &mut Ctx) {
         let Some((number, position)) = count.first else {
             continue;
         };
-        let (place, span) = locate(ctx, &geometry, position);
+        let (place, span) = locate(ctx, geometry, position);
         let what = if count_runs {
             format!(
                 "{} of its {} {noun} {} no three non-collinear vertices",
@@ -138,60 +95,6 @@ fn check(ctx: &mut Ctx) {
         diagnostic.count = count.degenerate;
         ctx.report(diagnostic);
     }
-}
-
-/// Whether the geometry is judged per strip or fan rather than per face.
-fn counts_runs(kind: PolygonKind) -> bool {
-    matches!(
-        kind,
-        PolygonKind::IndexedTriangleStripSet
-            | PolygonKind::TriangleStripSet
-            | PolygonKind::IndexedTriangleFanSet
-            | PolygonKind::TriangleFanSet
-    )
-}
-
-/// The strips or fans of a strip or fan set, as stream positions.
-fn strip_runs<'a>(geometry: &'a Checked) -> Box<dyn Iterator<Item = Range<usize>> + 'a> {
-    match geometry.faces.kind.index_field() {
-        Some(field) => Box::new(runs(
-            geometry
-                .node
-                .value(field)
-                .and_then(Value::as_int32s)
-                .unwrap_or(&[]),
-        )),
-        None => {
-            let field = geometry.faces.kind.count_field().unwrap_or_default();
-            let counts = geometry
-                .node
-                .value(field)
-                .and_then(Value::as_int32s)
-                .unwrap_or(&[]);
-            Box::new(counted_runs(counts, geometry.faces.stream_len()))
-        }
-    }
-}
-
-/// Whether every triangle of a strip or fan is zero-area; None when too short to be
-/// judged (other rules report that) or a vertex does not resolve.
-fn run_is_degenerate(
-    geometry: &Checked,
-    points: &Points,
-    run: Range<usize>,
-    fan: bool,
-) -> Option<bool> {
-    if run.len() < 3 {
-        return None;
-    }
-    let point = |p| corner_point(geometry, points, p);
-    let mut degenerate = true;
-    for k in 0..run.len() - 2 {
-        let s = run.start;
-        let a = if fan { s } else { s + k };
-        degenerate &= is_degenerate(point(a)?, point(s + k + 1)?, point(s + k + 2)?)?;
-    }
-    Some(degenerate)
 }
 
 /// Where a stream position stands in the document: the index field's entry, the

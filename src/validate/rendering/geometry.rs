@@ -74,6 +74,7 @@ pub enum Scalars<'a> {
 
 impl Scalars<'_> {
     /// Element `i` of a list of 3-vectors, in f64.
+    #[inline]
     pub fn vec3(&self, i: usize) -> Option<[f64; 3]> {
         let at = i.checked_mul(3)?;
         match self {
@@ -264,6 +265,7 @@ impl Points<'_> {
     }
 
     /// The position of a vertex; None past the end or when not finite.
+    #[inline]
     pub fn get(&self, vertex: usize) -> Option<[f64; 3]> {
         let point = match self {
             Points::List(values) => values.vec3(vertex)?,
@@ -278,8 +280,14 @@ impl Points<'_> {
                 [i as f64 * x_spacing, height, j as f64 * z_spacing]
             }
         };
-        point.iter().all(|c| c.is_finite()).then_some(point)
+        finite(point)
     }
+}
+
+/// The point, when all its coordinates are finite.
+#[inline]
+pub fn finite(point: [f64; 3]) -> Option<[f64; 3]> {
+    point.iter().all(|c| c.is_finite()).then_some(point)
 }
 
 /// The attribute's lists as bound to a geometry; None when unknown.
@@ -436,10 +444,12 @@ pub fn each_normal(ctx: &mut Ctx, rule: &'static Rule, judge: impl Fn(f64) -> Op
     }
 }
 
+#[inline]
 pub fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 
+#[inline]
 pub fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [
         a[1] * b[2] - a[2] * b[1],
@@ -448,11 +458,13 @@ pub fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     ]
 }
 
+#[inline]
 pub fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
 /// The largest absolute component.
+#[inline]
 fn max_abs(v: [f64; 3]) -> f64 {
     v[0].abs().max(v[1].abs()).max(v[2].abs())
 }
@@ -466,6 +478,7 @@ pub const UNSCALED: std::ops::RangeInclusive<f64> = 1.0e-60..=1.0e60;
 /// `v` scaled so that squaring neither overflows nor underflows: unchanged when its
 /// largest component is in [`UNSCALED`], else divided by that component; None for the
 /// zero vector and non-finite ones. Callers use it only where the scale cancels out.
+#[inline]
 pub fn scaled(v: [f64; 3]) -> Option<[f64; 3]> {
     let m = max_abs(v);
     if !(m > 0.0 && v.iter().all(|c| c.is_finite())) {
@@ -496,6 +509,7 @@ pub fn length(v: [f64; 3]) -> f64 {
 }
 
 /// The unit vector along `v`; None for zero and non-finite vectors.
+#[inline]
 pub fn unit(v: [f64; 3]) -> Option<[f64; 3]> {
     let s = scaled(v)?;
     let l = dot(s, s).sqrt();
@@ -526,57 +540,94 @@ pub fn is_degenerate(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> Option<bool> {
 }
 
 /// The position of a face's corner: None when its index or coordinates do not resolve.
+#[inline]
 pub fn corner_point(g: &Checked, points: &Points, position: usize) -> Option<[f64; 3]> {
     points.get(g.faces.coord_index(position)?)
 }
 
-/// Whether a face has zero area: fewer than three corners, or every triangle of its fan
-/// degenerate (which happens exactly when all its corners are collinear). None when a
-/// corner does not resolve to finite coordinates.
-pub fn face_is_degenerate(g: &Checked, points: &Points, face: &Face) -> Option<bool> {
-    if face.len() < 3 {
-        return face
-            .corners()
-            .try_for_each(|p| corner_point(g, points, p).map(drop))
-            .map(|()| true);
-    }
-    let first = corner_point(g, points, face.corner(0))?;
-    let mut degenerate = true;
-    for [_, b, c] in face.triangles() {
-        let (b, c) = (corner_point(g, points, b)?, corner_point(g, points, c)?);
-        degenerate &= is_degenerate(first, b, c)?;
-    }
-    Some(degenerate)
+/// A face's corners resolved once: whether it has zero area and what its geometric normal
+/// is made of.
+pub struct FaceShape {
+    /// Whether the face has zero area: fewer than three corners, or every triangle of its
+    /// fan degenerate (which happens exactly when all its corners are collinear). None
+    /// when a corner does not resolve to finite coordinates.
+    pub degenerate: Option<bool>,
+    /// The sum of the fan's cross products.
+    sum: [f64; 3],
+    /// The sum of the fan's edge-length products, against which `sum` is negligible.
+    scale: f64,
 }
 
-/// The geometric unit normal of a face by the right-hand rule over its corners in order
-/// (ccw not applied): the sum of its fan's cross products, in f64, which is exact for
-/// concave polygons too. None when a corner does not resolve, the face is degenerate, or
-/// the sum is negligible next to its edges (a self-intersecting face that cancels out).
-pub fn face_normal(g: &Checked, points: &Points, face: &Face) -> Option<[f64; 3]> {
-    if face.len() < 3 {
-        return None;
+impl FaceShape {
+    pub fn of(g: &Checked, points: &Points, face: &Face) -> FaceShape {
+        FaceShape::with(face, |p| corner_point(g, points, p))
     }
-    let first = corner_point(g, points, face.corner(0))?;
-    let (mut sum, mut scale, mut degenerate) = ([0.0; 3], 0.0, true);
-    for [_, b, c] in face.triangles() {
-        let (b, c) = (corner_point(g, points, b)?, corner_point(g, points, c)?);
-        let fan = FanTriangle::of(first, b, c)?;
-        degenerate &= fan.degenerate;
-        for (s, x) in sum.iter_mut().zip(fan.cross) {
-            *s += x;
+
+    /// [`FaceShape::of`] with each corner's point given by `corner` (from its stream
+    /// position), for callers that resolve corners faster than [`corner_point`] can.
+    #[inline]
+    pub fn with(face: &Face, corner: impl Fn(usize) -> Option<[f64; 3]>) -> FaceShape {
+        let unresolved = FaceShape {
+            degenerate: None,
+            sum: [0.0; 3],
+            scale: 0.0,
+        };
+        if face.len() < 3 {
+            let resolved = face.corners().all(|p| corner(p).is_some());
+            return FaceShape {
+                degenerate: resolved.then_some(true),
+                ..unresolved
+            };
         }
-        scale += fan.edge_lengths;
+        let Some(first) = corner(face.corner(0)) else {
+            return unresolved;
+        };
+        let (mut sum, mut scale, mut degenerate) = ([0.0; 3], 0.0, true);
+        for [_, b, c] in face.triangles() {
+            let (Some(b), Some(c)) = (corner(b), corner(c)) else {
+                return unresolved;
+            };
+            let Some(fan) = FanTriangle::of(first, b, c) else {
+                return unresolved;
+            };
+            degenerate &= fan.degenerate;
+            for (s, x) in sum.iter_mut().zip(fan.cross) {
+                *s += x;
+            }
+            scale += fan.edge_lengths;
+        }
+        FaceShape {
+            degenerate: Some(degenerate),
+            sum,
+            scale,
+        }
     }
-    if degenerate {
-        return None;
+
+    /// The geometric unit normal by the right-hand rule over the corners in order (ccw not
+    /// applied): the sum of the fan's cross products, in f64, which is exact for concave
+    /// polygons too. None when a corner does not resolve, the face is degenerate, or the
+    /// sum is negligible next to its edges (a self-intersecting face that cancels out).
+    pub fn normal(&self) -> Option<[f64; 3]> {
+        if self.degenerate != Some(false) {
+            return None;
+        }
+        if UNSCALED.contains(&max_abs(self.sum)) {
+            // length's and unit's arithmetic on an unscaled vector, sharing the root.
+            let l = dot(self.sum, self.sum).sqrt();
+            return (l > DEGENERATE_SINE * self.scale).then(|| self.sum.map(|c| c / l));
+        }
+        (length(self.sum) > DEGENERATE_SINE * self.scale)
+            .then(|| unit(self.sum))
+            .flatten()
     }
-    (length(sum) > DEGENERATE_SINE * scale)
-        .then(|| unit(sum))
-        .flatten()
 }
 
-/// One triangle a, b, c of a face's fan, judged once for both [`face_normal`]'s sum and
+/// A face's geometric unit normal: [`FaceShape::normal`].
+pub fn face_normal(g: &Checked, points: &Points, face: &Face) -> Option<[f64; 3]> {
+    FaceShape::of(g, points, face).normal()
+}
+
+/// One triangle a, b, c of a face's fan, judged once for both [`FaceShape`]'s sum and
 /// its degeneracy.
 struct FanTriangle {
     /// (b − a) × (c − a).
@@ -589,6 +640,7 @@ struct FanTriangle {
 
 impl FanTriangle {
     /// None when a corner is not finite.
+    #[inline(always)]
     fn of(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> Option<FanTriangle> {
         let (e1, e2) = (sub(b, a), sub(c, a));
         let cross = cross(e1, e2);

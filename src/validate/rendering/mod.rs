@@ -3,6 +3,7 @@
 
 use super::Check;
 
+pub mod face_survey;
 pub mod geometry;
 
 pub mod attribute_count_insufficient;

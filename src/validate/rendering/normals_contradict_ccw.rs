@@ -1,9 +1,6 @@
 //! NORMALS_CONTRADICT_CCW: supplied normals point against the faces' winding (deep level).
 
-use super::geometry::{
-    attribute_lists, dot, face_normal, judge_polygonal, scaled, unit, Checked, Points, PropertyList,
-};
-use crate::model::faces::{Attribute, Binding, Face};
+use super::face_survey::NormalsCount;
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -50,32 +47,16 @@ crate::declare_rule! {
 }
 
 fn check(ctx: &mut Ctx) {
-    let doc = ctx.doc;
-    let judged = judge_polygonal(doc, |geometry| {
-        let lists = attribute_lists(doc, geometry.id, Attribute::Normal)?;
-        let [normals] = lists.as_slice() else {
-            return None;
+    let surveyed = ctx.face_survey();
+    for (geometry, survey) in surveyed.iter() {
+        let Some(NormalsCount {
+            normals_span,
+            agree,
+            contradict,
+        }) = survey.normals
+        else {
+            continue;
         };
-        let points = Points::of(doc, geometry)?;
-        let (mut agree, mut contradict) = (0usize, 0usize);
-        for face in geometry.faces.faces() {
-            let Some(geometric) = face_normal(geometry, &points, &face) else {
-                continue;
-            };
-            let Some(supplied) = supplied_normal(geometry, normals, &face) else {
-                continue;
-            };
-            let d = dot(geometric, supplied);
-            let d = if geometry.faces.ccw { d } else { -d };
-            if d > 0.0 {
-                agree += 1;
-            } else if d < 0.0 {
-                contradict += 1;
-            }
-        }
-        Some((normals.child_span, agree, contradict))
-    });
-    for (geometry, (normals_span, agree, contradict)) in judged {
         // "Most": at least two thirds of the judged faces.
         if contradict == 0 || contradict < 2 * agree {
             continue;
@@ -95,28 +76,4 @@ fn check(ctx: &mut Ctx) {
                 )),
         );
     }
-}
-
-/// The face's supplied normal direction (not normalized: only the sign of its dot product
-/// with the geometric normal is used): its per-face normal, or the sum of its corners'
-/// unit normals; None where an index or a normal is missing or zero, or the sum is zero.
-fn supplied_normal(geometry: &Checked, normals: &PropertyList, face: &Face) -> Option<[f64; 3]> {
-    let per_face = matches!(
-        geometry.faces.binding(Attribute::Normal),
-        Binding::PerFace { .. }
-    );
-    let mut sum = [0.0; 3];
-    for position in face.corners() {
-        let index = geometry
-            .faces
-            .attribute_index(Attribute::Normal, face, position)?;
-        let n = unit(normals.values.vec3(index)?)?;
-        for (s, c) in sum.iter_mut().zip(n) {
-            *s += c;
-        }
-        if per_face {
-            break;
-        }
-    }
-    scaled(sum).map(|_| sum)
 }

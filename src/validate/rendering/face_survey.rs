@@ -1,0 +1,290 @@
+//! One walk over the faces of every polygonal geometry for the two deep rules that judge
+//! faces, DEGENERATE_TRIANGLE and NORMALS_CONTRADICT_CCW: each face's corners are resolved
+//! and its fan's cross products taken once for both, and the walk is made once
+//! ([`crate::validate::Ctx::face_survey`]) whichever of them asks first. The faces of a
+//! large mesh are most of a deep check's work on it.
+
+use std::ops::Range;
+
+use super::degenerate_triangle::DEGENERATE_TRIANGLE;
+use super::geometry::{
+    attribute_lists, corner_point, dot, finite, is_degenerate, judge_polygonal, scaled, unit,
+    Checked, FaceShape, Points, PropertyList, Scalars,
+};
+use super::normals_contradict_ccw::NORMALS_CONTRADICT_CCW;
+use crate::config::CheckConfig;
+use crate::model::faces::{counted_runs, runs, Attribute, Binding, Face, PolygonKind};
+use crate::model::{Document, Span, Value};
+
+/// What the walk found in one geometry, for each rule that asked.
+pub struct Survey {
+    pub degenerate: Option<DegenerateCount>,
+    pub normals: Option<NormalsCount>,
+}
+
+/// DEGENERATE_TRIANGLE: the first zero-area face (or strip, or fan) as its number and
+/// stream position, and how many there are of how many.
+#[derive(Default)]
+pub struct DegenerateCount {
+    pub first: Option<(usize, usize)>,
+    pub degenerate: usize,
+    pub total: usize,
+}
+
+impl DegenerateCount {
+    fn add(&mut self, number: usize, position: usize, degenerate: bool) {
+        self.total += 1;
+        if degenerate {
+            self.degenerate += 1;
+            self.first.get_or_insert((number, position));
+        }
+    }
+}
+
+/// NORMALS_CONTRADICT_CCW: where the Normal node stands, and how many judged faces its
+/// normals agree with (positive dot product with the geometric normal, ccw applied) and
+/// contradict (negative).
+pub struct NormalsCount {
+    pub normals_span: Span,
+    pub agree: usize,
+    pub contradict: usize,
+}
+
+/// Every polygonal geometry of [`judge_polygonal`] whose points can be judged, with what
+/// the rules `config` runs find in it, in document order.
+pub fn survey<'a>(doc: &'a Document, config: &CheckConfig) -> Vec<(Checked<'a>, Survey)> {
+    let degenerate = config.runs(&DEGENERATE_TRIANGLE);
+    let normals = config.runs(&NORMALS_CONTRADICT_CCW);
+    judge_polygonal(doc, |geometry| {
+        survey_one(doc, geometry, degenerate, normals)
+    })
+}
+
+fn survey_one(
+    doc: &Document,
+    geometry: &Checked,
+    want_degenerate: bool,
+    want_normals: bool,
+) -> Option<Survey> {
+    let points = Points::of(doc, geometry)?;
+    let by_runs = counts_runs(geometry.faces.kind);
+    let mut degenerate = want_degenerate.then(DegenerateCount::default);
+    if let (true, Some(count)) = (by_runs, degenerate.as_mut()) {
+        let fan = matches!(
+            geometry.faces.kind,
+            PolygonKind::IndexedTriangleFanSet | PolygonKind::TriangleFanSet
+        );
+        for (number, run) in strip_runs(geometry).enumerate() {
+            if let Some(zero) = run_is_degenerate(geometry, &points, run.clone(), fan) {
+                count.add(number, run.start, zero);
+            }
+        }
+    }
+    let normal_lists = want_normals
+        .then(|| attribute_lists(doc, geometry.id, Attribute::Normal))
+        .flatten();
+    let normals = match normal_lists.as_deref() {
+        Some([list]) => Some(*list),
+        _ => None,
+    };
+    let mut agreement = normals.map(|list| NormalsCount {
+        normals_span: list.child_span,
+        agree: 0,
+        contradict: 0,
+    });
+    let per_face = degenerate.as_mut().filter(|_| !by_runs);
+    if per_face.is_some() || agreement.is_some() {
+        walk_faces(geometry, &points, per_face, normals.zip(agreement.as_mut()));
+    }
+    Some(Survey {
+        degenerate,
+        normals: agreement,
+    })
+}
+
+/// Counts zero-area faces into `degenerate` and the faces `normals` agree and disagree
+/// with into its count, resolving each face once.
+fn walk_faces(
+    geometry: &Checked,
+    points: &Points,
+    degenerate: Option<&mut DegenerateCount>,
+    normals: Option<(PropertyList, &mut NormalsCount)>,
+) {
+    // The usual mesh, an index list into single-precision coordinates, has its corners
+    // looked up directly rather than through the general stream and point kinds.
+    // So are its per-vertex normals when they follow the coordinate index.
+    let binding = geometry.faces.binding(Attribute::Normal);
+    let bound = |face: &Face, position| geometry.faces.bound_index(binding, face, position);
+    match (geometry.faces.indices(), points) {
+        (Some(indices), Points::List(Scalars::Single(values))) => {
+            let values = Scalars::Single(values);
+            let coord_index = |position| usize::try_from(*indices.get(position)?).ok();
+            let by_coord = binding == (Binding::PerVertex { index: None });
+            walk_faces_with(
+                geometry,
+                degenerate,
+                normals,
+                |position| finite(values.vec3(coord_index(position)?)?),
+                |face, position| {
+                    if by_coord {
+                        coord_index(position)
+                    } else {
+                        bound(face, position)
+                    }
+                },
+            )
+        }
+        _ => walk_faces_with(
+            geometry,
+            degenerate,
+            normals,
+            |position| corner_point(geometry, points, position),
+            bound,
+        ),
+    }
+}
+
+/// [`walk_faces`] with each corner's point given by `corner` and its normal's index by
+/// `normal_index` (from the face and the corner's stream position).
+fn walk_faces_with(
+    geometry: &Checked,
+    mut degenerate: Option<&mut DegenerateCount>,
+    mut normals: Option<(PropertyList, &mut NormalsCount)>,
+    corner: impl Fn(usize) -> Option<[f64; 3]>,
+    normal_index: impl Fn(&Face, usize) -> Option<usize>,
+) {
+    let binding = geometry.faces.binding(Attribute::Normal);
+    let units = normals
+        .as_ref()
+        .map(|(list, _)| UnitNormals::of(list, binding, geometry.faces.stream_len()));
+    for face in geometry.faces.faces() {
+        let shape = FaceShape::with(&face, &corner);
+        if let (Some(count), Some(zero)) = (degenerate.as_deref_mut(), shape.degenerate) {
+            count.add(face.number, face.corner(0), zero);
+        }
+        let (Some((_, count)), Some(units)) = (normals.as_mut(), units.as_ref()) else {
+            continue;
+        };
+        let Some(geometric) = shape.normal() else {
+            continue;
+        };
+        let Some(supplied) = supplied_normal(binding, units, &face, &normal_index) else {
+            continue;
+        };
+        let d = dot(geometric, supplied);
+        let d = if geometry.faces.ccw { d } else { -d };
+        if d > 0.0 {
+            count.agree += 1;
+        } else if d < 0.0 {
+            count.contradict += 1;
+        }
+    }
+}
+
+/// The face's supplied normal direction (not normalized: only the sign of its dot product
+/// with the geometric normal is used): its per-face normal, or the sum of its corners'
+/// unit normals; None where an index or a normal is missing or zero, or the sum is zero.
+#[inline]
+fn supplied_normal(
+    binding: Binding,
+    normals: &UnitNormals,
+    face: &Face,
+    normal_index: impl Fn(&Face, usize) -> Option<usize>,
+) -> Option<[f64; 3]> {
+    let per_face = matches!(binding, Binding::PerFace { .. });
+    let mut sum = [0.0; 3];
+    for position in face.corners() {
+        let index = normal_index(face, position)?;
+        let n = normals.get(index)?;
+        for (s, c) in sum.iter_mut().zip(n) {
+            *s += c;
+        }
+        if per_face {
+            break;
+        }
+    }
+    scaled(sum).map(|_| sum)
+}
+
+/// The unit vectors of a Normal node's list. Per-vertex normals are each shared by the
+/// faces around their vertex (about six in a triangle mesh), so they are normalized once
+/// beforehand, unless the list is longer than the vertex stream that can use them.
+enum UnitNormals<'a> {
+    Computed(Vec<Option<[f64; 3]>>),
+    OnDemand(Scalars<'a>),
+}
+
+impl<'a> UnitNormals<'a> {
+    fn of(list: &PropertyList<'a>, binding: Binding, stream_len: usize) -> UnitNormals<'a> {
+        if !matches!(binding, Binding::PerVertex { .. }) || list.len > stream_len {
+            return UnitNormals::OnDemand(list.values);
+        }
+        UnitNormals::Computed(
+            (0..list.len)
+                .map(|i| list.values.vec3(i).and_then(unit))
+                .collect(),
+        )
+    }
+
+    /// The unit vector of normal `i`; None past the end and for zero or non-finite ones.
+    fn get(&self, i: usize) -> Option<[f64; 3]> {
+        match self {
+            UnitNormals::Computed(units) => *units.get(i)?,
+            UnitNormals::OnDemand(values) => unit(values.vec3(i)?),
+        }
+    }
+}
+
+/// Whether the geometry is judged per strip or fan rather than per face.
+pub fn counts_runs(kind: PolygonKind) -> bool {
+    matches!(
+        kind,
+        PolygonKind::IndexedTriangleStripSet
+            | PolygonKind::TriangleStripSet
+            | PolygonKind::IndexedTriangleFanSet
+            | PolygonKind::TriangleFanSet
+    )
+}
+
+/// The strips or fans of a strip or fan set, as stream positions.
+fn strip_runs<'a>(geometry: &'a Checked) -> Box<dyn Iterator<Item = Range<usize>> + 'a> {
+    match geometry.faces.kind.index_field() {
+        Some(field) => Box::new(runs(
+            geometry
+                .node
+                .value(field)
+                .and_then(Value::as_int32s)
+                .unwrap_or(&[]),
+        )),
+        None => {
+            let field = geometry.faces.kind.count_field().unwrap_or_default();
+            let counts = geometry
+                .node
+                .value(field)
+                .and_then(Value::as_int32s)
+                .unwrap_or(&[]);
+            Box::new(counted_runs(counts, geometry.faces.stream_len()))
+        }
+    }
+}
+
+/// Whether every triangle of a strip or fan is zero-area; None when too short to be
+/// judged (other rules report that) or a vertex does not resolve.
+fn run_is_degenerate(
+    geometry: &Checked,
+    points: &Points,
+    run: Range<usize>,
+    fan: bool,
+) -> Option<bool> {
+    if run.len() < 3 {
+        return None;
+    }
+    let point = |p| corner_point(geometry, points, p);
+    let mut degenerate = true;
+    for k in 0..run.len() - 2 {
+        let s = run.start;
+        let a = if fan { s } else { s + k };
+        degenerate &= is_degenerate(point(a)?, point(s + k + 1)?, point(s + k + 2)?)?;
+    }
+    Some(degenerate)
+}
