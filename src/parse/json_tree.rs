@@ -20,6 +20,8 @@
 
 use std::borrow::Cow;
 
+use crate::parse::number::leading_digits;
+
 /// Nesting deeper than this (arrays and objects) is refused.
 pub const MAX_DEPTH: usize = crate::limits::MAX_JSON_NESTING;
 
@@ -1070,20 +1072,15 @@ fn ws_end(s: &[u8], mut i: usize) -> usize {
 }
 
 /// The end of the run of ASCII digits starting at `i`, eight bytes at a time while eight
-/// remain: a byte is no digit when subtracting `0` or adding 0x46 sets its top bit, and
-/// the lowest such byte is the first non-digit, as borrows and carries only move up from
-/// a non-digit.
+/// remain.
 #[inline(always)]
 fn digits_end(s: &[u8], mut i: usize) -> usize {
     while let Some(&chunk) = s.get(i..).and_then(|rest| rest.first_chunk::<8>()) {
-        let word = u64::from_le_bytes(chunk);
-        let not_digits = (word.wrapping_sub(0x3030_3030_3030_3030)
-            | word.wrapping_add(0x4646_4646_4646_4646))
-            & 0x8080_8080_8080_8080;
-        if not_digits != 0 {
-            return i + (not_digits.trailing_zeros() / 8) as usize;
+        let k = leading_digits(u64::from_le_bytes(chunk));
+        i += k as usize;
+        if k < 8 {
+            return i;
         }
-        i += 8;
     }
     while s.get(i).is_some_and(u8::is_ascii_digit) {
         i += 1;
