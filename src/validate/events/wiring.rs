@@ -4,7 +4,8 @@
 //! events and add routes), an EXPORT (an importing scene may route to it), and Script code
 //! that may look it up by its DEF name. The rules that say a node's events go nowhere, or
 //! that it never receives one, ask here, and stay silent wherever one of these may
-//! connect it.
+//! connect it. The rules of every component that judge a field's written value ask
+//! [`set_elsewhere`] whether a ROUTE or `IS` replaces it.
 
 use std::collections::{HashMap, HashSet};
 
@@ -166,4 +167,30 @@ fn script_text(ctx: &Ctx) -> ScriptText {
         .flat_map(|script| script.parsed.iter().map(|code| code.code().to_string()))
         .collect();
     ScriptText::Known(codes)
+}
+
+/// The fields of nodes that a ROUTE sends events to, by field name without `set_` or
+/// `_changed`: their values in the file are only the initial ones, which the scene replaces.
+pub(crate) fn routed_fields(doc: &Document) -> HashSet<(NodeId, String)> {
+    doc.routes
+        .iter()
+        .filter_map(|route| {
+            let node = route_node(doc, route.scope, &route.to_node.text)?;
+            let field = route.to_field.text.as_str();
+            let field = field.strip_prefix("set_").unwrap_or(field);
+            let field = field.strip_suffix("_changed").unwrap_or(field);
+            Some((node, field.to_string()))
+        })
+        .collect()
+}
+
+/// Whether the scene may change `field` of `id` after loading (a ROUTE to it) or takes it
+/// from a prototype instance (`IS`): the written value is then not what the node uses.
+pub(crate) fn set_elsewhere(
+    doc: &Document,
+    routed: &HashSet<(NodeId, String)>,
+    id: NodeId,
+    field: &str,
+) -> bool {
+    doc.node(id).is_connected(field) || routed.contains(&(id, field.to_string()))
 }

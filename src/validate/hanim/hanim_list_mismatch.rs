@@ -6,7 +6,7 @@ use std::collections::HashSet;
 use super::{describe, humanoids, Humanoid};
 use crate::model::{NodeId, NodeKind};
 use crate::report::Diagnostic;
-use crate::validate::interpolation::{routed_fields, set_elsewhere};
+use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -2,7 +2,7 @@
 //! per skinCoordIndex entry.
 
 use crate::report::Diagnostic;
-use crate::validate::interpolation::{routed_fields, set_elsewhere};
+use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::Ctx;
 
 crate::declare_rule! {

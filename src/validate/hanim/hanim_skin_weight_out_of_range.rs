@@ -2,7 +2,7 @@
 
 use super::name_suffix;
 use crate::report::Diagnostic;
-use crate::validate::interpolation::{routed_fields, set_elsewhere};
+use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::rendering::geometry::ScalarSpans;
 use crate::validate::Ctx;
 

@@ -13,7 +13,7 @@ pub mod names;
 
 use std::collections::HashSet;
 
-use super::interpolation::{routed_fields, set_elsewhere};
+use super::events::wiring::{routed_fields, set_elsewhere};
 use super::Check;
 use crate::model::{Document, NodeId, NodeKind};
 

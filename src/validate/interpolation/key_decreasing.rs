@@ -1,7 +1,7 @@
 //! KEY_DECREASING: an interpolator key smaller than the key before it.
 
-use super::{routed_fields, set_elsewhere};
 use crate::report::Diagnostic;
+use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,9 +1,9 @@
 //! KEY_VALUE_COUNT_MISMATCH: an interpolator whose keyValue (or keyVelocity) count does not
 //! match its key count.
 
-use super::{routed_fields, set_elsewhere};
 use crate::model::{NodeId, Span, Value};
 use crate::report::Diagnostic;
+use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -8,7 +8,7 @@ pub mod nurbs_weight_count_mismatch;
 
 use std::collections::HashSet;
 
-use super::interpolation::{routed_fields, set_elsewhere};
+use super::events::wiring::{routed_fields, set_elsewhere};
 use super::{Check, Ctx, Rule};
 use crate::model::{Document, NodeId, Span};
 use crate::report::Diagnostic;

@@ -1,7 +1,7 @@
 //! NURBS_DIMENSION_MISMATCH: a surface whose control points are not uDimension × vDimension.
 
 use super::{control_points, is_surface, nurbs_nodes, plural, report};
-use crate::validate::interpolation::routed_fields;
+use crate::validate::events::wiring::routed_fields;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -5,7 +5,7 @@ pub mod particle_texcoord_ramp_short;
 
 use std::collections::HashSet;
 
-use super::interpolation::{routed_fields, set_elsewhere};
+use super::events::wiring::{routed_fields, set_elsewhere};
 use super::Check;
 use crate::model::{Document, NodeId, Span};
 

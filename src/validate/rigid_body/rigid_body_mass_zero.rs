@@ -1,7 +1,7 @@
 //! RIGID_BODY_MASS_ZERO: a RigidBody whose mass is zero.
 
 use crate::report::Diagnostic;
-use crate::validate::interpolation::{routed_fields, set_elsewhere};
+use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -5,7 +5,7 @@ use std::collections::HashSet;
 
 use crate::model::{NodeId, NodeKind};
 use crate::report::Diagnostic;
-use crate::validate::interpolation::{routed_fields, set_elsewhere};
+use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::Ctx;
 
 crate::declare_rule! {

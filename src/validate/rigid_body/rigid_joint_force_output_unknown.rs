@@ -4,7 +4,7 @@
 use crate::model::Value;
 use crate::report::Diagnostic;
 use crate::schema::AccessType;
-use crate::validate::interpolation::{routed_fields, set_elsewhere};
+use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::{suggest, Ctx};
 
 crate::declare_rule! {

@@ -2,7 +2,7 @@
 //! (minFront above maxFront, or minBack above maxBack).
 
 use crate::report::Diagnostic;
-use crate::validate::interpolation::{routed_fields, set_elsewhere};
+use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::numbers::readable;
 use crate::validate::Ctx;
 
