@@ -167,7 +167,9 @@ fn report_of(
 ) -> FileReport {
     let file = (path != STDIN_NAME).then(|| Path::new(path));
     if let Some(doc) = doc {
-        diagnostics.extend(validate::check_with(doc, text, file, config, externs));
+        diagnostics.extend(validate::check_with(
+            doc, text, progress, file, config, externs,
+        ));
     }
 
     diagnostics.retain(|d| config.enabled(d.rule.code) && d.rule.level <= config.level);
