@@ -5,7 +5,7 @@
 //! every read stops one byte past the input limit, so that `/dev/zero` on stdin or a file
 //! growing while it is read never holds more than the limit.
 //!
-//! A file to check of [`MAP_BYTES`] or more is mapped instead ([`read_source`], [`mapped`]),
+//! A file to check of [`MAP_BYTES`] or more is mapped instead ([`read_source`], [`Mapped`]),
 //! so that the passes over its text can give back what they have read.
 
 mod mapped;

@@ -48,7 +48,7 @@ pub fn decode(source: &[u8]) -> Decoded<'_> {
 }
 
 /// [`decode`], telling `progress` how far the check that the text is UTF-8 has got (see
-/// [`behind`](super::behind)).
+/// [`behind`]).
 pub fn decode_with_progress<'a>(source: &'a [u8], progress: &dyn Progress) -> Decoded<'a> {
     decode_within(source, MAX_INPUT_BYTES, progress)
 }
