@@ -10,6 +10,7 @@ use crate::library::Library;
 use crate::model::{Document, Encoding};
 use crate::parse;
 pub use crate::parse::Parsed;
+use crate::parse::Progress;
 use crate::report::{resolve, FileReport, Stats};
 use crate::validate;
 use crate::validate::prototypes::externs::{self, Externs};
@@ -39,17 +40,34 @@ pub struct Checked<'a> {
 /// [`check_source`], also handing back the document it read, so that a caller such as the
 /// renderer need not parse it again, and the text it read.
 pub fn check_document<'a>(path: &str, source: &'a [u8], config: &CheckConfig) -> Checked<'a> {
-    check_decoded(path, parse::decode(source), config)
+    check_document_with_progress(path, source, config, &())
+}
+
+/// [`check_document`], telling `progress` how far each pass over the whole text has got
+/// (see [`parse::behind`]): a mapped file gives back what they have read.
+pub fn check_document_with_progress<'a>(
+    path: &str,
+    source: &'a [u8],
+    config: &CheckConfig,
+    progress: &dyn Progress,
+) -> Checked<'a> {
+    let decoded = parse::decode::decode_with_progress(source, progress);
+    check_decoded(path, decoded, config, progress)
 }
 
 /// The report of an input not read because it is larger than
 /// [`MAX_INPUT_BYTES`](crate::limits::MAX_INPUT_BYTES): LIMIT_EXCEEDED. For callers that
 /// stop reading at the limit, as the command line does, rather than hold more.
 pub fn check_too_large(path: &str, config: &CheckConfig) -> FileReport {
-    check_decoded(path, parse::decode::too_large_input(), config).report
+    check_decoded(path, parse::decode::too_large_input(), config, &()).report
 }
 
-fn check_decoded<'a>(path: &str, decoded: parse::Decoded<'a>, config: &CheckConfig) -> Checked<'a> {
+fn check_decoded<'a>(
+    path: &str,
+    decoded: parse::Decoded<'a>,
+    config: &CheckConfig,
+    progress: &dyn Progress,
+) -> Checked<'a> {
     let text = decoded.text;
     let parsed = match decoded.failure {
         Some(failure) => Parsed {
@@ -57,7 +75,7 @@ fn check_decoded<'a>(path: &str, decoded: parse::Decoded<'a>, config: &CheckConf
             document: None,
             diagnostics: vec![failure],
         },
-        None => parse::read_with(&text, config.keep_values()),
+        None => parse::read_with_progress(&text, config.keep_values(), progress),
     };
     let mut diagnostics = parsed.diagnostics;
     let file = (path != STDIN_NAME).then(|| Path::new(path));
@@ -88,6 +106,7 @@ fn check_decoded<'a>(path: &str, decoded: parse::Decoded<'a>, config: &CheckConf
         decoded.compressed,
         document.as_ref(),
         &text,
+        progress,
         config,
         externs_for_rules,
     );
@@ -121,6 +140,7 @@ pub fn check_library(path: &str, library: &Library, config: &CheckConfig) -> Fil
         library.compressed,
         library.document.as_ref(),
         &library.text,
+        &(),
         config,
         match &library.document {
             Some(doc) if config.level >= Level::Deep => {
@@ -132,7 +152,7 @@ pub fn check_library(path: &str, library: &Library, config: &CheckConfig) -> Fil
 }
 
 /// Runs the rules on a document read from `text`, after the findings of reading it, and
-/// resolves what is reported.
+/// resolves what is reported (telling `progress` how far the line index has got).
 #[allow(clippy::too_many_arguments)] // what reading gave, and what the rules need
 fn report_of(
     path: &str,
@@ -141,12 +161,15 @@ fn report_of(
     compressed: bool,
     doc: Option<&Document>,
     text: &[u8],
+    progress: &dyn Progress,
     config: &CheckConfig,
     externs: Externs,
 ) -> FileReport {
     let file = (path != STDIN_NAME).then(|| Path::new(path));
     if let Some(doc) = doc {
-        diagnostics.extend(validate::check_with(doc, text, file, config, externs));
+        diagnostics.extend(validate::check_with(
+            doc, text, progress, file, config, externs,
+        ));
     }
 
     diagnostics.retain(|d| config.enabled(d.rule.code) && d.rule.level <= config.level);
@@ -169,7 +192,7 @@ fn report_of(
         compressed,
         x3d_version: doc.and_then(|d| d.version_text.as_ref().map(|v| v.text.clone())),
         profile: doc.and_then(|d| d.profile.as_ref().map(|p| p.text.clone())),
-        diagnostics: resolve(&diagnostics, text, doc),
+        diagnostics: resolve(&diagnostics, text, progress, doc),
         truncated,
         suppressed,
         stats: doc.map(Stats::of).unwrap_or_default(),

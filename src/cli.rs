@@ -637,6 +637,14 @@ fn read_file(path: &Path) -> Result<Vec<u8>, String> {
     }
 }
 
+/// Bytes read into the heap, as a [`read::Source`].
+fn heap(contents: read::Contents) -> read::Contents<read::Source> {
+    match contents {
+        read::Contents::Bytes(bytes) => read::Contents::Bytes(read::Source::Heap(bytes)),
+        read::Contents::TooLarge => read::Contents::TooLarge,
+    }
+}
+
 /// A checked file with its rendered text, or why it could not be checked.
 type Outcome = Result<Checked, String>;
 
@@ -672,15 +680,17 @@ fn check_input(
         Input::Stdin => stdin_name.to_string(),
         Input::File { path, .. } => path.display().to_string(),
     };
+    // Under --fix the file is rewritten, so it is read, not mapped.
     let contents = match input {
-        Input::Stdin => read::read_stdin(MAX_INPUT_BYTES)?,
-        Input::File { path, .. } => read::read_path(path, MAX_INPUT_BYTES)?,
+        Input::File { path, .. } if fixing.is_none() => read::read_source(path, MAX_INPUT_BYTES)?,
+        Input::File { path, .. } => heap(read::read_path(path, MAX_INPUT_BYTES)?),
+        Input::Stdin => heap(read::read_stdin(MAX_INPUT_BYTES)?),
     };
     let bytes = match contents {
         read::Contents::Bytes(bytes) => bytes,
         read::Contents::TooLarge => {
             let report = crate::check::check_too_large(&name, config);
-            let text = render_text(&report, &[], shown);
+            let text = render_text(&report, &[], &(), shown);
             return Ok(Checked {
                 report,
                 text,
@@ -707,18 +717,19 @@ fn check_input(
         .map_err(|_| failure)?;
     }
     std::panic::catch_unwind(move || {
+        let progress = bytes.progress();
         let crate::check::Checked {
             mut report,
             document,
             text: source,
-        } = crate::check::check_document(&name, &bytes, &config);
+        } = crate::check::check_document_with_progress(&name, &bytes, &config, progress);
         let root = config.root.as_deref();
         // A file's source is freed before the scene is flattened, and read again only when
         // the renderer has notes to place; standard input cannot be read again.
         let (preview, text) = match input {
             Input::File { path, .. } if render.render.is_some() => {
-                let mut text = render_text(&report, &source, shown);
-                let checked = render_notes::Fingerprint::of(&source);
+                let mut text = render_text(&report, &source, progress, shown);
+                let checked = render_notes::Fingerprint::of(&source, progress);
                 drop(source);
                 drop(bytes);
                 let preview = crate::render::prepare_unresolved(
@@ -752,7 +763,7 @@ fn check_input(
                     document.as_ref(),
                     &mut report,
                 );
-                let text = render_text(&report, &source, shown);
+                let text = render_text(&report, &source, progress, shown);
                 drop(source);
                 drop(bytes);
                 (preview, text)
@@ -813,7 +824,7 @@ fn fix_input(
     let text = if fixing.diff {
         String::new()
     } else {
-        render_text(&fixed.report, &fixed.text, shown)
+        render_text(&fixed.report, &fixed.text, &(), shown)
     };
     Ok(Checked {
         report: fixed.report,
@@ -824,11 +835,16 @@ fn fix_input(
 }
 
 /// The text of one file's report in the formats written per file (`source`: the decoded
-/// text the report's positions are in).
-fn render_text(report: &FileReport, source: &[u8], shown: Presentation) -> String {
+/// text the report's positions are in; `progress`: told how far a pass over it has got).
+fn render_text(
+    report: &FileReport,
+    source: &[u8],
+    progress: &dyn crate::parse::Progress,
+    shown: Presentation,
+) -> String {
     match shown.format {
         Some(Format::Human) => {
-            human::render_marked(report, source, shown.color, shown.unsafe_fixes)
+            human::render_marked(report, source, progress, shown.color, shown.unsafe_fixes)
         }
         Some(Format::Concise) => concise::render_marked(report, shown.unsafe_fixes),
         Some(Format::Github) => github::render(report),

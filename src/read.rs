@@ -4,21 +4,97 @@
 //! file (so a file swapped for a FIFO or device after the walk listed it is caught too), and
 //! every read stops one byte past the input limit, so that `/dev/zero` on stdin or a file
 //! growing while it is read never holds more than the limit.
+//!
+//! A file to check of [`MAP_BYTES`] or more is mapped instead ([`read_source`], [`Mapped`]),
+//! so that the passes over its text can give back what they have read.
+
+mod mapped;
 
 use std::fs::{self, File};
 use std::io::{self, Read};
+use std::ops::Deref;
 use std::path::Path;
 
+pub use mapped::Mapped;
+
+use crate::parse::Progress;
+
 /// What reading an input gave.
-pub enum Contents {
-    Bytes(Vec<u8>),
+pub enum Contents<B = Vec<u8>> {
+    Bytes(B),
     /// More than the limit: not kept (reported as LIMIT_EXCEEDED).
     TooLarge,
+}
+
+/// Files to check this large or larger are mapped rather than read. Below it, reading is
+/// as fast and the copy small: the common case, an editor checking the file it saves.
+pub const MAP_BYTES: u64 = 8 << 20;
+
+/// The bytes of an input to check: read into the heap, or mapped.
+pub enum Source {
+    Heap(Vec<u8>),
+    Mapped(Mapped),
+}
+
+impl Source {
+    /// What to tell how far the passes over the text have got: a mapping gives back the
+    /// pages they have read (see [`crate::parse::behind`]).
+    pub fn progress(&self) -> &dyn Progress {
+        match self {
+            Source::Heap(_) => &(),
+            Source::Mapped(mapped) => mapped,
+        }
+    }
+}
+
+impl Deref for Source {
+    type Target = [u8];
+
+    fn deref(&self) -> &[u8] {
+        match self {
+            Source::Heap(bytes) => bytes,
+            Source::Mapped(mapped) => mapped,
+        }
+    }
+}
+
+/// Reads the regular file at `path` as [`read_path`] does, but maps it when it has
+/// [`MAP_BYTES`] or more.
+pub fn read_source(path: &Path, limit: usize) -> Result<Contents<Source>, String> {
+    let (file, len) = open_regular(path, limit)?;
+    let Some(len) = len else {
+        return Ok(Contents::TooLarge);
+    };
+    if len >= MAP_BYTES {
+        if let Some(mapped) = Mapped::of(&file).map_err(|e| cannot_read(path, e))? {
+            // The file may have grown since its length was read.
+            if mapped.len() > limit {
+                return Ok(Contents::TooLarge);
+            }
+            return Ok(Contents::Bytes(Source::Mapped(mapped)));
+        }
+    }
+    Ok(
+        match read_within(file, limit, len as usize).map_err(|e| cannot_read(path, e))? {
+            Contents::Bytes(bytes) => Contents::Bytes(Source::Heap(bytes)),
+            Contents::TooLarge => Contents::TooLarge,
+        },
+    )
 }
 
 /// Reads the regular file at `path`, or says why not (the kind of file it is, when it is
 /// not a regular one).
 pub fn read_path(path: &Path, limit: usize) -> Result<Contents, String> {
+    let (file, len) = open_regular(path, limit)?;
+    let Some(len) = len else {
+        return Ok(Contents::TooLarge);
+    };
+    read_within(file, limit, len as usize).map_err(|e| cannot_read(path, e))
+}
+
+/// The regular file at `path`, opened, and its length (None: more than `limit`), or why
+/// not (the kind of file it is, when it is not a regular one).
+fn open_regular(path: &Path, limit: usize) -> Result<(File, Option<u64>), String> {
     let file = open(path).map_err(|e| cannot_read(path, e))?;
     let meta = file.metadata().map_err(|e| cannot_read(path, e))?;
     if !meta.is_file() {
@@ -28,10 +104,8 @@ pub fn read_path(path: &Path, limit: usize) -> Result<Contents, String> {
             kind(&meta.file_type())
         ));
     }
-    if meta.len() > limit as u64 {
-        return Ok(Contents::TooLarge);
-    }
-    read_within(file, limit, meta.len() as usize).map_err(|e| cannot_read(path, e))
+    let len = meta.len();
+    Ok((file, (len <= limit as u64).then_some(len)))
 }
 
 /// Reads standard input, whatever it is (a pipe, a terminal, a device), within `limit`.

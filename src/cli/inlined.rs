@@ -95,6 +95,7 @@ pub fn check_inlined(batch: &Batch, resolver: &mut Resolver) -> Vec<Result<Inlin
                     let text = render_text(
                         &report,
                         &library.text,
+                        &(),
                         Presentation {
                             format: batch.format,
                             color: batch.color,

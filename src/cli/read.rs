@@ -4,7 +4,7 @@
 use std::fs;
 use std::sync::OnceLock;
 
-pub use crate::read::{open, read_path, read_stdin, Contents};
+pub use crate::read::{open, read_path, read_source, read_stdin, Contents, Source};
 
 static STDOUT_CLOSED: OnceLock<bool> = OnceLock::new();
 

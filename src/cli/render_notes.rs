@@ -6,6 +6,7 @@ use std::hash::{DefaultHasher, Hasher};
 use std::path::Path;
 
 use crate::model::Document;
+use crate::parse::behind::{Pass, Progress, STEP};
 use crate::render::{Preview, Unresolved};
 use crate::report::FileReport;
 
@@ -16,9 +17,15 @@ use super::{read_file, render_text, Presentation};
 pub struct Fingerprint(usize, u64);
 
 impl Fingerprint {
-    pub fn of(text: &[u8]) -> Fingerprint {
+    /// Hashed a [`STEP`] at a time, telling `progress` (a mapped file gives back what was
+    /// hashed).
+    pub fn of(text: &[u8], progress: &dyn Progress) -> Fingerprint {
         let mut hasher = DefaultHasher::new();
-        hasher.write(text);
+        let mut pass = Pass::new(text, progress);
+        for (k, step) in text.chunks(STEP).enumerate() {
+            hasher.write(step);
+            pass.reached(k * STEP + step.len());
+        }
         Fingerprint(text.len(), hasher.finish())
     }
 }
@@ -40,13 +47,13 @@ pub fn place(
     }
     let bytes = read_file(path)?;
     let source = crate::parse::decode(&bytes).text;
-    if Fingerprint::of(&source) != *checked {
+    if Fingerprint::of(&source, &()) != *checked {
         return Err(format!(
             "{} changed while it was being drawn; run again",
             path.display()
         ));
     }
     let preview = unresolved.resolve(&source, doc, report);
-    *text = render_text(report, &source, shown);
+    *text = render_text(report, &source, &(), shown);
     Ok(preview)
 }

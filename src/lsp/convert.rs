@@ -201,7 +201,7 @@ mod tests {
             finding("FIELD_UNKNOWN", Span::new(38, 43), Some(unsafe_fix)),
             finding("FIELD_UNKNOWN", Span::new(0, 9), None),
         ];
-        let report = resolve(&diagnostics, text.as_bytes(), None);
+        let report = resolve(&diagnostics, text.as_bytes(), &(), None);
         let uri: Uri = "file:///s.x3d".parse().unwrap();
         let lines = Lines::new(text.as_bytes(), Units::Utf16);
         let links = DocLinks::new(Some("https://example.org/{code}".into()));

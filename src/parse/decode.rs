@@ -17,6 +17,7 @@ use std::io::Read;
 use encoding_rs::{DecoderResult, Encoding as Charset, UTF_16BE, UTF_16LE, UTF_8};
 use flate2::read::MultiGzDecoder;
 
+use super::behind::{self, Progress};
 use super::rules::{GZIP_CORRUPT, XML_ENCODING_UNSUPPORTED, XML_MALFORMED};
 use crate::diagnostic::Diagnostic;
 use crate::limits::MAX_INPUT_BYTES;
@@ -43,12 +44,18 @@ pub struct Decoded<'a> {
 
 /// Decodes an input of at most [`MAX_INPUT_BYTES`], compressed or not.
 pub fn decode(source: &[u8]) -> Decoded<'_> {
-    decode_within(source, MAX_INPUT_BYTES)
+    decode_within(source, MAX_INPUT_BYTES, &())
 }
 
-/// [`decode`] with another size limit, on the input and on its decompressed and decoded
-/// text (tests use a small one).
-pub fn decode_within(source: &[u8], limit: usize) -> Decoded<'_> {
+/// [`decode`], telling `progress` how far the check that the text is UTF-8 has got (see
+/// [`behind`]).
+pub fn decode_with_progress<'a>(source: &'a [u8], progress: &dyn Progress) -> Decoded<'a> {
+    decode_within(source, MAX_INPUT_BYTES, progress)
+}
+
+/// [`decode_with_progress`] with another size limit, on the input and on its decompressed
+/// and decoded text (tests use a small one).
+pub fn decode_within<'a>(source: &'a [u8], limit: usize, progress: &dyn Progress) -> Decoded<'a> {
     let failed = |text, compressed, failure| Decoded {
         text,
         compressed,
@@ -66,7 +73,7 @@ pub fn decode_within(source: &[u8], limit: usize) -> Decoded<'_> {
     } else {
         Cow::Borrowed(source)
     };
-    match to_utf8(text, limit) {
+    match to_utf8(text, limit, progress) {
         Ok(text) => Decoded {
             text,
             compressed,
@@ -132,15 +139,19 @@ enum Plan {
 
 type Failed<'a> = (Cow<'a, [u8]>, Box<Diagnostic>);
 
-fn to_utf8(text: Cow<'_, [u8]>, limit: usize) -> Result<Cow<'_, [u8]>, Failed<'_>> {
+fn to_utf8<'a>(
+    text: Cow<'a, [u8]>,
+    limit: usize,
+    progress: &dyn Progress,
+) -> Result<Cow<'a, [u8]>, Failed<'a>> {
     match plan(&text) {
         Plan::Refuse(failure) => Err((text, Box::new(failure))),
         Plan::Utf8 { bom, check } => {
             let text = drop_prefix(text, bom);
-            match std::str::from_utf8(&text) {
-                Err(error) if check => {
-                    let at = error.valid_up_to();
-                    let failure = not_utf8(&text[at..at + error.error_len().unwrap_or(1)], at);
+            match check.then(|| behind::utf8(&text, progress)) {
+                Some(Err(error)) => {
+                    let at = error.valid_up_to;
+                    let failure = not_utf8(&text[at..at + error.error_len.unwrap_or(1)], at);
                     Err((text, Box::new(failure)))
                 }
                 _ => Ok(text),

@@ -9,6 +9,7 @@
 //!   the header line, to the whole file.
 //! - JSON: see [`place_json`].
 
+use super::behind::{self, Progress};
 use super::json::tree::{Kind, Tree};
 use crate::model::{Directive, Document, Span};
 
@@ -183,9 +184,9 @@ fn closes(source: &[u8], from: usize, to: usize) -> bool {
 ///   `{ "Type": { … } }` object);
 /// - one in the top-level object, the `X3D` object or anywhere in `head` applies to the
 ///   whole file.
-pub fn place_json(t: &Tree) -> Vec<Directive> {
+pub fn place_json(t: &Tree, progress: &dyn Progress) -> Vec<Directive> {
     let mut found = Vec::new();
-    if memchr::memmem::find(t.src.as_bytes(), MARK).is_none() {
+    if !behind::contains(t.src.as_bytes(), MARK, progress) {
         return found;
     }
     // The open objects, arrays and members around the item being looked at.

@@ -37,6 +37,7 @@ use std::borrow::Cow;
 
 use tree::{Elements, Kind, Members, Tree, ValueRef};
 
+use super::behind::{self, Pass, Progress};
 use super::rules::{FIELD_VALUE_SYNTAX, JSON_MALFORMED, ROOT_NOT_X3D, USE_WITH_FIELDS};
 use super::Parsed;
 use crate::diagnostic::Diagnostic;
@@ -49,11 +50,12 @@ use crate::schema::{AccessType, FieldType, NodeDef, Scalar, Version};
 
 /// Reads an X3D JSON document.
 pub fn read(source: &[u8]) -> Parsed {
-    read_with(source, KeepValues::All)
+    read_with(source, KeepValues::All, &())
 }
 
-/// Reads an X3D JSON document, keeping numeric MF values whole or as summaries.
-pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
+/// Reads an X3D JSON document, keeping numeric MF values whole or as summaries, telling
+/// `progress` how far each of its passes (UTF-8 check, scan, walk) has got.
+pub fn read_with(source: &[u8], keep: KeepValues, progress: &dyn Progress) -> Parsed {
     let failed = |diagnostic: Diagnostic| Parsed {
         encoding: Some(Encoding::Json),
         document: None,
@@ -62,11 +64,11 @@ pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
     if source.len() > MAX_INPUT_BYTES {
         return failed(malformed(0, 0, "the input is larger than 4 GiB"));
     }
-    let text = match std::str::from_utf8(source) {
+    let text = match behind::utf8(source, progress) {
         Ok(text) => text,
         Err(error) => {
-            let at = error.valid_up_to();
-            let len = error.error_len().unwrap_or(source.len() - at);
+            let at = error.valid_up_to;
+            let len = error.error_len.unwrap_or(source.len() - at);
             return failed(malformed(
                 at,
                 len,
@@ -74,7 +76,7 @@ pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
             ));
         }
     };
-    let tree = match tree::parse(text) {
+    let tree = match tree::parse_with_progress(text, progress) {
         Ok(tree) => tree,
         Err(error) => return failed(malformed(error.at, error.len, &error.message)),
     };
@@ -84,6 +86,7 @@ pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
     };
     let mut reader = JsonReader {
         t: &tree,
+        pass: Pass::new(source, progress),
         builder: Builder::new(Encoding::Json),
         stack: Vec::new(),
         keep,
@@ -91,7 +94,7 @@ pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
     reader.x3d(x3d);
     reader.run();
     let (mut document, diagnostics) = reader.builder.finish();
-    document.directives = super::directive::place_json(&tree);
+    document.directives = super::directive::place_json(&tree, progress);
     Parsed {
         encoding: Some(Encoding::Json),
         document: Some(document),
@@ -254,6 +257,7 @@ enum Frame<'t, 's> {
 
 struct JsonReader<'t, 's> {
     t: &'t Tree<'s>,
+    pass: Pass<'t>,
     builder: Builder,
     stack: Vec<Frame<'t, 's>>,
     /// Whether numeric MF values of schema fields are kept or summarized.
@@ -638,6 +642,7 @@ impl<'t, 's> JsonReader<'t, 's> {
                 Frame::Object(task, members) => match members.next() {
                     Some((key, value)) => {
                         let task = task.clone();
+                        self.pass.reached(self.t.items[key].start as usize);
                         self.member(task, key, value);
                     }
                     None => {
@@ -649,6 +654,7 @@ impl<'t, 's> JsonReader<'t, 's> {
                 Frame::Array(task, elements) => match elements.next() {
                     Some(element) => {
                         let task = task.clone();
+                        self.pass.reached(self.t.item(element).start as usize);
                         self.element(task, element);
                     }
                     None => {

@@ -20,6 +20,7 @@
 
 use std::borrow::Cow;
 
+use crate::parse::behind::{Pass, Progress};
 use crate::parse::number::leading_digits;
 
 /// Nesting deeper than this (arrays and objects) is refused.
@@ -403,9 +404,15 @@ static NUMBER_CLASS: [u8; 256] = {
 
 /// Reads `src` as one JSON text. A leading UTF-8 byte order mark is skipped.
 pub fn parse(src: &str) -> Result<Tree<'_>, Error> {
+    parse_with_progress(src, &())
+}
+
+/// [`parse`], telling `progress` how far the scanner has got.
+pub fn parse_with_progress<'s>(src: &'s str, progress: &dyn Progress) -> Result<Tree<'s>, Error> {
     let mut scanner = Scanner {
         s: src.as_bytes(),
         src,
+        pass: Pass::new(src.as_bytes(), progress),
         i: 0,
         // Grown as needed: how many items there are depends on how much of the text is
         // array scalars (a few hundred items in the benchmark scene's 85 MB, one per 32
@@ -426,6 +433,7 @@ pub fn parse(src: &str) -> Result<Tree<'_>, Error> {
 struct Scanner<'s> {
     s: &'s [u8],
     src: &'s str,
+    pass: Pass<'s>,
     i: usize,
     items: Vec<Item>,
     /// Open containers, innermost last.
@@ -437,6 +445,7 @@ impl<'s> Scanner<'s> {
         let mut state = State::Value;
         loop {
             self.skip_ws();
+            self.pass.reached(self.i);
             match state {
                 State::Value => {
                     let Some(&b) = self.s.get(self.i) else {

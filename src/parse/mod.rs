@@ -2,6 +2,7 @@
 //! from the content (not the file name) and read XML, JSON, ClassicVRML or VRML97 into the
 //! one scene model. The readers read the decoded UTF-8 text.
 
+pub mod behind;
 pub mod classic;
 pub mod decode;
 mod detect;
@@ -14,6 +15,7 @@ pub mod xml;
 mod xml_entities;
 pub mod xml_value;
 
+pub use behind::Progress;
 pub use decode::{decode, Decoded};
 pub use detect::{detect, Detected};
 
@@ -36,10 +38,15 @@ pub fn read(source: &[u8]) -> Parsed {
 
 /// Reads an input of any supported encoding, keeping numeric MF values as `keep` says.
 pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
+    read_with_progress(source, keep, &())
+}
+
+/// [`read_with`], telling `progress` how far the reader has got (see [`behind`]).
+pub fn read_with_progress(source: &[u8], keep: KeepValues, progress: &dyn Progress) -> Parsed {
     match detect(source) {
-        Detected::Xml => xml::read_with(source, keep),
-        Detected::Json => json::read_with(source, keep),
-        Detected::Classic => classic::read_with(source, keep),
+        Detected::Xml => xml::read_with(source, keep, progress),
+        Detected::Json => json::read_with(source, keep, progress),
+        Detected::Classic => classic::read_with(source, keep, progress),
         Detected::Unsupported(diagnostic) => Parsed {
             encoding: None,
             document: None,

@@ -8,6 +8,7 @@ use quick_xml::events::attributes::Attribute;
 use quick_xml::events::{BytesStart, Event};
 use quick_xml::Reader;
 
+use super::behind::{Pass, Progress, STEP};
 use super::directive::{addressed, Following};
 use super::rules::{FIELD_VALUE_SYNTAX, ROOT_NOT_X3D, USE_WITH_FIELDS, XML_MALFORMED};
 use super::xml_entities::{Entities, ExpandError};
@@ -21,13 +22,15 @@ use crate::schema::{AccessType, FieldDef, FieldType, Scalar};
 
 /// Reads an X3D XML document.
 pub fn read(source: &[u8]) -> Parsed {
-    read_with(source, KeepValues::All)
+    read_with(source, KeepValues::All, &())
 }
 
-/// Reads an X3D XML document, keeping numeric MF values whole or as summaries.
-pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
+/// Reads an X3D XML document, keeping numeric MF values whole or as summaries, telling
+/// `progress` how far it has got.
+pub fn read_with(source: &[u8], keep: KeepValues, progress: &dyn Progress) -> Parsed {
     let mut reader = XmlReader {
         source,
+        pass: Pass::new(source, progress),
         keep,
         builder: Builder::new(Encoding::Xml),
         stack: Vec::new(),
@@ -57,24 +60,48 @@ pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
     }
 }
 
-/// The offset of the first character that XML 1.0's Char production (2.2) leaves out: a
-/// C0 control other than tab, line feed and carriage return (NUL among them), or U+FFFE,
-/// U+FFFF. The input is UTF-8, whose encoding of surrogates quick-xml refuses, so these
-/// are the characters left to find. Chunks are tested with no early exit, so that the
-/// compiler vectorizes the scan of large files.
-fn first_forbidden_char(source: &[u8]) -> Option<usize> {
+/// The first character that XML 1.0's Char production (2.2) leaves out, looked for a
+/// [`STEP`] ahead of the reader rather than over the whole input first, so that the input
+/// is read once, in order (see [`behind`](super::behind)).
+struct ForbiddenChars {
+    /// How much of the input was looked at.
+    scanned: usize,
+    first: Option<usize>,
+}
+
+impl ForbiddenChars {
+    /// The offset of the first forbidden character before `end`.
+    #[inline]
+    fn before(&mut self, source: &[u8], end: usize) -> Option<usize> {
+        while self.first.is_none() && self.scanned < end.min(source.len()) {
+            let to = (self.scanned + STEP).max(end).min(source.len());
+            self.first = first_forbidden_char(source, self.scanned..to);
+            self.scanned = to;
+        }
+        self.first.filter(|&bad| bad < end)
+    }
+}
+
+/// The offset of the first character in `source[range]` that XML 1.0's Char production
+/// (2.2) leaves out: a C0 control other than tab, line feed and carriage return (NUL among
+/// them), or U+FFFE, U+FFFF. The input is UTF-8, whose encoding of surrogates quick-xml
+/// refuses, so these are the characters left to find. Chunks are tested with no early
+/// exit, so that the compiler vectorizes the scan of large files.
+fn first_forbidden_char(source: &[u8], range: std::ops::Range<usize>) -> Option<usize> {
     const CHUNK: usize = 64;
     let suspect = |b: u8| (b < 0x20 && !matches!(b, b'\t' | b'\n' | b'\r')) || b == 0xEF;
+    // A character starting in the range is judged whole, whatever follows the range.
     let forbidden_at = |at: usize| match source[at] {
         0xEF => matches!(source.get(at + 1..at + 3), Some([0xBF, 0xBE | 0xBF])),
         _ => true,
     };
-    source
+    let start = range.start;
+    source[range]
         .chunks(CHUNK)
         .enumerate()
         .filter(|(_, chunk)| chunk.iter().fold(false, |any, &b| any | suspect(b)))
         .flat_map(|(k, chunk)| {
-            let base = k * CHUNK;
+            let base = start + k * CHUNK;
             (0..chunk.len())
                 .filter(move |&i| suspect(chunk[i]))
                 .map(move |i| base + i)
@@ -139,6 +166,7 @@ enum DeclOwner {
 
 struct XmlReader<'s> {
     source: &'s [u8],
+    pass: Pass<'s>,
     /// Whether numeric MF values of schema fields are kept or summarized.
     keep: KeepValues,
     builder: Builder,
@@ -170,21 +198,25 @@ impl<'s> XmlReader<'s> {
         reader.config_mut().check_end_names = true;
         // quick-xml does not check XML's Char production: the first character outside it
         // is an error once the reader reaches it (an earlier error is reported first).
-        let forbidden = first_forbidden_char(self.source);
+        let mut forbidden = ForbiddenChars {
+            scanned: 0,
+            first: None,
+        };
         loop {
             let start = reader.buffer_position() as usize;
+            self.pass.reached(start);
             let event = match reader.read_event() {
                 Ok(event) => event,
                 Err(error) => {
                     let at = reader.error_position() as usize;
-                    return Err(match forbidden {
-                        Some(bad) if bad <= at => self.forbidden_char(bad),
-                        _ => self.malformed(at, &error.to_string()),
+                    return Err(match forbidden.before(self.source, at.saturating_add(1)) {
+                        Some(bad) => self.forbidden_char(bad),
+                        None => self.malformed(at, &error.to_string()),
                     });
                 }
             };
             let end = reader.buffer_position() as usize;
-            if let Some(bad) = forbidden.filter(|&bad| bad < end) {
+            if let Some(bad) = forbidden.before(self.source, end) {
                 return Err(self.forbidden_char(bad));
             }
             match event {

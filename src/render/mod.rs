@@ -178,7 +178,7 @@ impl Unresolved {
     pub fn resolve(self, source: &[u8], doc: &Document, report: &mut FileReport) -> Preview {
         report
             .diagnostics
-            .extend(resolve(&self.notes, source, Some(doc)));
+            .extend(resolve(&self.notes, source, &(), Some(doc)));
         self.preview
     }
 }

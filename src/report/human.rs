@@ -17,6 +17,7 @@ use miette::{
 use super::line_index::LineIndex;
 use super::{FileReport, Resolved, Summary};
 use crate::model::Span;
+use crate::parse::Progress;
 use crate::validate::Severity;
 
 /// Lines longer than this (in bytes) are shown as a window around the span.
@@ -28,13 +29,15 @@ const ELLIPSIS: &str = "…";
 
 /// Fixable findings marked (`[*]`) as a run without `--unsafe-fixes` applies them.
 pub fn render(report: &FileReport, source: &[u8], color: bool) -> String {
-    render_marked(report, source, color, false)
+    render_marked(report, source, &(), color, false)
 }
 
-/// [`render`]; `unsafe_fixes`: whether unsafe fixes count as fixable (`--unsafe-fixes`).
+/// [`render`]; `unsafe_fixes`: whether unsafe fixes count as fixable (`--unsafe-fixes`);
+/// `progress` is told how far the line index's pass over `source` has got.
 pub fn render_marked(
     report: &FileReport,
     source: &[u8],
+    progress: &dyn Progress,
     color: bool,
     unsafe_fixes: bool,
 ) -> String {
@@ -55,7 +58,7 @@ pub fn render_marked(
             .with_links(false),
         path: &report.path,
         source,
-        lines: LineIndex::new(source),
+        lines: LineIndex::new(source, progress),
         color,
         unsafe_fixes,
     };
@@ -461,7 +464,7 @@ mod tests {
             compressed: false,
             x3d_version: None,
             profile: None,
-            diagnostics: resolve(&[diagnostic], source.as_bytes(), None),
+            diagnostics: resolve(&[diagnostic], source.as_bytes(), &(), None),
             truncated: false,
             suppressed: 0,
             stats: Stats::default(),

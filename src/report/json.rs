@@ -397,7 +397,7 @@ mod tests {
             compressed: true,
             x3d_version: Some("4.0".to_string()),
             profile: None,
-            diagnostics: resolve(&diagnostics, source, None),
+            diagnostics: resolve(&diagnostics, source, &(), None),
             truncated: true,
             suppressed: 0,
             stats: Stats::default(),

@@ -1,8 +1,11 @@
 //! Byte offset → line and column, for the few positions that are reported. Built once per
 //! file (one memchr pass); offsets are looked up together, in ascending order, so that even
-//! a one-line 86 MB file is scanned once for its columns.
+//! a one-line 86 MB file is scanned once for its columns. Both passes go a
+//! [`STEP`] at a time, telling their progress (see [`crate::parse::behind`]).
 
 use memchr::memchr_iter;
+
+use crate::parse::behind::{Pass, Progress, STEP};
 
 /// A 1-based line and a 1-based column counted in Unicode scalar values.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
@@ -13,15 +16,26 @@ pub struct LineCol {
 
 pub struct LineIndex<'a> {
     source: &'a [u8],
+    progress: &'a dyn Progress,
     /// Byte offset where each line starts; the first is 0.
     starts: Vec<usize>,
 }
 
 impl<'a> LineIndex<'a> {
-    pub fn new(source: &'a [u8]) -> LineIndex<'a> {
+    /// The index of `source`, telling `progress` how far its passes over it have got.
+    pub fn new(source: &'a [u8], progress: &'a dyn Progress) -> LineIndex<'a> {
         let mut starts = vec![0];
-        starts.extend(memchr_iter(b'\n', source).map(|i| i + 1));
-        LineIndex { source, starts }
+        let mut pass = Pass::new(source, progress);
+        for (k, step) in source.chunks(STEP).enumerate() {
+            let base = k * STEP;
+            starts.extend(memchr_iter(b'\n', step).map(|i| base + i + 1));
+            pass.reached(base + step.len());
+        }
+        LineIndex {
+            source,
+            progress,
+            starts,
+        }
     }
 
     /// The positions of `offsets`, each clamped to the end of the input. A `\r` before `\n`
@@ -30,6 +44,8 @@ impl<'a> LineIndex<'a> {
     /// fall on it (an 86 MB single-line file with many findings stays linear).
     pub fn line_cols(&self, offsets: &[usize]) -> Vec<LineCol> {
         let mut previous: Option<(usize, LineCol)> = None;
+        // The stretches counted go forward only: from an offset, or the start of a later line.
+        let mut pass = Pass::new(self.source, self.progress);
         offsets
             .iter()
             .map(|&offset| {
@@ -45,10 +61,16 @@ impl<'a> LineIndex<'a> {
                     Some((from, at)) if at.line == line && from <= offset => (from, at.column),
                     _ => (self.starts[line - 1], 1),
                 };
-                let chars = self.source[from..offset]
-                    .iter()
-                    .filter(|&&b| !is_continuation(b))
-                    .count();
+                let (mut chars, mut at) = (0, from);
+                while at < offset {
+                    let end = offset.min(at + STEP);
+                    chars += self.source[at..end]
+                        .iter()
+                        .filter(|&&b| !is_continuation(b))
+                        .count();
+                    at = end;
+                    pass.reached(at);
+                }
                 let at = LineCol {
                     line,
                     column: column + chars,
@@ -92,7 +114,7 @@ mod tests {
     use super::*;
 
     fn at(source: &str, offset: usize) -> (usize, usize) {
-        let p = LineIndex::new(source.as_bytes()).line_cols(&[offset])[0];
+        let p = LineIndex::new(source.as_bytes(), &()).line_cols(&[offset])[0];
         (p.line, p.column)
     }
 
@@ -100,7 +122,7 @@ mod tests {
     fn empty_input() {
         assert_eq!(at("", 0), (1, 1));
         assert_eq!(at("", 10), (1, 1));
-        assert_eq!(LineIndex::new(b"").line_range(1), 0..0);
+        assert_eq!(LineIndex::new(b"", &()).line_range(1), 0..0);
     }
 
     #[test]
@@ -119,7 +141,7 @@ mod tests {
         assert_eq!(at(s, 2), (1, 3));
         assert_eq!(at(s, 4), (2, 1));
         assert_eq!(at(s, 5), (2, 2));
-        let index = LineIndex::new(s.as_bytes());
+        let index = LineIndex::new(s.as_bytes(), &());
         assert_eq!(index.line_range(1), 0..2);
         assert_eq!(index.line_range(2), 4..6);
     }
@@ -139,7 +161,7 @@ mod tests {
         let s = "aé\nbcd€e\nf";
         let offsets = [0, 1, 4, 5, 9, 10, 12, 99, 99];
         let one_by_one: Vec<_> = offsets.iter().map(|&o| at(s, o)).collect();
-        let together: Vec<_> = LineIndex::new(s.as_bytes())
+        let together: Vec<_> = LineIndex::new(s.as_bytes(), &())
             .line_cols(&offsets)
             .iter()
             .map(|p| (p.line, p.column))

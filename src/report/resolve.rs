@@ -7,6 +7,7 @@ use super::path::{NodePaths, ROOT};
 use super::Diagnostic;
 use crate::diagnostic::Applicability;
 use crate::model::{Document, NodeKind, Span};
+use crate::parse::Progress;
 use crate::schema::clauses;
 use crate::validate::Severity;
 
@@ -83,7 +84,14 @@ pub struct Related {
     pub span: Span,
 }
 
-pub fn resolve(diagnostics: &[Diagnostic], source: &[u8], doc: Option<&Document>) -> Vec<Resolved> {
+/// The diagnostics as reported; `progress` is told how far the passes over `source` for
+/// lines and columns have got.
+pub fn resolve(
+    diagnostics: &[Diagnostic],
+    source: &[u8],
+    progress: &dyn Progress,
+    doc: Option<&Document>,
+) -> Vec<Resolved> {
     if diagnostics.is_empty() {
         return Vec::new();
     }
@@ -105,7 +113,7 @@ pub fn resolve(diagnostics: &[Diagnostic], source: &[u8], doc: Option<&Document>
         .collect();
     offsets.sort_unstable();
     offsets.dedup();
-    let positions = LineIndex::new(source).line_cols(&offsets);
+    let positions = LineIndex::new(source, progress).line_cols(&offsets);
     let at = |offset: u32| positions[offsets.binary_search(&(offset as usize)).unwrap_or(0)];
     let paths = doc.map(NodePaths::new);
     diagnostics

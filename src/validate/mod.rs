@@ -57,6 +57,9 @@ impl Check {
 pub struct Ctx<'a> {
     pub doc: &'a Document,
     pub source: &'a [u8],
+    /// Told how far a rule that reads the whole of `source` has got (see
+    /// [`crate::parse::behind`]); the rules otherwise read it only at spans.
+    pub progress: &'a dyn crate::parse::Progress,
     /// The version whose rules apply (the document's, or the latest when it names none).
     pub version: Version,
     pub config: &'a CheckConfig,
@@ -260,14 +263,15 @@ pub fn check(
     } else {
         Default::default()
     };
-    check_with(doc, source, file, config, externs)
+    check_with(doc, source, &(), file, config, externs)
 }
 
 /// [`check`] with the document's ExternProtoDeclares already resolved (deep level; empty
-/// below it).
+/// below it), telling `progress` how far a rule that reads the whole source has got.
 pub fn check_with(
     doc: &Document,
     source: &[u8],
+    progress: &dyn crate::parse::Progress,
     file: Option<&std::path::Path>,
     config: &CheckConfig,
     externs: prototypes::externs::Externs,
@@ -286,6 +290,7 @@ pub fn check_with(
     let mut ctx = Ctx {
         doc,
         source,
+        progress,
         version: doc.schema_version(),
         config,
         file,

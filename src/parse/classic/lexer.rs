@@ -3,6 +3,7 @@
 //! and comments. Positions are byte offsets into the whole input.
 
 use crate::model::Span;
+use crate::parse::behind::{Pass, Progress};
 use crate::parse::directive::addressed;
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
@@ -64,6 +65,8 @@ pub struct Lexer<'s> {
     /// The comments addressed to x3dcheck, in document order: each comment's place and
     /// that of its text after `x3dcheck:`.
     pub directives: Vec<(Span, Span)>,
+    /// Told how far the tokens have got.
+    pass: Pass<'s>,
 }
 
 /// The separators outside strings: whitespace and the comma (19776-2 A.1.2).
@@ -95,7 +98,14 @@ impl<'s> Lexer<'s> {
             colon_in_names,
             unterminated_comment: None,
             directives: Vec::new(),
+            pass: Pass::new(text.as_bytes(), &()),
         }
+    }
+
+    /// The lexer, telling `progress` how far its tokens have got.
+    pub fn with_progress(mut self, progress: &'s dyn Progress) -> Self {
+        self.pass = Pass::new(self.bytes, progress);
+        self
     }
 
     /// Skips whitespace, commas and comments from `pos`.
@@ -199,6 +209,7 @@ impl<'s> Lexer<'s> {
     pub fn next(&mut self) -> Token<'s> {
         let token = self.peek();
         self.pos = token.end();
+        self.pass.reached(self.pos);
         token
     }
 

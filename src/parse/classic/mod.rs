@@ -17,6 +17,7 @@ use crate::diagnostic::Diagnostic;
 use crate::limits::{MAX_DEPTH, MAX_INPUT_BYTES};
 use crate::model::builder::{Limit, Parent};
 use crate::model::*;
+use crate::parse::behind::{self, Progress};
 use crate::parse::directive::place_following;
 use crate::parse::number::parse_f64;
 use crate::parse::rules::{FIELD_VALUE_SYNTAX, VRML_MALFORMED};
@@ -25,7 +26,7 @@ use crate::schema::{AccessType, FieldType, Scalar, Version};
 
 /// Reads a ClassicVRML or VRML97 document.
 pub fn read(source: &[u8]) -> Parsed {
-    read_with(source, KeepValues::All)
+    read_with(source, KeepValues::All, &())
 }
 
 /// Which language the header names.
@@ -36,8 +37,8 @@ enum Dialect {
 }
 
 /// Reads a ClassicVRML or VRML97 document, keeping numeric MF values whole or as
-/// summaries.
-pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
+/// summaries, telling `progress` how far its UTF-8 check and its tokens have got.
+pub fn read_with(source: &[u8], keep: KeepValues, progress: &dyn Progress) -> Parsed {
     let stop = |encoding, at: usize, message: String| Parsed {
         encoding: Some(encoding),
         document: None,
@@ -65,10 +66,10 @@ pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
     if source.len() > MAX_INPUT_BYTES {
         return stop(encoding, 0, "the input is larger than 4 GiB".into());
     }
-    let text = match std::str::from_utf8(source) {
+    let text = match behind::utf8(source, progress) {
         Ok(text) => text,
         Err(error) => {
-            let at = error.valid_up_to();
+            let at = error.valid_up_to;
             return stop(
                 encoding,
                 at,
@@ -77,7 +78,7 @@ pub fn read_with(source: &[u8], keep: KeepValues) -> Parsed {
         }
     };
     let mut reader = Reader {
-        lexer: Lexer::new(text, start, false, dialect == Dialect::Vrml97),
+        lexer: Lexer::new(text, start, false, dialect == Dialect::Vrml97).with_progress(progress),
         keep,
         dialect,
         builder: Builder::new(encoding),

@@ -11,6 +11,7 @@ use std::collections::{HashMap, HashSet};
 
 use super::endpoint::route_node;
 use crate::model::{Document, Encoding, NodeId, NodeKind, Scope, Value};
+use crate::parse::behind::{Pass, Progress};
 use crate::validate::Ctx;
 
 pub(crate) struct Wiring {
@@ -58,7 +59,7 @@ impl Wiring {
             .filter_map(|export| route_node(doc, export.scope, &export.local_def.text))
             .collect();
         if doc.encoding == Encoding::Vrml97 {
-            exported.extend(vrml97_exports(doc, ctx.source));
+            exported.extend(vrml97_exports(doc, ctx.source, ctx.progress));
         }
         Wiring {
             routed_from,
@@ -143,15 +144,27 @@ fn held_nodes(doc: &Document) -> HashSet<NodeId> {
 /// The nodes a VRML97 file names in EXPORT statements. VRML97 has none (the reader reports
 /// them as VRML_MALFORMED and drops them), but browsers that read X3D's statements in
 /// VRML97 files too (Castle Game Engine) export the node, so it may be routed from outside.
-fn vrml97_exports<'a>(doc: &'a Document, source: &'a [u8]) -> impl Iterator<Item = NodeId> + 'a {
-    source
-        .split(|byte| *byte == b'\n')
-        .filter_map(|line| {
-            let line = std::str::from_utf8(line).ok()?;
-            let mut words = line.split_whitespace();
-            (words.next() == Some("EXPORT")).then(|| words.next())?
-        })
-        .filter_map(|name| route_node(doc, Scope::Scene, name))
+fn vrml97_exports(doc: &Document, source: &[u8], progress: &dyn Progress) -> Vec<NodeId> {
+    let mut pass = Pass::new(source, progress);
+    let mut line_start = 0;
+    let mut exported = Vec::new();
+    for line in source.split(|byte| *byte == b'\n') {
+        // The lines before this one have been read.
+        pass.reached(line_start);
+        line_start += line.len() + 1;
+        let Ok(line) = std::str::from_utf8(line) else {
+            continue;
+        };
+        let mut words = line.split_whitespace();
+        if words.next() == Some("EXPORT") {
+            exported.extend(
+                words
+                    .next()
+                    .and_then(|name| route_node(doc, Scope::Scene, name)),
+            );
+        }
+    }
+    exported
 }
 
 fn script_text(ctx: &Ctx) -> ScriptText {
