@@ -88,7 +88,7 @@ pub async fn draw(
             let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some("globals"),
                 contents: bytemuck::bytes_of(&globals),
-                usage: wgpu::BufferUsages::UNIFORM,
+                usage: pipelines.parameters.usage(),
             });
             device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: None,
@@ -108,7 +108,7 @@ pub async fn draw(
         .enumerate()
         .flat_map(|(l, layer)| draw_order(&layer.meshes).into_iter().map(move |m| (l, m)))
         .collect();
-    let alignment = device.limits().min_uniform_buffer_offset_alignment as usize;
+    let alignment = pipelines.parameters.offset_alignment(&device.limits()) as usize;
     let stride = size_of::<GpuDraw>().div_ceil(alignment) * alignment;
     let mut draw_bytes = vec![0u8; stride * order.len().max(1)];
     for (slot, &(l, m)) in order.iter().enumerate() {
@@ -118,7 +118,7 @@ pub async fn draw(
     let draw_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
         label: Some("draws"),
         contents: &draw_bytes,
-        usage: wgpu::BufferUsages::UNIFORM,
+        usage: pipelines.parameters.usage(),
     });
     drop(draw_bytes);
     let draw_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
