@@ -18,8 +18,7 @@ fn main() -> std::process::ExitCode {
 /// given back and faulted in again at every pass (benchmark scene, fast: 540,000 page
 /// faults against 99,000, 2.0 s of system time against 0.4 s). A heap now keeps up to
 /// 16 MiB of free top, which the next pass reuses; 8 MiB is not enough (270,000 page
-/// faults). It costs about 1 MB of peak RSS when rendering (fast, 7 runs each), none
-/// when checking.
+/// faults). It costs about 1 MB of peak RSS when rendering (fast), none when checking.
 #[cfg(all(target_os = "linux", target_env = "gnu"))]
 fn return_freed_memory() {
     // SAFETY: mallopt only sets allocator parameters; called before any thread starts.

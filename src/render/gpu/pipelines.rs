@@ -80,10 +80,10 @@ impl PipelineKey {
 /// 22.3, Debian 12) specializes a shader on the uniform-buffer values its branches test
 /// each time a pipeline is bound, compiling the variant with LLVM and keeping it until
 /// the pipeline is destroyed, with no cache. A frame binds its pipelines again in every
-/// render pass, so uniform buffers cost a compilation per pass and about 0.6 MB that
-/// stays: 56 MB after the 88 passes of the benchmark scene at `fast`, 185 MB peak RSS
-/// against 170 MB with storage buffers (README, "Render memory"). It never specializes
-/// on storage buffers. OpenGL adapters may lack storage buffers in the vertex stage
+/// render pass, so uniform buffers cost a compilation per pass and 0.67 MB that stays:
+/// 56 MB more by the 85th pass of the benchmark scene at `fast`; peak RSS 190 MB against
+/// 176 MB with storage buffers (README, "Render memory"). It never specializes on
+/// storage buffers. OpenGL adapters may lack storage buffers in the vertex stage
 /// (`DownlevelFlags::VERTEX_STORAGE`) and keep uniform buffers; the bytes are the same.
 #[derive(Copy, Clone, PartialEq, Eq, Debug)]
 pub enum Parameters {
