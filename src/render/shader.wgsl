@@ -58,6 +58,7 @@ const ROLE_SPECULAR_OR_MR: u32 = 8u;
 const ROLE_SHININESS: u32 = 16u;
 const ROLE_AMBIENT: u32 = 32u;
 
+// Read-only storage buffers on most devices: `Parameters` in `gpu/pipelines.rs` says why.
 @group(0) @binding(0) var<uniform> globals: Globals;
 @group(1) @binding(0) var<uniform> draw: Draw;
 @group(2) @binding(0) var t_stage0: texture_2d<f32>;

@@ -88,7 +88,7 @@ pub async fn draw(
             let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some("globals"),
                 contents: bytemuck::bytes_of(&globals),
-                usage: wgpu::BufferUsages::UNIFORM,
+                usage: pipelines.parameters.usage(),
             });
             device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: None,
@@ -108,7 +108,7 @@ pub async fn draw(
         .enumerate()
         .flat_map(|(l, layer)| draw_order(&layer.meshes).into_iter().map(move |m| (l, m)))
         .collect();
-    let alignment = device.limits().min_uniform_buffer_offset_alignment as usize;
+    let alignment = pipelines.parameters.offset_alignment(&device.limits()) as usize;
     let stride = size_of::<GpuDraw>().div_ceil(alignment) * alignment;
     let mut draw_bytes = vec![0u8; stride * order.len().max(1)];
     for (slot, &(l, m)) in order.iter().enumerate() {
@@ -118,7 +118,7 @@ pub async fn draw(
     let draw_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
         label: Some("draws"),
         contents: &draw_bytes,
-        usage: wgpu::BufferUsages::UNIFORM,
+        usage: pipelines.parameters.usage(),
     });
     drop(draw_bytes);
     let draw_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
@@ -380,11 +380,12 @@ fn free_arrays(mesh: &mut Mesh) {
 /// one render pass by default. A software rasterizer keeps every binned triangle of a
 /// pass until the pass ends, several times the meshes' own size for millions of
 /// triangles; passes of this size, each finished before the next begins, bound that.
-/// Fewer is not better: lavapipe's memory also grows with the number of passes in a
-/// frame. Measured on the benchmark scene (800×600, peak RSS while drawing, one run
-/// each): passes of 196,608 indices: fast 198 MB, balanced 213 MB, accurate 294 MB;
-/// 65,536: 186, 190, 249 MB; 16,384: fast 319 MB. The image is the same.
-pub const PASS_INDICES: u32 = 1 << 16;
+/// Measured on the benchmark scene (800×600, peak RSS of the whole run, GNU time,
+/// thousand KiB): passes of 65,536 indices: fast 172, balanced 190, accurate 251 (largest
+/// of 3); 32,768: 164.6, 183.1, 238.5 (largest of 2). Smaller passes used to cost more,
+/// while the parameters were uniform buffers (see `pipelines::Parameters`): 16,384 then
+/// took fast to 319 MB. The image is the same.
+pub const PASS_INDICES: u32 = 1 << 15;
 
 /// A draw call: part of one mesh's indices (or stroke instances).
 struct Piece {

@@ -74,8 +74,67 @@ impl PipelineKey {
     }
 }
 
+/// Where the shader reads its per-frame and per-draw parameters (`globals`, `draw`).
+///
+/// Read-only storage buffers wherever the vertex stage can read them: lavapipe (Mesa
+/// 22.3, Debian 12) specializes a shader on the uniform-buffer values its branches test
+/// each time a pipeline is bound, compiling the variant with LLVM and keeping it until
+/// the pipeline is destroyed, with no cache. A frame binds its pipelines again in every
+/// render pass, so uniform buffers cost a compilation per pass and 0.67 MB that stays:
+/// 56 MB more by the 85th pass of the benchmark scene at `fast`; peak RSS 190 MB against
+/// 176 MB with storage buffers (README, "Render memory"). It never specializes on
+/// storage buffers. OpenGL adapters may lack storage buffers in the vertex stage
+/// (`DownlevelFlags::VERTEX_STORAGE`) and keep uniform buffers; the bytes are the same.
+#[derive(Copy, Clone, PartialEq, Eq, Debug)]
+pub enum Parameters {
+    Uniform,
+    Storage,
+}
+
+impl Parameters {
+    pub fn for_device(device: &wgpu::Device) -> Parameters {
+        match device.adapter_info().backend {
+            wgpu::Backend::Gl => Parameters::Uniform,
+            _ => Parameters::Storage,
+        }
+    }
+
+    pub fn usage(self) -> wgpu::BufferUsages {
+        match self {
+            Parameters::Uniform => wgpu::BufferUsages::UNIFORM,
+            Parameters::Storage => wgpu::BufferUsages::STORAGE,
+        }
+    }
+
+    /// The alignment of a dynamic offset into a parameter buffer.
+    pub fn offset_alignment(self, limits: &wgpu::Limits) -> u32 {
+        match self {
+            Parameters::Uniform => limits.min_uniform_buffer_offset_alignment,
+            Parameters::Storage => limits.min_storage_buffer_offset_alignment,
+        }
+    }
+
+    fn binding_type(self) -> wgpu::BufferBindingType {
+        match self {
+            Parameters::Uniform => wgpu::BufferBindingType::Uniform,
+            Parameters::Storage => wgpu::BufferBindingType::Storage { read_only: true },
+        }
+    }
+
+    /// The shader's source with its parameters declared in this address space
+    /// (`shader.wgsl` declares them as uniforms).
+    pub fn shader_source(self) -> std::borrow::Cow<'static, str> {
+        let source = super::super::SHADER_WGSL;
+        match self {
+            Parameters::Uniform => source.into(),
+            Parameters::Storage => source.replace("var<uniform>", "var<storage, read>").into(),
+        }
+    }
+}
+
 pub struct Pipelines<'d> {
     device: &'d wgpu::Device,
+    pub parameters: Parameters,
     shader: wgpu::ShaderModule,
     layout: wgpu::PipelineLayout,
     background_layout: wgpu::PipelineLayout,
@@ -89,15 +148,16 @@ pub struct Pipelines<'d> {
 
 impl<'d> Pipelines<'d> {
     pub fn new(device: &'d wgpu::Device, samples: u32, shading: Shading) -> Self {
+        let parameters = Parameters::for_device(device);
         let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("x3d lighting"),
-            source: wgpu::ShaderSource::Wgsl(super::super::SHADER_WGSL.into()),
+            source: wgpu::ShaderSource::Wgsl(parameters.shader_source()),
         });
-        let uniform_entry = |dynamic: bool, size: usize| wgpu::BindGroupLayoutEntry {
+        let parameter_entry = |dynamic: bool, size: usize| wgpu::BindGroupLayoutEntry {
             binding: 0,
             visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
             ty: wgpu::BindingType::Buffer {
-                ty: wgpu::BufferBindingType::Uniform,
+                ty: parameters.binding_type(),
                 has_dynamic_offset: dynamic,
                 min_binding_size: wgpu::BufferSize::new(size as u64),
             },
@@ -105,11 +165,11 @@ impl<'d> Pipelines<'d> {
         };
         let globals_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("globals"),
-            entries: &[uniform_entry(false, size_of::<Globals>())],
+            entries: &[parameter_entry(false, size_of::<Globals>())],
         });
         let draw_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("draw"),
-            entries: &[uniform_entry(true, size_of::<GpuDraw>())],
+            entries: &[parameter_entry(true, size_of::<GpuDraw>())],
         });
         let textures = (0..TEXTURE_SLOTS as u32).map(|binding| wgpu::BindGroupLayoutEntry {
             binding,
@@ -148,6 +208,7 @@ impl<'d> Pipelines<'d> {
         });
         Pipelines {
             device,
+            parameters,
             shader,
             layout,
             background_layout,
@@ -307,17 +368,29 @@ impl<'d> Pipelines<'d> {
 
 #[cfg(test)]
 mod tests {
-    /// The shader parses and validates (naga, as wgpu does), without a GPU.
+    use super::Parameters;
+
+    /// The shader parses and validates (naga, as wgpu does), without a GPU, with its
+    /// parameters in uniform buffers and in storage buffers.
     #[test]
     fn the_shader_is_valid_wgsl() {
-        let source = crate::render::SHADER_WGSL;
-        let module = naga::front::wgsl::parse_str(source)
-            .unwrap_or_else(|e| panic!("{}", e.emit_to_string(source)));
-        naga::valid::Validator::new(
-            naga::valid::ValidationFlags::all(),
-            naga::valid::Capabilities::empty(),
-        )
-        .validate(&module)
-        .unwrap_or_else(|e| panic!("{}", e.emit_to_string(source)));
+        for parameters in [Parameters::Uniform, Parameters::Storage] {
+            let source = parameters.shader_source();
+            let module = naga::front::wgsl::parse_str(&source)
+                .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&source)));
+            naga::valid::Validator::new(
+                naga::valid::ValidationFlags::all(),
+                naga::valid::Capabilities::empty(),
+            )
+            .validate(&module)
+            .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&source)));
+        }
+        let storage = Parameters::Storage.shader_source();
+        assert!(!storage.contains("var<uniform>"));
+        assert_eq!(
+            storage.matches("var<storage, read>").count(),
+            2,
+            "globals and draw"
+        );
     }
 }
