@@ -353,7 +353,7 @@ impl<'s> XmlReader<'s> {
             // number parsers take any XML whitespace as a separator, and string fields
             // get XML's whitespace normalization in `parse_attr_value`. This spares a copy
             // of every multi-line coordinate list.
-            let (value, verbatim) = if raw.contains('&') {
+            let (value, verbatim) = if memchr::memchr(b'&', raw.as_bytes()).is_some() {
                 let normalized = match self.entities.expand(&attribute) {
                     Ok(normalized) => normalized,
                     Err(ExpandError::Malformed { at, message }) => {
