@@ -1,7 +1,12 @@
 //! Number scanners shared by the readers.
 //!
-//! Floats are scanned byte by byte with the significant digits gathered into a `u64` as
-//! they go by. When the digits and the decimal exponent are small enough, the result is
+//! A token of up to eight bytes of digits and one `.` (or, for integers, up to eight
+//! digits) followed by a separator, the shape of nearly every coordinate, is read in one
+//! 64-bit word: where it ends and where its `.` is come from one mask of the bytes that
+//! are not digits, and its digits, moved side by side over the `.`, are converted in one
+//! multiply-and-shift sequence, with no branch per byte. Any other token is scanned byte
+//! by byte (its longer runs of digits eight at a time) with the significant digits
+//! gathered into a `u64` as they go by. Either way, when the digits and the decimal exponent are small enough, the result is
 //! one IEEE multiplication or division of two exactly representable operands, and hence
 //! correctly rounded (Clinger's fast path). Anything else goes to the standard library's
 //! parser, which is correctly rounded too. Single precision is converted directly from the
@@ -14,7 +19,10 @@
 //! benchmark scene's MF values (callgrind, a loop over every float token), this scanner
 //! took 183 instructions per float, fast-float2 0.2 191 and lexical-parse-float 1.0 223,
 //! with the same wall time for the first two. The standard library's slow path is itself
-//! fast_float's Eisel-Lemire algorithm, so a crate would not speed it up either.
+//! fast_float's Eisel-Lemire algorithm, so a crate would not speed it up either. The
+//! one-word path then took the XML reader's loop over the 0.25 benchmark scene's values
+//! (callgrind, `-j 1`, skipping separators and storing each number included) from 177 to
+//! 143 instructions per float and from 124 to 89 per integer.
 
 /// True for the bytes that separate values in the XML encoding: XML whitespace and the
 /// comma, which X3D treats as whitespace.
