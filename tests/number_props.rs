@@ -107,6 +107,43 @@ proptest! {
         prop_assert_eq!(doubles.iter().map(|v| v.to_bits()).collect::<Vec<_>>(), expected64);
     }
 
+    /// Tokens of the shape the scanners read in one word (up to eight bytes of digits and
+    /// a `.`, then a separator), and a little longer, inside a value: as parsed alone.
+    #[test]
+    fn short_tokens_in_text(
+        tokens in prop::collection::vec("[+-]?[0-9]{0,9}(\\.[0-9]{0,9})?", 0..40),
+        separators in prop::collection::vec("[ ,\t\r\n]{1,2}", 40),
+    ) {
+        let tokens: Vec<&String> = tokens.iter().filter(|t| t.bytes().any(|b| b.is_ascii_digit())).collect();
+        let mut text = String::new();
+        for (token, separator) in tokens.iter().zip(&separators) {
+            text.push_str(token);
+            text.push_str(separator);
+        }
+        let Ok(Value::Floats(floats)) = parse_value(FieldType::MFFloat, &text) else {
+            panic!("{text:?}")
+        };
+        let Ok(Value::Doubles(doubles)) = parse_value(FieldType::MFDouble, &text) else {
+            panic!("{text:?}")
+        };
+        let expected32: Vec<u32> = tokens.iter().map(|t| t.parse::<f32>().unwrap().to_bits()).collect();
+        let expected64: Vec<u64> = tokens.iter().map(|t| t.parse::<f64>().unwrap().to_bits()).collect();
+        prop_assert_eq!(floats.iter().map(|v| v.to_bits()).collect::<Vec<_>>(), expected32);
+        prop_assert_eq!(doubles.iter().map(|v| v.to_bits()).collect::<Vec<_>>(), expected64);
+        let integers: Vec<&&String> = tokens.iter().filter(|t| !t.contains('.')).collect();
+        let mut text = String::new();
+        for (token, separator) in integers.iter().zip(&separators) {
+            text.push_str(token);
+            text.push_str(separator);
+        }
+        let parsed = parse_value(FieldType::MFInt32, &text);
+        let expected: Option<Vec<i32>> = integers.iter().map(|t| t.parse::<i32>().ok()).collect();
+        match expected {
+            Some(expected) => prop_assert_eq!(parsed, Ok(Value::Int32s(expected))),
+            None => prop_assert!(parsed.is_err()),
+        }
+    }
+
     /// A value parsed in pieces (as long values are, on several threads) gives what the
     /// one-piece parse gives: the same numbers bit for bit, or the same first error, at the
     /// same place, or the same misplaced comma.

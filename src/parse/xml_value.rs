@@ -497,7 +497,9 @@ fn scan_floats<F: Float, S: Sink<F>>(
         match scan_float::<F>(s, i) {
             Ok((v, end)) => {
                 values.push(v);
-                i = end;
+                // The token ends at a separator or at the end: where commas need no
+                // judging, the next look can start after it.
+                i = end + !has_comma as usize;
             }
             Err(end) => return Err(float_error(ty, s, i, end)),
         }
@@ -599,7 +601,9 @@ fn scan_int32s<S: Sink<i32>>(
         match scan_i32(s, i) {
             Ok((v, end)) => {
                 values.push(v);
-                i = end;
+                // The token ends at a separator or at the end: where commas need no
+                // judging, the next look can start after it.
+                i = end + !has_comma as usize;
             }
             Err((error, _)) => return Err(int_error(ty, s, i, error)),
         }
