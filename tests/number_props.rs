@@ -19,6 +19,45 @@ fn check_f64(text: &str) {
     assert_eq!(ours, std, "{text:?}");
 }
 
+/// The tokens, each followed by its separator.
+fn joined(tokens: &[impl AsRef<str>], separators: &[String]) -> String {
+    let mut text = String::new();
+    for (token, separator) in tokens.iter().zip(separators) {
+        text.push_str(token.as_ref());
+        text.push_str(separator);
+    }
+    text
+}
+
+/// The tokens joined into an MFFloat and an MFDouble value parse to what each token
+/// parses to alone with the standard library, bit for bit.
+fn floats_as_alone(tokens: &[impl AsRef<str>], separators: &[String]) -> Result<(), TestCaseError> {
+    let text = joined(tokens, separators);
+    let Ok(Value::Floats(floats)) = parse_value(FieldType::MFFloat, &text) else {
+        panic!("{text:?}")
+    };
+    let Ok(Value::Doubles(doubles)) = parse_value(FieldType::MFDouble, &text) else {
+        panic!("{text:?}")
+    };
+    let alone32: Vec<u32> = tokens
+        .iter()
+        .map(|t| t.as_ref().parse::<f32>().unwrap().to_bits())
+        .collect();
+    let alone64: Vec<u64> = tokens
+        .iter()
+        .map(|t| t.as_ref().parse::<f64>().unwrap().to_bits())
+        .collect();
+    prop_assert_eq!(
+        floats.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+        alone32
+    );
+    prop_assert_eq!(
+        doubles.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+        alone64
+    );
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(256))]
 
@@ -90,21 +129,7 @@ proptest! {
         tokens in prop::collection::vec("[+-]?[0-9]{1,12}(\\.[0-9]{0,20})?([eE][+-]?[0-9]{1,2})?", 0..40),
         separators in prop::collection::vec("[ ,\t\r\n]{1,3}", 40),
     ) {
-        let mut text = String::new();
-        for (token, separator) in tokens.iter().zip(&separators) {
-            text.push_str(token);
-            text.push_str(separator);
-        }
-        let Ok(Value::Floats(floats)) = parse_value(FieldType::MFFloat, &text) else {
-            panic!("{text:?}")
-        };
-        let Ok(Value::Doubles(doubles)) = parse_value(FieldType::MFDouble, &text) else {
-            panic!("{text:?}")
-        };
-        let expected32: Vec<u32> = tokens.iter().map(|t| t.parse::<f32>().unwrap().to_bits()).collect();
-        let expected64: Vec<u64> = tokens.iter().map(|t| t.parse::<f64>().unwrap().to_bits()).collect();
-        prop_assert_eq!(floats.iter().map(|v| v.to_bits()).collect::<Vec<_>>(), expected32);
-        prop_assert_eq!(doubles.iter().map(|v| v.to_bits()).collect::<Vec<_>>(), expected64);
+        floats_as_alone(&tokens, &separators)?;
     }
 
     /// Tokens of the shape the scanners read in one word (up to eight bytes of digits and
@@ -115,27 +140,9 @@ proptest! {
         separators in prop::collection::vec("[ ,\t\r\n]{1,2}", 40),
     ) {
         let tokens: Vec<&String> = tokens.iter().filter(|t| t.bytes().any(|b| b.is_ascii_digit())).collect();
-        let mut text = String::new();
-        for (token, separator) in tokens.iter().zip(&separators) {
-            text.push_str(token);
-            text.push_str(separator);
-        }
-        let Ok(Value::Floats(floats)) = parse_value(FieldType::MFFloat, &text) else {
-            panic!("{text:?}")
-        };
-        let Ok(Value::Doubles(doubles)) = parse_value(FieldType::MFDouble, &text) else {
-            panic!("{text:?}")
-        };
-        let expected32: Vec<u32> = tokens.iter().map(|t| t.parse::<f32>().unwrap().to_bits()).collect();
-        let expected64: Vec<u64> = tokens.iter().map(|t| t.parse::<f64>().unwrap().to_bits()).collect();
-        prop_assert_eq!(floats.iter().map(|v| v.to_bits()).collect::<Vec<_>>(), expected32);
-        prop_assert_eq!(doubles.iter().map(|v| v.to_bits()).collect::<Vec<_>>(), expected64);
+        floats_as_alone(&tokens, &separators)?;
         let integers: Vec<&&String> = tokens.iter().filter(|t| !t.contains('.')).collect();
-        let mut text = String::new();
-        for (token, separator) in integers.iter().zip(&separators) {
-            text.push_str(token);
-            text.push_str(separator);
-        }
+        let text = joined(&integers, &separators);
         let parsed = parse_value(FieldType::MFInt32, &text);
         let expected: Option<Vec<i32>> = integers.iter().map(|t| t.parse::<i32>().ok()).collect();
         match expected {
