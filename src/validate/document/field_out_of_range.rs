@@ -74,9 +74,9 @@ fn check(ctx: &mut Ctx) {
             }
             let outside = match &entry.value {
                 Value::Summary(summary) => summary.out_of_range,
-                Value::Floats(v) => failures(v.iter().map(|&x| in_range_f32(x, def))),
-                Value::Doubles(v) => failures(v.iter().map(|&x| in_range_f64(x, def))),
-                Value::Int32s(v) => failures(v.iter().map(|&x| in_range_f64(f64::from(x), def))),
+                Value::Floats(v) => failures(v, |x| in_range_f32(x, def)),
+                Value::Doubles(v) => failures(v, |x| in_range_f64(x, def)),
+                Value::Int32s(v) => failures(v, |x| in_range_f64(f64::from(x), def)),
                 _ => continue,
             };
             if let Some((first, count)) = outside {

@@ -37,8 +37,8 @@ fn check(ctx: &mut Ctx) {
         for entry in &node.fields {
             let failures = match &entry.value {
                 Value::Summary(summary) => summary.nonfinite,
-                Value::Floats(v) => failures(v.iter().map(|x| x.is_finite())),
-                Value::Doubles(v) => failures(v.iter().map(|x| x.is_finite())),
+                Value::Floats(v) => failures(v, f32::is_finite),
+                Value::Doubles(v) => failures(v, f64::is_finite),
                 _ => continue,
             };
             let Some((first, count)) = failures else {
