@@ -7,6 +7,7 @@ pub mod classic;
 pub mod decode;
 mod detect;
 mod directive;
+pub mod huge_vec;
 pub mod json;
 pub mod number;
 pub mod rules;

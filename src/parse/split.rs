@@ -62,7 +62,7 @@ pub fn scan_pieces<T, S, E>(
     scan: impl Fn(Range<usize>, &mut Vec<T>) -> Result<(), E> + Sync,
 ) -> Result<Vec<(Range<usize>, usize)>, E>
 where
-    T: Copy + Send,
+    T: Copy + Send + 'static,
     S: Sink<T> + Send,
     E: Send,
 {
@@ -75,8 +75,7 @@ where
         || {
             rest.par_iter()
                 .map(|range| {
-                    // At least two bytes per number: a guess that rarely grows.
-                    let mut own = Vec::with_capacity(range.len() / 4 + 1);
+                    let mut own = scratch::take::<T>(range.len());
                     scan(range.clone(), &mut own).map(|()| own)
                 })
                 .collect::<Vec<_>>()
@@ -87,10 +86,69 @@ where
     counted.push((first.clone(), 0));
     for (range, numbers) in rest.iter().zip(tail) {
         counted.push((range.clone(), values.count()));
-        values.extend_from(&numbers?);
+        let numbers = numbers?;
+        values.extend_from(&numbers);
+        scratch::give_back(numbers);
     }
     Ok(counted)
 }
+
+/// The vectors the pieces after the first are parsed into, kept from one long value to
+/// the next. Each would otherwise be a new allocation of its own pages (glibc maps blocks
+/// this large afresh, see `main.rs`), and every page of it a fault: 10,000 of the 26,000
+/// page faults of the benchmark scene at the standard level, most of its system time.
+mod scratch {
+    use std::any::Any;
+    use std::sync::Mutex;
+
+    /// Enough for the pieces of one value on a machine of eight threads: about two
+    /// pieces per thread, the first not among them.
+    const KEEP: usize = 16;
+    /// Vectors larger than this are dropped, not kept: the pool holds at most `KEEP` of
+    /// these, what pieces of half a megabyte to a few megabytes of text need.
+    const KEEP_BYTES: usize = 4 << 20;
+
+    static POOL: Mutex<Vec<Box<dyn Any + Send>>> = Mutex::new(Vec::new());
+
+    /// An empty vector for the numbers of a piece of `text_len` bytes.
+    pub fn take<T: Send + 'static>(text_len: usize) -> Vec<T> {
+        // Four bytes a number: a guess that rarely grows.
+        let capacity = text_len / 4 + 1;
+        let kept = POOL.lock().ok().and_then(|mut pool| {
+            let at = pool.iter().position(|v| v.is::<Vec<T>>())?;
+            Some(pool.swap_remove(at))
+        });
+        match kept.and_then(|v| v.downcast::<Vec<T>>().ok()) {
+            Some(mut v) => {
+                v.reserve(capacity);
+                *v
+            }
+            None => super::super::huge_vec::with_capacity(capacity),
+        }
+    }
+
+    /// Keeps `v`'s memory for a later piece.
+    pub fn give_back<T: Send + 'static>(mut v: Vec<T>) {
+        if v.capacity() * size_of::<T>() > KEEP_BYTES {
+            return;
+        }
+        v.clear();
+        if let Ok(mut pool) = POOL.lock() {
+            if pool.len() < KEEP {
+                pool.push(Box::new(v));
+            }
+        }
+    }
+
+    /// Frees what the pool keeps: once the values are read, before memory matters more.
+    pub fn release() {
+        if let Ok(mut pool) = POOL.lock() {
+            *pool = Vec::new();
+        }
+    }
+}
+
+pub use scratch::release as release_scratch;
 
 #[cfg(test)]
 mod tests {

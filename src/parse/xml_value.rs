@@ -15,7 +15,7 @@ use std::ops::Range;
 use rayon::prelude::*;
 
 use super::number::{is_separator, scan_float, scan_i32, scan_pixel, token_end, Float, IntError};
-use super::split;
+use super::{huge_vec, split};
 use crate::model::{Image, Node, Sink, Summarized, Summarizer, Value};
 use crate::schema::{FieldDef, FieldType, Scalar};
 
@@ -316,7 +316,7 @@ fn parse_numbers<T: Numeric>(
     split: Split,
 ) -> Result<Scanned<T>, SyntaxError> {
     let mut values: Vec<T> = if ty.is_mf() {
-        Vec::with_capacity(estimate(s))
+        huge_vec::with_capacity(estimate(s))
     } else {
         Vec::with_capacity(ty.arity())
     };
@@ -326,7 +326,7 @@ fn parse_numbers<T: Numeric>(
 }
 
 /// A numeric scalar type with its one-piece scanner.
-trait Numeric: Copy + Send {
+trait Numeric: Copy + Send + 'static {
     /// The numbers of `s` into `values`; the offset of the first misplaced comma.
     fn scan<S: Sink<Self>>(
         ty: FieldType,
