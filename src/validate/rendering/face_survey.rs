@@ -8,8 +8,8 @@ use std::ops::Range;
 
 use super::degenerate_triangle::DEGENERATE_TRIANGLE;
 use super::geometry::{
-    attribute_lists, corner_point, dot, finite, is_degenerate, judge_polygonal, scaled, unit,
-    Checked, FaceShape, Points, PropertyList, Scalars,
+    attribute_lists, corner_point, cross, dot, finite, is_degenerate, judge_polygonal, scaled, sub,
+    unit, Checked, FaceShape, Points, PropertyList, Scalars, DEGENERATE_SINE,
 };
 use super::normals_contradict_ccw::NORMALS_CONTRADICT_CCW;
 use crate::config::CheckConfig;
@@ -116,6 +116,12 @@ fn walk_faces(
     let binding = geometry.faces.binding(Attribute::Normal);
     let bound = |face: &Face, position| geometry.faces.bound_index(binding, face, position);
     match (geometry.faces.indices(), points) {
+        (Some(indices), Points::List(Scalars::Single(values)))
+            if geometry.faces.kind == PolygonKind::IndexedTriangleSet
+                && (normals.is_none() || binding == (Binding::PerVertex { index: None })) =>
+        {
+            walk_triangles(geometry, indices, values, degenerate, normals)
+        }
         (Some(indices), Points::List(Scalars::Single(values))) => {
             let values = Scalars::Single(values);
             let coord_index = |position| usize::try_from(*indices.get(position)?).ok();
@@ -181,6 +187,132 @@ fn walk_faces_with(
     }
 }
 
+/// [`walk_faces_with`] for the most common mesh, an IndexedTriangleSet over
+/// single-precision coordinates with any normals per vertex by the coordinate index: face
+/// `k` is `indices[3k..3k + 3]`, read straight from the list rather than through
+/// [`Face`]s and the general corner look-ups, with the same findings.
+///
+/// Coordinates read as f32 are exact in f64, and so are their differences: a nonzero
+/// difference lies within [`UNSCALED`](super::geometry::UNSCALED) (f32 steps are at least 2^-149, and no difference
+/// reaches 2^129), so [`FaceShape`]'s degeneracy test is the plain one below; for a zero
+/// edge both give "degenerate". Nothing here overflows or underflows: squared lengths and
+/// cross products stay between 2^-700 and 2^600. The normal's length and the division by
+/// it only decide the sign of the dot product, so a face whose unnormalized dot product is
+/// far from zero (against its rounding error) is counted by that sign, and only the rest
+/// take [`FaceShape::normal`]'s exact path.
+fn walk_triangles(
+    geometry: &Checked,
+    indices: &[i32],
+    values: &[f32],
+    degenerate: Option<&mut DegenerateCount>,
+    normals: Option<(PropertyList, &mut NormalsCount)>,
+) {
+    let (points, _) = values.as_chunks::<3>();
+    let (count, units) = match normals {
+        Some((list, count)) => (
+            Some(count),
+            Some(UnitNormals::of(
+                &list,
+                Binding::PerVertex { index: None },
+                geometry.faces.stream_len(),
+            )),
+        ),
+        None => (None, None),
+    };
+    let normals = count.zip(units.as_ref());
+    let ccw = geometry.faces.ccw;
+    // One pass that vectorizes spares the corners their finiteness tests when, as usual,
+    // every coordinate is finite.
+    if values.iter().fold(true, |all, v| all & v.is_finite()) {
+        triangles::<true>(points, indices, ccw, degenerate, normals)
+    } else {
+        triangles::<false>(points, indices, ccw, degenerate, normals)
+    }
+}
+
+/// [`walk_triangles`]'s loop; `FINITE`: every point is known to be finite.
+fn triangles<const FINITE: bool>(
+    points: &[[f32; 3]],
+    indices: &[i32],
+    ccw: bool,
+    mut degenerate: Option<&mut DegenerateCount>,
+    mut normals: Option<(&mut NormalsCount, &UnitNormals)>,
+) {
+    let point = |index: usize| {
+        let p = points.get(index)?.map(f64::from);
+        if FINITE {
+            Some(p)
+        } else {
+            finite(p)
+        }
+    };
+    for (number, corners) in indices.chunks_exact(3).enumerate() {
+        let vertex = |k: usize| usize::try_from(corners[k]).ok();
+        let resolve = || Some((point(vertex(0)?)?, point(vertex(1)?)?, point(vertex(2)?)?));
+        let Some((a, b, c)) = resolve() else {
+            continue;
+        };
+        let (e1, e2) = (sub(b, a), sub(c, a));
+        let n = cross(e1, e2);
+        let squared = dot(n, n);
+        let bound = DEGENERATE_SINE * DEGENERATE_SINE * dot(e1, e1) * dot(e2, e2);
+        let zero = squared <= bound;
+        if let Some(count) = degenerate.as_deref_mut() {
+            count.add(number, 3 * number, zero);
+        }
+        let (Some((count, units)), false) = (normals.as_mut(), zero) else {
+            continue;
+        };
+        // The corners resolved, so their indices are not negative.
+        let mut supplied = [0.0; 3];
+        let mut resolved = true;
+        for k in 0..3 {
+            let Some(u) = vertex(k).and_then(|i| units.get(i)) else {
+                resolved = false;
+                break;
+            };
+            for (s, c) in supplied.iter_mut().zip(u) {
+                *s += c;
+            }
+        }
+        // Unit vectors are finite, and so is a sum of three: `scaled` refuses it exactly
+        // when it is zero.
+        if !resolved || supplied == [0.0; 3] {
+            continue;
+        }
+        let d = dot(n, supplied);
+        let magnitude: f64 = n.iter().zip(supplied).map(|(x, y)| (x * y).abs()).sum();
+        let sure = squared > bound * (1.0 + SURE)
+            && d.abs() > SURE * magnitude
+            && magnitude > SURE_MAGNITUDE;
+        let d = if sure {
+            d
+        } else {
+            let normal = resolve().and_then(|(a, b, c)| FaceShape::triangle(a, b, c).normal());
+            match normal {
+                Some(geometric) => dot(geometric, supplied),
+                None => continue,
+            }
+        };
+        let d = if ccw { d } else { -d };
+        if d > 0.0 {
+            count.agree += 1;
+        } else if d < 0.0 {
+            count.contradict += 1;
+        }
+    }
+}
+
+/// The relative margin past which [`walk_triangles`] trusts its shortcuts: a face not
+/// degenerate by more than this has a normal ([`FaceShape::normal`]'s length test errs
+/// by a few units of 2^-53), and an unnormalized dot product larger than this part of the
+/// sum of its terms' magnitudes has the normalized one's sign (each errs by less than
+/// 2^-49 of that sum).
+const SURE: f64 = 1.0 / (1u64 << 40) as f64;
+
+/// Below this sum of magnitudes, underflow could blur the sign: take the exact path.
+const SURE_MAGNITUDE: f64 = 1e-200;
+
 /// The face's supplied normal direction (not normalized: only the sign of its dot product
 /// with the geometric normal is used): its per-face normal, or the sum of its corners'
 /// unit normals; None where an index or a normal is missing or zero, or the sum is zero.
@@ -219,11 +351,23 @@ impl<'a> UnitNormals<'a> {
         if !matches!(binding, Binding::PerVertex { .. }) || list.len > stream_len {
             return UnitNormals::OnDemand(list.values);
         }
-        UnitNormals::Computed(
-            (0..list.len)
-                .map(|i| list.values.vec3(i).and_then(unit))
+        UnitNormals::Computed(match list.values {
+            // A list's length is its whole vectors: the chunks are its vectors.
+            // A nonzero finite f32 vector needs no scaling: `unit` is the division below.
+            Scalars::Single(values) => values
+                .chunks_exact(3)
+                .map(|c| {
+                    let v = [c[0], c[1], c[2]].map(f64::from);
+                    let squared = dot(v, v);
+                    let finite = c.iter().all(|x| x.is_finite());
+                    (finite && squared > 0.0).then(|| v.map(|x| x / squared.sqrt()))
+                })
                 .collect(),
-        )
+            Scalars::Double(values) => values
+                .chunks_exact(3)
+                .map(|c| unit([c[0], c[1], c[2]]))
+                .collect(),
+        })
     }
 
     /// The unit vector of normal `i`; None past the end and for zero or non-finite ones.

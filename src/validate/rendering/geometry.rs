@@ -429,7 +429,9 @@ pub fn each_normal(ctx: &mut Ctx, rule: &'static Rule, judge: impl Fn(f64) -> Op
             if !v.iter().all(|c| c.is_finite()) {
                 continue;
             }
-            let Some(what) = judge(length([v[0].into(), v[1].into(), v[2].into()])) else {
+            // `length` of a finite f32 vector: no square of one over- or underflows.
+            let v = [v[0], v[1], v[2]].map(f64::from);
+            let Some(what) = judge(dot(v, v).sqrt()) else {
                 continue;
             };
             ctx.report_repeated(rule, id, "vector", k, || {
@@ -600,6 +602,25 @@ impl FaceShape {
             degenerate: Some(degenerate),
             sum,
             scale,
+        }
+    }
+
+    /// [`FaceShape::with`] for a triangle whose corners are resolved to finite points
+    /// (its fan is the one triangle), for callers that walk triangles directly.
+    #[inline(always)]
+    pub fn triangle(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> FaceShape {
+        let Some(fan) = FanTriangle::of(a, b, c) else {
+            return FaceShape {
+                degenerate: None,
+                sum: [0.0; 3],
+                scale: 0.0,
+            };
+        };
+        // The sums `with` starts from zero, kept so that the result is the same to the bit.
+        FaceShape {
+            degenerate: Some(fan.degenerate),
+            sum: fan.cross.map(|x| 0.0 + x),
+            scale: 0.0 + fan.edge_lengths,
         }
     }
 
