@@ -93,6 +93,8 @@ pub fn read_with(source: &[u8], keep: KeepValues, progress: &dyn Progress) -> Pa
     };
     reader.x3d(x3d);
     reader.run();
+    // As in the XML reader: the pieces' vectors are kept for this document only.
+    super::split::scratch::release();
     let (mut document, diagnostics) = reader.builder.finish();
     document.directives = super::directive::place_json(&tree, progress);
     Parsed {

@@ -17,7 +17,7 @@ use rayon::prelude::*;
 use super::tree::{Kind, ScanNumber, Tree, ValueRef, NOT_INTEGER};
 use crate::model::{Image, Node, Sink, Summarized, Summarizer, Value};
 use crate::parse::number::{is_separator, parse_f32, parse_f64, scan_float, scan_i32};
-use crate::parse::split;
+use crate::parse::{huge_vec, split};
 use crate::schema::{FieldDef, FieldType, Scalar};
 
 /// A value that does not fit its field's type. `span` is a byte range in the input: the
@@ -70,7 +70,7 @@ pub fn convert_summary(
     }
 }
 
-fn summarize<T: Summarized + Send>(
+fn summarize<T: Summarized + Send + 'static>(
     tree: &Tree,
     i: usize,
     node: &Node,
@@ -437,7 +437,7 @@ fn scalar<T>(tree: &Tree, e: ValueRef, read: Scalarize<T>) -> Option<Result<T, S
     (item.kind == Kind::Number).then(|| read(tree.raw_bytes(e), item.flags & NOT_INTEGER == 0))
 }
 
-fn numbers<T: Copy + Send>(
+fn numbers<T: Copy + Send + 'static>(
     tree: &Tree,
     i: usize,
     ty: FieldType,
@@ -455,7 +455,7 @@ fn numbers<T: Copy + Send>(
     } else {
         0
     };
-    let mut values = Vec::with_capacity(capacity);
+    let mut values = huge_vec::with_capacity(capacity);
     numbers_into(tree, i, ty, number, &mut values)?;
     Ok(values)
 }
@@ -479,7 +479,7 @@ fn bad_number(
 }
 
 /// The numbers of the array at item `i` into `values`, its count checked.
-fn numbers_into<T: Copy + Send, S: Sink<T>>(
+fn numbers_into<T: Copy + Send + 'static, S: Sink<T>>(
     tree: &Tree,
     i: usize,
     ty: FieldType,
@@ -490,8 +490,9 @@ fn numbers_into<T: Copy + Send, S: Sink<T>>(
         return Err(wrong_kind(tree, i, ty));
     }
     if let Some(pieces) = numbers_in_pieces(tree, i, number.scan) {
-        for numbers in &pieces {
-            values.extend_from(numbers);
+        for numbers in pieces {
+            values.extend_from(&numbers);
+            split::scratch::give_back(numbers);
         }
         return check_count(tree, i, ty, values.count());
     }
@@ -519,7 +520,7 @@ fn numbers_into<T: Copy + Send, S: Sink<T>>(
 /// the array and reports what is wrong), so the numbers are always those it would read.
 ///
 /// [`Elements::next_number`]: super::tree::Elements::next_number
-fn numbers_in_pieces<T: Copy + Send>(
+fn numbers_in_pieces<T: Copy + Send + 'static>(
     tree: &Tree,
     array: usize,
     scan: ScanNumber<T>,
@@ -538,9 +539,13 @@ fn numbers_in_pieces<T: Copy + Send>(
 /// at the first element that it would not read.
 ///
 /// [`Elements::next_number`]: super::tree::Elements::next_number
-fn numbers_of_piece<T>(text: &[u8], range: Range<usize>, scan: ScanNumber<T>) -> Option<Vec<T>> {
+fn numbers_of_piece<T: Send + 'static>(
+    text: &[u8],
+    range: Range<usize>,
+    scan: ScanNumber<T>,
+) -> Option<Vec<T>> {
     let text = &text[..range.end];
-    let mut numbers = Vec::with_capacity(range.len() / 4 + 1);
+    let mut numbers = split::scratch::take(range.len());
     let mut at = range.start;
     loop {
         while at < text.len() && is_separator(text[at]) {

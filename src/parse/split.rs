@@ -97,7 +97,7 @@ where
 /// the next. Each would otherwise be a new allocation of its own pages (glibc maps blocks
 /// this large afresh, see `main.rs`), and every page of it a fault: 10,000 of the 26,000
 /// page faults of the benchmark scene at the standard level, most of its system time.
-mod scratch {
+pub mod scratch {
     use std::any::Any;
     use std::sync::Mutex;
 
@@ -147,8 +147,6 @@ mod scratch {
         }
     }
 }
-
-pub use scratch::release as release_scratch;
 
 #[cfg(test)]
 mod tests {

@@ -42,7 +42,7 @@ pub fn read_with(source: &[u8], keep: KeepValues, progress: &dyn Progress) -> Pa
     let result = reader.run();
     // The pieces' vectors pay off from one long value to the next; after the document
     // (a render follows, or other files) they would only hold memory.
-    super::split::release_scratch();
+    super::split::scratch::release();
     let (mut document, mut diagnostics) = reader.builder.finish();
     match result {
         Ok(()) => {

@@ -90,6 +90,8 @@ pub fn read_with(source: &[u8], keep: KeepValues, progress: &dyn Progress) -> Pa
     // Directive comments before the first token after the header apply to the whole file.
     let first_token = reader.lexer.peek().start;
     reader.statements(None);
+    // As in the XML reader: the pieces' vectors are kept for this document only.
+    crate::parse::split::scratch::release();
     if let Some(at) = reader.lexer.unterminated_comment {
         reader.malformed(
             Span::new(at, at + 3),
