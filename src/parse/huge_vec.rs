@@ -2,10 +2,10 @@
 //! them on request (Linux's transparent huge pages in `madvise` mode, the common
 //! default). The numbers of a large scene are tens of MB written once, front to back; in
 //! 4 KiB pages each page is a fault of its own (the benchmark scene: 26,000 faults at the
-//! standard level, a fifth of its CPU time), in 2 MiB pages one in 512.
+//! standard level, about a quarter of its CPU time), in 2 MiB pages one in 512.
 
-/// Below this the advice is not given: a huge page needs 2 MiB of aligned address range.
-const HUGE_BYTES: usize = 4 << 20;
+/// Below this no huge page fits: one needs 2 MiB of address range aligned to 2 MiB.
+const HUGE_BYTES: usize = 2 << 20;
 
 /// `Vec::with_capacity(capacity)`, its buffer advised to use huge pages when it is large.
 pub fn with_capacity<T>(capacity: usize) -> Vec<T> {
