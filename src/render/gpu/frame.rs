@@ -640,11 +640,12 @@ fn tile_size(target: &Target) -> (u32, u32) {
     (width * scale, height * scale)
 }
 
-/// The tiles (x, y, width, height) covering the target, rows from the top.
+/// The tiles (x, y, width, height) covering the target, rows from the top (none for an
+/// empty target).
 fn tiles(target: &Target, tile_width: u32, tile_height: u32) -> Vec<[u32; 4]> {
     let mut tiles = Vec::new();
-    for y in (0..target.height).step_by(tile_height as usize) {
-        for x in (0..target.width).step_by(tile_width as usize) {
+    for y in (0..target.height).step_by(tile_height.max(1) as usize) {
+        for x in (0..target.width).step_by(tile_width.max(1) as usize) {
             tiles.push([
                 x,
                 y,
