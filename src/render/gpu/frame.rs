@@ -257,12 +257,8 @@ pub async fn draw(
     let mut image = image::RgbaImage::new(target.width / scale, target.height / scale);
     let tiles = tiles(&target, tile_width, tile_height);
     for (t, &tile) in tiles.iter().enumerate() {
-        // The tile's pixels of a rectangle of the target, counted from the tile's corner.
         let [tx, ty, ..] = tile;
-        let in_tile = |rect: [u32; 4]| {
-            let [x, y, w, h] = intersect(rect, tile);
-            [x - tx, y - ty, w, h]
-        };
+        let in_tile = |rect| in_tile(rect, tile);
         // Each tile draws every pass; the last frees each pass's buffers once it is done.
         let last_tile = t + 1 == tiles.len();
         let mut encoder = device.create_command_encoder(&Default::default());
@@ -512,6 +508,15 @@ fn clear_pass(
         occlusion_query_set: None,
         multiview_mask: None,
     });
+}
+
+/// The tile's pixels of a rectangle of the target, counted from the tile's corner; none:
+/// all zero (a scissor must lie within the tile even when empty).
+fn in_tile(rect: [u32; 4], tile: [u32; 4]) -> [u32; 4] {
+    match intersect(rect, tile) {
+        [_, _, 0, _] | [_, _, _, 0] => [0; 4],
+        [x, y, w, h] => [x - tile[0], y - tile[1], w, h],
+    }
 }
 
 /// The overlap of two pixel rectangles (x, y, width, height); empty: zero width or height.
@@ -769,6 +774,12 @@ mod tests {
                 "{width}x{height}: covered once"
             );
         }
+        // A layer's or a mesh's rectangle against a tile: inside, across, outside.
+        let tile = [400, 300, 400, 300];
+        assert_eq!(in_tile([450, 350, 10, 10], tile), [50, 50, 10, 10]);
+        assert_eq!(in_tile([0, 0, 800, 600], tile), [0, 0, 400, 300]);
+        assert_eq!(in_tile([0, 0, 400, 300], tile), [0; 4]);
+        assert_eq!(in_tile([800, 0, 100, 600], tile), [0; 4]);
         let fast = Target {
             width: 800,
             height: 600,
