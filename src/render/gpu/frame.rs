@@ -1,12 +1,14 @@
-//! One frame: render targets, then layer by layer (each over the previous with the depth
-//! cleared, within its rectangle) the background and the meshes in their order (opaque
-//! first, then blended ones back to front), and the read-back of the pixels.
+//! One frame, drawn tile by tile (see [`TILE_SAMPLES`]): render targets of a tile's size,
+//! then for each tile layer by layer (each over the previous with the depth cleared,
+//! within its rectangle) the background and the meshes in their order (opaque first,
+//! then blended ones back to front), and the read-back of the tile's pixels.
 
 use wgpu::util::DeviceExt;
 
 use super::pipelines::{PipelineKey, Pipelines, COLOR_FORMAT, DEPTH_FORMAT, VERTEX_SLOTS};
 use super::resources::{
-    index_bounds, upload_indices, upload_mesh, upload_surface_part, MeshBuffers, TextureBindings,
+    index_bounds, upload_indices, upload_mesh, upload_surface_part, MeshBuffers, SurfacePart,
+    TextureBindings,
 };
 use super::uniforms::{draw_uniform, globals, GpuDraw};
 use super::{GpuError, Shading};
@@ -22,6 +24,8 @@ pub struct Target {
     pub shading: Shading,
     /// The most indices in one render pass (see [`PASS_INDICES`]).
     pub pass_indices: u32,
+    /// The most samples (pixels × `samples`) in one tile (see [`TILE_SAMPLES`]).
+    pub tile_samples: u32,
 }
 
 /// Draws the list and returns the image, `target.scale` times smaller than the target on
@@ -32,9 +36,10 @@ pub async fn draw(
     mut list: DrawList,
     target: Target,
 ) -> Result<image::RgbaImage, GpuError> {
+    let (tile_width, tile_height) = tile_size(&target);
     let extent = wgpu::Extent3d {
-        width: target.width,
-        height: target.height,
+        width: tile_width,
+        height: tile_height,
         depth_or_array_layers: 1,
     };
     let texture = |format, samples, usage| {
@@ -144,10 +149,10 @@ pub async fn draw(
     });
     // Each draw's pipeline and textures exist before the first pass begins; each pass
     // gets only its own part of the indices, and of a surface's vertices those its part
-    // names when they are few (see `local`); other vertex buffers are made for the
-    // first pass that draws the mesh and freed after its last. So the GPU holds about one
-    // pass's part of the scene at a time rather than the whole scene (on a software
-    // driver, in the process's own memory).
+    // names when they are few (see `local`), in 16-bit indices where they fit: on the
+    // benchmark scene a fifth less than the draw list's arrays, which are freed as their
+    // parts are made (on a software driver the GPU's buffers are in the process's own
+    // memory). The last tile frees each pass's buffers once it is drawn.
     let mut draws = Vec::with_capacity(order.len());
     let mut scissors = Vec::with_capacity(order.len());
     let mut counts = Vec::with_capacity(order.len());
@@ -210,38 +215,16 @@ pub async fn draw(
             last_pass[piece.slot] = n;
         }
     }
-    let mut uploaded: Vec<Option<MeshBuffers>> = (0..order.len()).map(|_| None).collect();
     let starts_layer: Vec<bool> = passes.iter().map(|(_, first, _)| *first).collect();
-    let mut encoder = device.create_command_encoder(&Default::default());
-    if passes.is_empty() {
-        // Nothing to draw: a black image.
-        clear_pass(&mut encoder, view, resolve_target, &depth_view);
-    }
-    for (n, (l, first_of_layer, pieces)) in passes.into_iter().enumerate() {
-        if n > 0 {
-            // The previous pass is finished before this one is recorded, and what only
-            // it used is freed.
-            queue.submit([std::mem::replace(
-                &mut encoder,
-                device.create_command_encoder(&Default::default()),
-            )
-            .finish()]);
-            device
-                .poll(wgpu::PollType::wait_indefinitely())
-                .map_err(|e| GpuError::Failed(e.to_string()))?;
-            for (slot, &last) in last_pass.iter().enumerate() {
-                if last == n - 1 {
-                    uploaded[slot] = None;
-                    let (l, m) = order[slot];
-                    free_arrays(&mut list.layers[l].meshes[m]);
-                }
-            }
-        }
-        // This pass's buffers: a surface's part when its vertices are local, else the
-        // vertices of meshes it draws first and its indices.
-        let mut parts = Vec::with_capacity(pieces.len());
-        let mut index_buffers = Vec::with_capacity(pieces.len());
-        for piece in &pieces {
+    // Every pass's buffers, made before the first tile (every tile draws them) and each
+    // mesh's arrays freed after its last pass's: a surface's part when its vertices are
+    // local, else the vertices of the whole mesh, made for its first pass, and the
+    // pass's indices.
+    let mut uploaded: Vec<Option<MeshBuffers>> = (0..order.len()).map(|_| None).collect();
+    let mut prepared: Vec<Vec<PieceBuffers>> = Vec::with_capacity(passes.len());
+    for (n, (_, _, pieces)) in passes.iter().enumerate() {
+        let mut buffers = Vec::with_capacity(pieces.len());
+        for piece in pieces {
             let (l, m) = order[piece.slot];
             let mesh = &mut list.layers[l].meshes[m];
             let range = piece.range.start as usize..piece.range.end as usize;
@@ -249,112 +232,170 @@ pub async fn draw(
                 && mesh.primitive == Primitive::Triangles
                 && local(index_bounds(&mesh.indices[range.clone()]), range.len())
             {
-                parts.push(Some(upload_surface_part(device, mesh, range)));
-                index_buffers.push(None);
+                buffers.push(PieceBuffers::Part(upload_surface_part(device, mesh, range)));
                 continue;
             }
-            parts.push(None);
             if uploaded[piece.slot].is_none() {
                 uploaded[piece.slot] = Some(upload_mesh(device, mesh));
             }
-            index_buffers.push(match uploaded[piece.slot] {
+            buffers.push(PieceBuffers::Whole(match uploaded[piece.slot] {
                 Some(MeshBuffers::Surface { .. }) => {
                     Some(upload_indices(device, &mesh.indices[range]))
                 }
                 _ => None,
-            });
+            }));
         }
-        let last_of_layer = starts_layer.get(n + 1).is_none_or(|&starts| starts);
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("scene"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view,
-                depth_slice: None,
-                resolve_target,
-                ops: wgpu::Operations {
-                    load: if n == 0 {
-                        wgpu::LoadOp::Clear(wgpu::Color::BLACK)
-                    } else {
-                        wgpu::LoadOp::Load
-                    },
-                    store: wgpu::StoreOp::Store,
-                },
-            })],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: &depth_view,
-                depth_ops: Some(wgpu::Operations {
-                    load: if first_of_layer {
-                        wgpu::LoadOp::Clear(0.0)
-                    } else {
-                        wgpu::LoadOp::Load
-                    },
-                    store: if last_of_layer {
-                        wgpu::StoreOp::Discard
-                    } else {
-                        wgpu::StoreOp::Store
-                    },
-                }),
-                stencil_ops: None,
-            }),
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
-        let [x, y, w, h] = rects[l];
-        pass.set_viewport(x as f32, y as f32, w as f32, h as f32, 0.0, 1.0);
-        pass.set_scissor_rect(x, y, w, h);
-        pass.set_bind_group(0, &globals_groups[l], &[]);
-        if let (true, Some(background), Some(_)) =
-            (first_of_layer, &background, &list.layers[l].background)
-        {
-            pass.set_pipeline(background);
-            pass.draw(0..3, 0..1);
-        }
-        let mut scissor = rects[l];
-        for ((Piece { slot, range }, indices), part) in
-            pieces.into_iter().zip(&index_buffers).zip(&parts)
-        {
-            let [sx, sy, sw, sh] = scissors[slot];
-            if sw == 0 || sh == 0 {
-                continue;
-            }
-            if scissors[slot] != scissor {
-                scissor = scissors[slot];
-                pass.set_scissor_rect(sx, sy, sw, sh);
-            }
-            let (key, textures) = &draws[slot];
-            pass.set_pipeline(pipelines.get(*key));
-            pass.set_bind_group(1, &draw_group, &[(slot * stride) as u32]);
-            pass.set_bind_group(2, bindings.group(textures), &[]);
-            if let Some(part) = part {
-                for (i, buffer) in part.vertices.iter().enumerate() {
-                    pass.set_vertex_buffer(i as u32, buffer.as_ref().unwrap_or(&zeros).slice(..));
-                }
-                pass.set_index_buffer(part.indices.slice(..), part.format);
-                pass.draw_indexed(0..range.end - range.start, 0, 0..1);
-                continue;
-            }
-            match (&uploaded[slot], indices) {
-                (Some(MeshBuffers::Surface { vertices }), Some(indices)) => {
-                    for (i, buffer) in vertices.iter().enumerate().take(VERTEX_SLOTS) {
-                        pass.set_vertex_buffer(
-                            i as u32,
-                            buffer.as_ref().unwrap_or(&zeros).slice(..),
-                        );
-                    }
-                    pass.set_index_buffer(indices.slice(..), wgpu::IndexFormat::Uint32);
-                    pass.draw_indexed(0..range.end - range.start, 0, 0..1);
-                }
-                (Some(MeshBuffers::Stroke { ends, colors }), _) => {
-                    pass.set_vertex_buffer(0, ends.slice(..));
-                    pass.set_vertex_buffer(1, colors.slice(..));
-                    pass.draw(0..6, range);
-                }
-                _ => unreachable!("every piece's buffers were made above"),
+        prepared.push(buffers);
+        for (slot, &last) in last_pass.iter().enumerate() {
+            if last == n {
+                let (l, m) = order[slot];
+                free_arrays(&mut list.layers[l].meshes[m]);
             }
         }
     }
-    read_back(device, queue, encoder, &resolved, &target).await
+    let scale = target.scale.max(1);
+    let mut image = image::RgbaImage::new(target.width / scale, target.height / scale);
+    let tiles = tiles(&target, tile_width, tile_height);
+    for (t, &tile) in tiles.iter().enumerate() {
+        let [tx, ty, ..] = tile;
+        let in_tile = |rect| in_tile(rect, tile);
+        // Each tile draws every pass; the last frees each pass's buffers once it is done.
+        let last_tile = t + 1 == tiles.len();
+        let mut encoder = device.create_command_encoder(&Default::default());
+        if passes.is_empty() {
+            // Nothing to draw: a black image.
+            clear_pass(&mut encoder, view, resolve_target, &depth_view);
+        }
+        for (n, (l, first_of_layer, pieces)) in passes.iter().enumerate() {
+            let (l, first_of_layer) = (*l, *first_of_layer);
+            if n > 0 {
+                // The previous pass is finished before this one is recorded, and what only
+                // it used is freed.
+                queue.submit([std::mem::replace(
+                    &mut encoder,
+                    device.create_command_encoder(&Default::default()),
+                )
+                .finish()]);
+                device
+                    .poll(wgpu::PollType::wait_indefinitely())
+                    .map_err(|e| GpuError::Failed(e.to_string()))?;
+                if last_tile {
+                    prepared[n - 1] = Vec::new();
+                    for (slot, &last) in last_pass.iter().enumerate() {
+                        if last == n - 1 {
+                            uploaded[slot] = None;
+                        }
+                    }
+                }
+            }
+            let last_of_layer = starts_layer.get(n + 1).is_none_or(|&starts| starts);
+            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+                label: Some("scene"),
+                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                    view,
+                    depth_slice: None,
+                    resolve_target,
+                    ops: wgpu::Operations {
+                        load: if n == 0 {
+                            wgpu::LoadOp::Clear(wgpu::Color::BLACK)
+                        } else {
+                            wgpu::LoadOp::Load
+                        },
+                        store: wgpu::StoreOp::Store,
+                    },
+                })],
+                depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                    view: &depth_view,
+                    depth_ops: Some(wgpu::Operations {
+                        load: if first_of_layer {
+                            wgpu::LoadOp::Clear(0.0)
+                        } else {
+                            wgpu::LoadOp::Load
+                        },
+                        store: if last_of_layer {
+                            wgpu::StoreOp::Discard
+                        } else {
+                            wgpu::StoreOp::Store
+                        },
+                    }),
+                    stencil_ops: None,
+                }),
+                timestamp_writes: None,
+                occlusion_query_set: None,
+                multiview_mask: None,
+            });
+            // The layer's viewport moved by the tile's corner (it may reach past the tile),
+            // so every tile draws the same projection; the scissor keeps to the tile.
+            let [x, y, w, h] = rects[l];
+            pass.set_viewport(
+                x as f32 - tx as f32,
+                y as f32 - ty as f32,
+                w as f32,
+                h as f32,
+                0.0,
+                1.0,
+            );
+            let layer_scissor = in_tile(rects[l]);
+            let [sx, sy, sw, sh] = layer_scissor;
+            pass.set_scissor_rect(sx, sy, sw, sh);
+            pass.set_bind_group(0, &globals_groups[l], &[]);
+            if let (true, Some(background), Some(_)) =
+                (first_of_layer, &background, &list.layers[l].background)
+            {
+                pass.set_pipeline(background);
+                pass.draw(0..3, 0..1);
+            }
+            let mut scissor = layer_scissor;
+            for (&Piece { slot, ref range }, buffers) in pieces.iter().zip(&prepared[n]) {
+                let [sx, sy, sw, sh] = in_tile(scissors[slot]);
+                if sw == 0 || sh == 0 {
+                    continue;
+                }
+                if [sx, sy, sw, sh] != scissor {
+                    scissor = [sx, sy, sw, sh];
+                    pass.set_scissor_rect(sx, sy, sw, sh);
+                }
+                let (key, textures) = &draws[slot];
+                pass.set_pipeline(pipelines.get(*key));
+                pass.set_bind_group(1, &draw_group, &[(slot * stride) as u32]);
+                pass.set_bind_group(2, bindings.group(textures), &[]);
+                let indices = match buffers {
+                    PieceBuffers::Part(part) => {
+                        for (i, buffer) in part.vertices.iter().enumerate() {
+                            pass.set_vertex_buffer(
+                                i as u32,
+                                buffer.as_ref().unwrap_or(&zeros).slice(..),
+                            );
+                        }
+                        pass.set_index_buffer(part.indices.slice(..), part.format);
+                        pass.draw_indexed(0..range.end - range.start, 0, 0..1);
+                        continue;
+                    }
+                    PieceBuffers::Whole(indices) => indices,
+                };
+                match (&uploaded[slot], indices) {
+                    (Some(MeshBuffers::Surface { vertices }), Some(indices)) => {
+                        for (i, buffer) in vertices.iter().enumerate().take(VERTEX_SLOTS) {
+                            pass.set_vertex_buffer(
+                                i as u32,
+                                buffer.as_ref().unwrap_or(&zeros).slice(..),
+                            );
+                        }
+                        pass.set_index_buffer(indices.slice(..), wgpu::IndexFormat::Uint32);
+                        pass.draw_indexed(0..range.end - range.start, 0, 0..1);
+                    }
+                    (Some(MeshBuffers::Stroke { ends, colors }), _) => {
+                        pass.set_vertex_buffer(0, ends.slice(..));
+                        pass.set_vertex_buffer(1, colors.slice(..));
+                        pass.draw(0..6, range.clone());
+                    }
+                    _ => unreachable!("every piece's buffers were made above"),
+                }
+            }
+        }
+        read_back(device, queue, encoder, &resolved, tile, scale, &mut image).await?;
+    }
+    Ok(image)
 }
 
 /// Whether a pass draws its part of a surface from buffers of only the vertices that part
@@ -386,6 +427,13 @@ fn free_arrays(mesh: &mut Mesh) {
 /// while the parameters were uniform buffers (see `pipelines::Parameters`): 16,384 then
 /// took fast to 319 MB. The image is the same.
 pub const PASS_INDICES: u32 = 1 << 15;
+
+/// A piece's buffers: its part of a surface, or (in [`MeshBuffers`]) a whole mesh's
+/// vertices and the piece's indices (None for a stroke).
+enum PieceBuffers {
+    Part(SurfacePart),
+    Whole(Option<wgpu::Buffer>),
+}
 
 /// A draw call: part of one mesh's indices (or stroke instances).
 struct Piece {
@@ -462,6 +510,15 @@ fn clear_pass(
     });
 }
 
+/// The tile's pixels of a rectangle of the target, counted from the tile's corner; none:
+/// all zero (a scissor must lie within the tile even when empty).
+fn in_tile(rect: [u32; 4], tile: [u32; 4]) -> [u32; 4] {
+    match intersect(rect, tile) {
+        [_, _, 0, _] | [_, _, _, 0] => [0; 4],
+        [x, y, w, h] => [x - tile[0], y - tile[1], w, h],
+    }
+}
+
 /// The overlap of two pixel rectangles (x, y, width, height); empty: zero width or height.
 fn intersect(a: [u32; 4], b: [u32; 4]) -> [u32; 4] {
     let x0 = a[0].max(b[0]);
@@ -471,14 +528,16 @@ fn intersect(a: [u32; 4], b: [u32; 4]) -> [u32; 4] {
     [x0, y0, x1.saturating_sub(x0), y1.saturating_sub(y0)]
 }
 
+/// Reads a tile of the target back and averages it into its part of the image.
 async fn read_back(
     device: &wgpu::Device,
     queue: &wgpu::Queue,
     mut encoder: wgpu::CommandEncoder,
     texture: &wgpu::Texture,
-    target: &Target,
-) -> Result<image::RgbaImage, GpuError> {
-    let (width, height) = (target.width, target.height);
+    [tx, ty, width, height]: [u32; 4],
+    scale: u32,
+    image: &mut image::RgbaImage,
+) -> Result<(), GpuError> {
     let padded_row = (width * 4).div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT)
         * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
     let buffer = device.create_buffer(&wgpu::BufferDescriptor {
@@ -519,30 +578,88 @@ async fn read_back(
     let mapped = slice
         .get_mapped_range()
         .map_err(|e| GpuError::Failed(e.to_string()))?;
-    Ok(averaged(&mapped, padded_row as usize, target))
+    let scale = scale.max(1);
+    average_into(
+        &mapped,
+        padded_row as usize,
+        scale,
+        [tx / scale, ty / scale, width / scale, height / scale],
+        image,
+    );
+    Ok(())
 }
 
-/// The image of the read-back rows (`padded_row` bytes apart), each pixel the average of a
-/// `scale` × `scale` block of the target (supersampling), read in place rather than copied
-/// first (a supersampled target is 7.7 MB at 800×600). The preview is opaque: blending
-/// leaves coverage, not transparency, in alpha.
-fn averaged(rows: &[u8], padded_row: usize, target: &Target) -> image::RgbaImage {
-    let scale = target.scale.max(1);
+/// Writes the image's pixels in `rect` (x, y, width, height), each the average of a
+/// `scale` × `scale` block of the read-back rows (`padded_row` bytes apart, from the
+/// rectangle's corner), read in place rather than copied first (a supersampled target
+/// is 7.7 MB at 800×600). The preview is opaque: blending leaves coverage, not
+/// transparency, in alpha.
+fn average_into(
+    rows: &[u8],
+    padded_row: usize,
+    scale: u32,
+    [x0, y0, width, height]: [u32; 4],
+    image: &mut image::RgbaImage,
+) {
     let count = scale * scale;
-    image::RgbaImage::from_fn(target.width / scale, target.height / scale, |x, y| {
-        let mut sum = [0u32; 3];
-        for dy in 0..scale {
-            let row = &rows[(y * scale + dy) as usize * padded_row..];
-            for dx in 0..scale {
-                let at = (x * scale + dx) as usize * 4;
-                for (c, total) in sum.iter_mut().enumerate() {
-                    *total += u32::from(row[at + c]);
+    for y in 0..height {
+        for x in 0..width {
+            let mut sum = [0u32; 3];
+            for dy in 0..scale {
+                let row = &rows[(y * scale + dy) as usize * padded_row..];
+                for dx in 0..scale {
+                    let at = (x * scale + dx) as usize * 4;
+                    for (c, total) in sum.iter_mut().enumerate() {
+                        *total += u32::from(row[at + c]);
+                    }
                 }
             }
+            let [r, g, b] = sum.map(|s| ((s + count / 2) / count) as u8);
+            image.put_pixel(x0 + x, y0 + y, image::Rgba([r, g, b, 255]));
         }
-        let [r, g, b] = sum.map(|s| ((s + count / 2) / count) as u8);
-        image::Rgba([r, g, b, 255])
-    })
+    }
+}
+
+/// The most samples of a tile by default: the target is drawn in tiles of at most this
+/// many pixels × samples, one after the other, each drawing the whole list, so that the
+/// render targets (4 bytes of colour and 4 of depth per sample, on a software driver in
+/// the process's own memory) stay small. 800×600 at one sample: fast's image at the
+/// default size is one tile; balanced's 4 samples four tiles of 400×300; accurate's
+/// 1600×1200 with 4 samples 16.
+pub const TILE_SAMPLES: u32 = 800 * 600;
+
+/// A tile's size: the target halved, its longer side first, until a tile has at most
+/// `target.tile_samples` samples; a whole number of supersampled blocks on each side.
+fn tile_size(target: &Target) -> (u32, u32) {
+    let scale = target.scale.max(1);
+    let (mut width, mut height) = (target.width / scale, target.height / scale);
+    let samples =
+        |w: u32, h: u32| u64::from(w * scale) * u64::from(h * scale) * u64::from(target.samples);
+    while samples(width, height) > u64::from(target.tile_samples) && (width > 1 || height > 1) {
+        if width >= height {
+            width = width.div_ceil(2);
+        } else {
+            height = height.div_ceil(2);
+        }
+    }
+    (width * scale, height * scale)
+}
+
+/// The tiles (x, y, width, height) covering the target, rows from the top (none for an
+/// empty target).
+fn tiles(target: &Target, tile_width: u32, tile_height: u32) -> Vec<[u32; 4]> {
+    let mut tiles = Vec::new();
+    for y in (0..target.height).step_by(tile_height.max(1) as usize) {
+        for x in (0..target.width).step_by(tile_width.max(1) as usize) {
+            tiles.push([
+                x,
+                y,
+                tile_width.min(target.width - x),
+                tile_height.min(target.height - y),
+            ]);
+        }
+    }
+    tiles
 }
 
 /// Opaque meshes first, in list order; then blended ones from the farthest to the nearest
@@ -620,6 +737,66 @@ mod tests {
     }
 
     #[test]
+    fn tiles_cover_the_target_once_in_whole_blocks_within_the_limit() {
+        for (width, height, scale, samples, limit) in [
+            (800, 600, 1, 1, TILE_SAMPLES),
+            (800, 600, 1, 4, TILE_SAMPLES),
+            (1600, 1200, 2, 4, TILE_SAMPLES),
+            (1602, 998, 2, 4, 1000),
+            (7, 5, 1, 4, 1),
+        ] {
+            let target = Target {
+                width,
+                height,
+                scale,
+                samples,
+                shading: Shading::Phong,
+                pass_indices: PASS_INDICES,
+                tile_samples: limit,
+            };
+            let (tile_width, tile_height) = tile_size(&target);
+            assert_eq!((tile_width % scale, tile_height % scale), (0, 0));
+            assert!(
+                tile_width * tile_height * samples <= limit.max(scale * scale * samples),
+                "{width}x{height}: a tile of {tile_width}x{tile_height}"
+            );
+            let mut covered = vec![0u8; (width * height) as usize];
+            for [x, y, w, h] in tiles(&target, tile_width, tile_height) {
+                assert_eq!((x % scale, y % scale, w % scale, h % scale), (0, 0, 0, 0));
+                for row in y..y + h {
+                    for column in x..x + w {
+                        covered[(row * width + column) as usize] += 1;
+                    }
+                }
+            }
+            assert!(
+                covered.iter().all(|&c| c == 1),
+                "{width}x{height}: covered once"
+            );
+        }
+        // A layer's or a mesh's rectangle against a tile: inside, across, outside.
+        let tile = [400, 300, 400, 300];
+        assert_eq!(in_tile([450, 350, 10, 10], tile), [50, 50, 10, 10]);
+        assert_eq!(in_tile([0, 0, 800, 600], tile), [0, 0, 400, 300]);
+        assert_eq!(in_tile([0, 0, 400, 300], tile), [0; 4]);
+        assert_eq!(in_tile([800, 0, 100, 600], tile), [0; 4]);
+        let fast = Target {
+            width: 800,
+            height: 600,
+            scale: 1,
+            samples: 1,
+            shading: Shading::Gouraud,
+            pass_indices: PASS_INDICES,
+            tile_samples: TILE_SAMPLES,
+        };
+        assert_eq!(
+            tile_size(&fast),
+            (800, 600),
+            "fast at the default size: one tile"
+        );
+    }
+
+    #[test]
     fn a_frame_cut_into_passes_is_the_frame_drawn_in_one() {
         if !crate::render::adapter_for_test("a_frame_cut_into_passes_is_the_frame_drawn_in_one") {
             return;
@@ -671,7 +848,7 @@ mod tests {
         .list()
         .clone();
         let gpu = super::super::Gpu::open().expect("an adapter");
-        let draw = |samples, shading, pass_indices| {
+        let draw = |samples, shading, pass_indices, tile_samples| {
             let target = Target {
                 width: 96,
                 height: 72,
@@ -679,17 +856,30 @@ mod tests {
                 samples,
                 shading,
                 pass_indices,
+                tile_samples,
             };
             pollster::block_on(draw(&gpu.device, &gpu.queue, list.clone(), target))
                 .unwrap()
                 .into_raw()
         };
         for (samples, shading) in [(1, Shading::Gouraud), (4, Shading::Phong)] {
-            let whole = draw(samples, shading, u32::MAX);
+            let whole = draw(samples, shading, u32::MAX, u32::MAX);
             // A few hundred passes, cutting meshes and strokes apart.
-            let cut = draw(samples, shading, 30);
+            let cut = draw(samples, shading, 30, u32::MAX);
             assert!(whole.iter().any(|&b| b != whole[0]), "something is drawn");
             assert!(whole == cut, "{samples} samples: the cut frame differs");
+            // Four tiles of 48×36: the viewport moves by whole pixels, which the driver
+            // may round differently at a few edges.
+            let tiled = draw(samples, shading, 30, 48 * 36 * samples);
+            let differing = whole
+                .chunks(4)
+                .zip(tiled.chunks(4))
+                .filter(|(a, b)| a != b)
+                .count();
+            assert!(
+                differing * 100 < whole.len() / 4,
+                "{samples} samples: {differing} pixels of the tiled frame differ"
+            );
         }
     }
 }

@@ -126,6 +126,7 @@ async fn render_on(
             samples: settings.msaa_samples,
             shading: settings.shading,
             pass_indices: frame::PASS_INDICES,
+            tile_samples: frame::TILE_SAMPLES,
         },
     )
     .await;
