@@ -112,7 +112,7 @@ pub mod scratch {
 
     /// An empty vector for the numbers of a piece of `text_len` bytes.
     pub fn take<T: Send + 'static>(text_len: usize) -> Vec<T> {
-        // Four bytes a number: a guess that rarely grows.
+        // Four bytes of text a number: a guess that rarely grows.
         let capacity = text_len / 4 + 1;
         let kept = POOL.lock().ok().and_then(|mut pool| {
             let at = pool.iter().position(|v| v.is::<Vec<T>>())?;
@@ -123,7 +123,7 @@ pub mod scratch {
                 v.reserve(capacity);
                 *v
             }
-            None => super::super::huge_vec::with_capacity(capacity),
+            None => crate::parse::huge_vec::with_capacity(capacity),
         }
     }
 
