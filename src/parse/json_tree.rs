@@ -1495,7 +1495,7 @@ mod tests {
             ("[2.5E]", 1, "exponent"),
             ("{\"a\": 0.}", 6, "decimal point"),
             ("-", 0, "`-` must be followed"),
-            // Arrays without whitespace, read eight bytes at a time where they can be.
+            // Arrays without whitespace, read sixteen bytes at a time where they can be.
             ("[0,1,2,3,4,5,6,7,8,9,01,2]", 21, "leading zeros"),
             (
                 "[0,1,2,3,-0.5,6.25,1.2.3,4,5]",

@@ -193,9 +193,9 @@ fn walk_faces_with(
 /// [`Face`]s and the general corner look-ups, with the same findings.
 ///
 /// Coordinates read as f32 are exact in f64, and so are their differences: a nonzero
-/// difference lies within [`UNSCALED`](super::geometry::UNSCALED) (f32 steps are at least 2^-149, and no difference
-/// reaches 2^129), so [`FaceShape`]'s degeneracy test is the plain one below; for a zero
-/// edge both give "degenerate". Nothing here overflows or underflows: squared lengths and
+/// difference lies within [`UNSCALED`](super::geometry::UNSCALED) (f32 steps are at least
+/// 2^-149, and no difference reaches 2^129), so [`FaceShape`]'s degeneracy test is the
+/// plain one below; for a zero edge both give "degenerate". Nothing here overflows or underflows: squared lengths and
 /// cross products stay between 2^-700 and 2^600. The normal's length and the division by
 /// it only decide the sign of the dot product, so a face whose unnormalized dot product is
 /// far from zero (against its rounding error) is counted by that sign, and only the rest
