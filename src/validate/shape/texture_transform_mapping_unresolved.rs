@@ -14,19 +14,19 @@ crate::declare_rule! {
     /// the children of its MultiTextureTransform). The list depends only on the
     /// Appearance, so this is judged once per Appearance and material.
     ///
-    /// An Appearance without `textureTransform` (an empty list) is no exception. The 4.0
-    /// text reads: "If the xxxTextureMapping field is not empty, it must refer to a
-    /// corresponding X3DSingleTextureTransformNode node within the list of texture
-    /// transformations"; it names no case in which a non-empty mapping may refer to
-    /// nothing, and "If the list is empty, no texture transformation is used" is said of
-    /// an *empty* xxxTextureMapping only. 4.1 keeps the sentence with "should" and adds
-    /// that a browser then proceeds "as if xxxTextureMapping would be empty", which for an
-    /// empty list means no transformation. So a mapping name used only to pick texture
-    /// coordinates (12.2.4.1) still needs a texture transformation of that name: without
-    /// one it is reported, as an error in 4.0 and a warning in 4.1.
-    ///
-    /// An error in X3D 4.0 ("must refer to"), a warning in 4.1 ("should", with browsers
-    /// falling back to the first transformation).
+    /// An Appearance without `textureTransform` (an empty list of texture
+    /// transformations) is not reported: the mapping name then only picks texture
+    /// coordinates (12.2.4.1), and the texture gets no transformation, which is what the
+    /// author meant and what every browser does. The 4.0 sentence ("If the
+    /// xxxTextureMapping field is not empty, it must refer to a corresponding
+    /// X3DSingleTextureTransformNode node within the list of texture transformations")
+    /// read to the letter would also demand a transformation of that name where the
+    /// Appearance has none; 4.1 settles the intent: a browser proceeds "as if
+    /// xxxTextureMapping would be empty", and for an empty mapping "If the list is empty,
+    /// no texture transformation is used". RULES.md likewise checks the rule "when that
+    /// list is not empty". So only a non-empty list with no entry of that mapping is
+    /// reported: an error in X3D 4.0 ("must refer to"), a warning in 4.1 ("should", with
+    /// browsers falling back to the first transformation).
     ///
     /// ## Why it matters
     /// The texture gets another transformation than the author meant, or none.
@@ -65,10 +65,13 @@ fn check(ctx: &mut Ctx) {
     let mut found = Vec::new();
     for (appearance, node) in appearances(doc) {
         let list = texture_transforms(doc, Some(appearance));
-        if list.opaque {
+        // An empty list means no transformation, whatever the mapping (see the docs).
+        if list.opaque || list.items.is_empty() {
             continue;
         }
-        let transform = node.children("textureTransform").first().copied();
+        let Some(transform) = node.children("textureTransform").first().copied() else {
+            continue;
+        };
         for material in one_sided_materials(doc, appearance) {
             let m = doc.node(material.child.node);
             for (texture, mapping) in texture_fields(material.def) {
@@ -96,31 +99,23 @@ fn check(ctx: &mut Ctx) {
         }
     }
     for (material, field, mapping, name, span, transform) in found {
-        let (what, help) = match transform {
-            Some(_) => (
-                "names no texture transformation of its Appearance",
-                "give a texture transformation that mapping, or fix the name; \
-                 meanwhile browsers use the first transformation (the 4.1 fallback)",
-            ),
-            None => (
-                "names a texture transformation, but its Appearance has none",
-                "add a TextureTransform with that mapping to the Appearance, or empty the \
-                 mapping if no texture coordinates are chosen by it",
-            ),
-        };
-        let mut diagnostic = Diagnostic::new(
-            &TEXTURE_TRANSFORM_MAPPING_UNRESOLVED,
-            span,
-            format!("{field}.{mapping} {name:?} {what}"),
-        )
-        .node(material)
-        .severity(severity)
-        .value(name)
-        .help(help);
-        if let Some(transform) = transform {
-            diagnostic =
-                diagnostic.related(transform.span, "the Appearance's texture transformations");
-        }
-        ctx.report(diagnostic);
+        ctx.report(
+            Diagnostic::new(
+                &TEXTURE_TRANSFORM_MAPPING_UNRESOLVED,
+                span,
+                format!(
+                    "{field}.{mapping} {name:?} names no texture transformation of its \
+                     Appearance"
+                ),
+            )
+            .node(material)
+            .severity(severity)
+            .value(name)
+            .help(
+                "give a texture transformation that mapping, or fix the name; meanwhile \
+                 browsers use the first transformation (the 4.1 fallback)",
+            )
+            .related(transform.span, "the Appearance's texture transformations"),
+        );
     }
 }
