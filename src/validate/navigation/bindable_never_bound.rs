@@ -18,7 +18,10 @@ crate::declare_rule! {
     /// the first met in document order outside Switch, LOD and GeoLOD (which may not
     /// show their children); the nodes after it are checked. Each Layer has stacks of its
     /// own; nodes in prototype bodies, in prototype instances' fields and in Inlines are
-    /// not counted. Viewpoints are left alone: users pick them from the browser's list.
+    /// not counted. Viewpoints are left alone: users pick them from the browser's list,
+    /// and so is a NavigationInfo that a viewpoint names in its `navigationInfo` field
+    /// (X3D 4.0): "The navigationInfo field defines a dedicated NavigationInfo node for this
+    /// X3DViewpointNode", which is bound whenever that viewpoint is (23.3.1, 23.4.4).
     ///
     /// ## Why it matters
     /// 7.2.2: bindable nodes "have the unique behaviour that only one of each type can be
@@ -94,6 +97,10 @@ fn check(ctx: &mut Ctx) {
             None => {}
         }
     }
+    // A viewpoint's `navigationInfo` binds its NavigationInfo whenever the viewpoint is
+    // bound, and users bind viewpoints from the browser's list.
+    let dedicated = dedicated_navigation_infos(doc);
+    later.retain(|(id, _)| !dedicated.contains(id));
     if later.is_empty() {
         return;
     }
@@ -119,6 +126,15 @@ fn check(ctx: &mut Ctx) {
             ),
         );
     }
+}
+
+/// The NavigationInfo nodes that some X3DViewpointNode names in its `navigationInfo`
+/// field (4.0, 23.3.1), USE included.
+fn dedicated_navigation_infos(doc: &Document) -> HashSet<NodeId> {
+    doc.iter()
+        .filter(|(_, node)| node.is_a("X3DViewpointNode"))
+        .filter_map(|(_, node)| node.child("navigationInfo"))
+        .collect()
 }
 
 /// Visits `id` and the nodes below it in document order, once each, collecting the
