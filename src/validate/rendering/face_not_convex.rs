@@ -50,7 +50,10 @@ crate::declare_rule! {
     /// ```
     ///
     /// ## Use instead
-    /// `convex='false'`, or split the face into convex planar ones.
+    /// For a concave face, `convex='false'`, or split it into convex ones. For a face that
+    /// is not planar, split it into planar ones: `convex='false'` leaves it undefined
+    /// (13.3.6 asks for planar faces whatever `convex` says), so the message does not
+    /// suggest it there.
     ///
     /// ## Clause
     /// 19775-1 11.2.3 Common geometry fields (convex); 13.3.6 IndexedFaceSet.
@@ -70,10 +73,12 @@ enum Fault {
     Concave,
 }
 
-/// The first faulty face (number, first corner's position, fault) and the count.
+/// The first faulty face (number, first corner's position, fault), the count, and how
+/// many of them are not planar.
 struct Found {
     first: (usize, usize, Fault),
     count: usize,
+    not_planar: usize,
     faces: usize,
 }
 
@@ -87,17 +92,19 @@ fn check(ctx: &mut Ctx) {
             return None;
         }
         let points = Points::of(doc, geometry)?;
-        let (mut first, mut count, mut faces) = (None, 0, 0);
+        let (mut first, mut count, mut not_planar, mut faces) = (None, 0, 0, 0);
         for face in geometry.faces.faces() {
             faces += 1;
             if let Some(fault) = fault(geometry, &points, &face) {
                 count += 1;
+                not_planar += usize::from(fault == Fault::NotPlanar);
                 first.get_or_insert((face.number, face.corner(0), fault));
             }
         }
         Some(Found {
             first: first?,
             count,
+            not_planar,
             faces,
         })
     });
@@ -117,10 +124,22 @@ fn check(ctx: &mut Ctx) {
             found.faces,
             if found.count == 1 { "is" } else { "are" },
         );
+        // convex FALSE only tells a browser to triangulate a concave face; a face off its
+        // plane stays undefined either way (13.3.6 wants planar faces).
+        let help = if found.not_planar == 0 {
+            "set convex='false' or split the faces into convex ones"
+        } else if found.not_planar == found.count {
+            "split the faces into planar ones: convex='false' does not help a face that is \
+             not planar, whose rendering is undefined either way"
+        } else {
+            "split the faces that are not planar (convex='false' does not help them: their \
+             rendering is undefined either way); for the concave ones, convex='false' is \
+             enough"
+        };
         let mut diagnostic = Diagnostic::new(&FACE_NOT_CONVEX, span, message)
             .node(geometry.id)
             .index(position)
-            .help("set convex='false' or split the faces into convex planar ones");
+            .help(help);
         diagnostic.count = found.count;
         ctx.report(diagnostic);
     }
