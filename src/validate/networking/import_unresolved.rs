@@ -111,7 +111,10 @@ fn check(ctx: &mut Ctx) {
                     .document
                     .as_ref()
                     .is_some_and(|d| d.version == Some(crate::schema::Version::Vrml97));
-                let help = if vrml97 {
+                let vrml97_export = vrml97 && names_export(&library.text, &imported.text);
+                let help = if vrml97_export {
+                    Some(format!("EXPORT is an X3D statement (19775-1 4.9.3) that VRML97 (14772-1) does not have: a VRML97 browser exports nothing; write {file} as X3D (`#X3D V3.3 utf8`) to export `{}`", imported.text))
+                } else if vrml97 {
                     Some(format!("{file} is VRML97, which has no EXPORT statement (14772-1): a browser imports nothing from it; write it as X3D (`#X3D V3.3 utf8`) to export nodes"))
                 } else if exported.is_empty() {
                     Some(format!("{file} has no EXPORT statement"))
@@ -130,16 +133,20 @@ fn check(ctx: &mut Ctx) {
                             ))
                         })
                 };
-                Diagnostic::new(
-                    &IMPORT_UNRESOLVED,
-                    imported.span,
+                let message = if vrml97_export {
+                    format!(
+                        "IMPORT {}.{}: {file}, which Inline `{}` loads, is VRML97: its `EXPORT {}` is not a VRML97 statement, so it exports nothing",
+                        inline.text, imported.text, inline.text, imported.text
+                    )
+                } else {
                     format!(
                         "IMPORT {}.{}: {file}, which Inline `{}` loads, exports no `{}`",
                         inline.text, imported.text, inline.text, imported.text
-                    ),
-                )
-                .value(imported.text.clone())
-                .help_opt(help)
+                    )
+                };
+                Diagnostic::new(&IMPORT_UNRESOLVED, imported.span, message)
+                    .value(imported.text.clone())
+                    .help_opt(help)
             }
             ImportTarget::Unread(Some(why)) => {
                 let why = why.text();
@@ -168,4 +175,22 @@ fn check(ctx: &mut Ctx) {
     for diagnostic in found {
         ctx.report(diagnostic);
     }
+}
+
+/// Whether a VRML97 text has a line `EXPORT name` (or `EXPORT x AS name`), which its reader
+/// drops as no VRML97 statement.
+fn names_export(text: &[u8], name: &str) -> bool {
+    text.split(|byte| *byte == b'\n').any(|line| {
+        let Ok(line) = std::str::from_utf8(line) else {
+            return false;
+        };
+        let words: Vec<&str> = line.split_whitespace().collect();
+        match words.as_slice() {
+            ["EXPORT", local, rest @ ..] => match rest {
+                ["AS", exported, ..] => *exported == name,
+                _ => *local == name,
+            },
+            _ => false,
+        }
+    })
 }
