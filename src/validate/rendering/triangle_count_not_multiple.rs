@@ -48,6 +48,7 @@ fn check(ctx: &mut Ctx) {
         if !shape_is_known(node) {
             continue;
         }
+        let mut shared = None;
         let (count, what, span) = if def.name.starts_with("Indexed") {
             let Some(entry) = node.entry("index") else {
                 continue;
@@ -61,7 +62,17 @@ fn check(ctx: &mut Ctx) {
             let Some(coord) = coord_list(doc, id) else {
                 continue;
             };
-            let span = coord.entry.map_or(coord.child_span, |e| e.span);
+            // A USE'd coordinate node is reported where this geometry uses it, not at
+            // its DEF, which may belong to another geometry.
+            let used = node.children("coord").first().is_some_and(|c| c.is_use);
+            let span = match coord.entry {
+                Some(entry) if !used => entry.span,
+                Some(entry) => {
+                    shared = Some(entry.span);
+                    coord.child_span
+                }
+                None => coord.child_span,
+            };
             (
                 coord.len,
                 format!(
@@ -80,6 +91,10 @@ fn check(ctx: &mut Ctx) {
             if rest == 1 { "makes" } else { "make" },
             if rest == 1 { "is" } else { "are" },
         );
-        ctx.report(Diagnostic::new(&TRIANGLE_COUNT_NOT_MULTIPLE, span, message).node(id));
+        let mut diagnostic = Diagnostic::new(&TRIANGLE_COUNT_NOT_MULTIPLE, span, message).node(id);
+        if let Some(points) = shared {
+            diagnostic = diagnostic.related(points, "the shared coordinates");
+        }
+        ctx.report(diagnostic);
     }
 }
