@@ -825,6 +825,27 @@ mod tests {
     }
 
     #[test]
+    fn instances_count_what_prototype_instances_build() {
+        // P_k's body is a Group of ten P_(k-1); nine levels over one Box make 10^9
+        // Boxes, built from one shared instantiation per level.
+        let mut scene = String::from(
+            "<ProtoDeclare name='P0'><ProtoBody><Shape><Box/></Shape></ProtoBody></ProtoDeclare>",
+        );
+        for k in 1..10 {
+            let body = format!("<ProtoInstance name='P{}'/>", k - 1).repeat(10);
+            scene += &format!(
+                "<ProtoDeclare name='P{k}'><ProtoBody><Group>{body}</Group></ProtoBody></ProtoDeclare>"
+            );
+        }
+        scene += "<ProtoInstance name='P9'/>";
+        let source = format!("<X3D profile='Immersive' version='4.0'><Scene>{scene}</Scene></X3D>");
+        let doc = parse::read(source.as_bytes()).document.unwrap();
+        // Per level k ≥ 1 a Group; below each P0 a Shape and a Box.
+        let groups: u64 = (0..9).map(|k| 10u64.pow(k)).sum();
+        assert_eq!(doc.instances(), groups + 2 * 10u64.pow(9));
+    }
+
+    #[test]
     fn a_prototype_billion_laughs_stops_at_the_limit() {
         // P_k's body holds ten instances of P_(k-1), each setting its own field k and
         // passing the others on: 10^7 distinct instantiations of P0.

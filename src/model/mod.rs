@@ -430,8 +430,11 @@ pub struct Document {
     pub encoding: Encoding,
     /// The `version` attribute as written.
     pub version_text: Option<Named>,
-    /// The version it names, when it names a known one.
+    /// The version it names, when it names a known one; without a `version`, the one a
+    /// [`VersionHint`] names.
     pub version: Option<Version>,
+    /// The version the DOCTYPE or the schema location names, if any.
+    pub version_hint: Option<VersionHint>,
     pub profile: Option<Named>,
     pub head: Head,
     /// The root element or `"X3D"` object.
@@ -462,12 +465,49 @@ pub struct Document {
     pub directives: Vec<Directive>,
 }
 
+/// A version that a document without `version` names elsewhere: its DOCTYPE's public or
+/// system id (`ISO//Web3D//DTD X3D 3.0//EN`, `x3d-3.0.dtd`) or its schema location
+/// (`x3d-3.0.xsd`).
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct VersionHint {
+    pub version: Version,
+    /// "DOCTYPE" or "schema location".
+    pub source: &'static str,
+}
+
+impl VersionHint {
+    /// The X3D version a DOCTYPE or schema location text names: `X3D 3.0` or `x3d-3.0`
+    /// followed by anything but a digit or a dot.
+    pub fn find(text: &str, source: &'static str) -> Option<VersionHint> {
+        let lower = text.to_ascii_lowercase();
+        ["x3d-", "x3d "].iter().find_map(|prefix| {
+            lower.match_indices(prefix).find_map(|(at, _)| {
+                let rest = &lower[at + prefix.len()..];
+                let end = rest
+                    .find(|c: char| !(c.is_ascii_digit() || c == '.'))
+                    .unwrap_or(rest.len());
+                let number = rest[..end].trim_end_matches('.');
+                Version::parse(number).map(|version| VersionHint { version, source })
+            })
+        })
+    }
+}
+
 impl Document {
+    /// Without a `version`, takes the hint's version for the schema (the document is
+    /// still reported as having no `version`).
+    pub fn apply_version_hint(&mut self) {
+        if self.version_text.is_none() && self.version.is_none() {
+            self.version = self.version_hint.map(|hint| hint.version);
+        }
+    }
+
     pub fn new(encoding: Encoding) -> Document {
         Document {
             encoding,
             version_text: None,
             version: None,
+            version_hint: None,
             profile: None,
             head: Head::default(),
             root_span: Span::default(),
@@ -533,11 +573,60 @@ impl Document {
         (0..self.nodes.len() as u32).map(NodeId)
     }
 
-    /// Node instances in the scene with every USE expanded (saturating).
+    /// Node instances in the scene with every USE expanded and every prototype instance
+    /// counted as the nodes its instantiation builds (saturating).
     pub fn instances(&self) -> u64 {
+        let mut counted = HashMap::new();
         self.scene.iter().fold(0u64, |sum, c| {
-            sum.saturating_add(self.node(c.node).instances)
+            sum.saturating_add(self.instances_below(c.node, &mut counted))
         })
+    }
+
+    /// The instances `root` stands for, memoized over the DAG in `counted`, with an
+    /// explicit stack (a scene may be deep). A prototype instance counts as its built root;
+    /// the nodes below a node count through each of its node fields. A node met again
+    /// while it is being counted (only an instantiation gone wrong could do that) counts 1.
+    fn instances_below(&self, root: NodeId, counted: &mut HashMap<NodeId, u64>) -> u64 {
+        let below = |id: NodeId| -> Vec<NodeId> {
+            let node = self.node(id);
+            if matches!(node.kind, NodeKind::ProtoInstance { .. }) {
+                return self.built(id).into_iter().collect();
+            }
+            node.fields
+                .iter()
+                .filter_map(|f| f.value.as_nodes())
+                .flatten()
+                .map(|c| c.node)
+                .collect()
+        };
+        let mut open = std::collections::HashSet::new();
+        let mut stack = vec![(root, false)];
+        while let Some((id, children_counted)) = stack.pop() {
+            if counted.contains_key(&id) {
+                continue;
+            }
+            let children = below(id);
+            if children_counted {
+                open.remove(&id);
+                let own = u64::from(!matches!(
+                    self.node(id).kind,
+                    NodeKind::ProtoInstance { .. }
+                ));
+                let count = children.iter().fold(own, |sum, c| {
+                    sum.saturating_add(counted.get(c).copied().unwrap_or(1))
+                });
+                counted.insert(id, count);
+            } else if open.insert(id) {
+                stack.push((id, true));
+                stack.extend(
+                    children
+                        .into_iter()
+                        .filter(|c| !counted.contains_key(c) && !open.contains(c))
+                        .map(|c| (c, false)),
+                );
+            }
+        }
+        counted.get(&root).copied().unwrap_or(1)
     }
 
     /// Nodes of a given concrete type, in document order.

@@ -445,6 +445,13 @@ impl<'t, 's> JsonReader<'t, 's> {
                 }
             }
         }
+        if let Some((_, location)) = t.get(x3d, "@xsd:noNamespaceSchemaLocation") {
+            if t.kind(location) == Kind::String {
+                let hint = VersionHint::find(&t.str(location), "schema location");
+                self.builder.doc_mut().version_hint = hint;
+            }
+        }
+        self.builder.doc_mut().apply_version_hint();
         for (key, value) in t.members(x3d) {
             if t.key_is(key, "head") && t.kind(value) == Kind::Object {
                 self.head(value);

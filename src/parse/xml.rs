@@ -282,7 +282,10 @@ impl<'s> XmlReader<'s> {
                 Event::CData(_) => self.text(start, end, true)?,
                 Event::Text(_) | Event::GeneralRef(_) => self.text(start, end, false)?,
                 Event::Eof => break,
-                Event::DocType(doctype) => self.entities.declare(&doctype),
+                Event::DocType(doctype) => {
+                    self.builder.doc_mut().version_hint = VersionHint::find(&doctype, "DOCTYPE");
+                    self.entities.declare(&doctype);
+                }
                 Event::Decl(_) | Event::PI(_) => {}
             }
         }
@@ -464,9 +467,15 @@ impl<'s> XmlReader<'s> {
                     doc.version_text = Some(named);
                 }
                 "profile" => doc.profile = Some(named),
+                name if name.ends_with("noNamespaceSchemaLocation") => {
+                    if doc.version_hint.is_none() {
+                        doc.version_hint = VersionHint::find(&attr.value, "schema location");
+                    }
+                }
                 _ => {}
             }
         }
+        doc.apply_version_hint();
     }
 
     #[allow(clippy::too_many_arguments)]

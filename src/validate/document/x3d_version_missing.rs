@@ -10,7 +10,10 @@ crate::declare_rule! {
     ///
     /// ## Why it matters
     /// The version decides which nodes, fields and value ranges apply. The encodings
-    /// require it. x3dcheck then checks against the latest version, 4.1.
+    /// require it. x3dcheck then checks against the version the DOCTYPE
+    /// (`<!DOCTYPE X3D PUBLIC "ISO//Web3D//DTD X3D 3.0//EN" …>`) or the schema location
+    /// (`x3d-3.0.xsd`) names, if one does, and otherwise against the latest version, 4.1;
+    /// the message says which.
     ///
     /// ## Example
     /// ```xml
@@ -30,10 +33,25 @@ crate::declare_rule! {
 
 fn check(ctx: &mut Ctx) {
     // A VRML97 file has its version from its header line, not from a `version`.
-    if ctx.doc.version_text.is_none() && ctx.doc.version != Some(Version::Vrml97) {
-        ctx.report(
-            Diagnostic::new(&X3D_VERSION_MISSING, ctx.doc.root_span, "the X3D root has no `version`")
-                .help("add version='4.1' (or the version the scene was written for); checking against 4.1"),
-        );
+    if ctx.doc.version_text.is_some() || ctx.doc.version == Some(Version::Vrml97) {
+        return;
     }
+    let help = match ctx.doc.version_hint {
+        Some(hint) => format!(
+            "add version='{0}': the {1} names X3D {0}, so the scene is checked against {0}",
+            hint.version.as_str(),
+            hint.source
+        ),
+        None => "add version='4.1' (or the version the scene was written for); checking \
+                 against 4.1"
+            .to_string(),
+    };
+    ctx.report(
+        Diagnostic::new(
+            &X3D_VERSION_MISSING,
+            ctx.doc.root_span,
+            "the X3D root has no `version`",
+        )
+        .help(help),
+    );
 }
