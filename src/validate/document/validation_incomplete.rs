@@ -4,7 +4,7 @@ use crate::model::Span;
 use crate::report::Diagnostic;
 use crate::validate::networking::inlines::InlineTarget;
 use crate::validate::prototypes::externs::Resolved;
-use crate::validate::texturing::files::{Resolution, Resolver};
+use crate::validate::texturing::files::{not_fetched, Resolution, Resolver};
 use crate::validate::{Ctx, Level};
 
 crate::declare_rule! {
@@ -107,7 +107,7 @@ fn check(ctx: &mut Ctx) {
                 .url
                 .iter()
                 .find_map(|url| match resolver.resolve(url) {
-                    Resolution::Network(_) => Some(format!("network URL \"{url}\" is not fetched")),
+                    Resolution::Network(_) => Some(not_fetched(url)),
                     Resolution::Outside(_) => Some(format!(
                         "\"{url}\" is outside the directory tree being checked and is not read"
                     )),

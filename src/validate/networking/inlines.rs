@@ -18,7 +18,7 @@ use crate::config::CheckConfig;
 use crate::library::Library;
 use crate::model::{Document, NodeId};
 use crate::validate::prototypes::externs::Tree;
-use crate::validate::texturing::files::{Resolution, Resolver};
+use crate::validate::texturing::files::{not_fetched, Resolution, Resolver};
 
 /// What one Inline's url led to.
 #[derive(Clone, Debug)]
@@ -44,7 +44,7 @@ pub enum Unreached {
 impl Unreached {
     pub fn text(&self) -> String {
         match self {
-            Unreached::Network(url) => format!("network URL \"{url}\" is not fetched"),
+            Unreached::Network(url) => not_fetched(url),
             Unreached::Outside(url) => {
                 format!("\"{url}\" is outside the directory tree being checked and is not read")
             }

@@ -27,7 +27,7 @@ use std::path::Path;
 use super::{Check, Ctx, Level};
 use crate::model::{Encoding, Node, NodeId, Origin, Span};
 use crate::validate::texturing::data_url;
-use crate::validate::texturing::files::{Resolution, Resolver};
+use crate::validate::texturing::files::{not_fetched, Resolution, Resolver};
 use mapped::Mapped;
 
 /// This group's rules, in catalogue order.
@@ -221,9 +221,7 @@ fn look_at(ctx: &Ctx, candidate: &Candidate, resolver: &mut Option<Resolver>) ->
     }
     if ctx.config.level < Level::Deep {
         return match Resolver::new(None, None).resolve(trimmed) {
-            Resolution::Network(_) => Look::Unknown(format!(
-                "its code at network URL \"{shown}\" is not fetched"
-            )),
+            Resolution::Network(_) => Look::Unknown(format!("its code at {}", not_fetched(&shown))),
             _ => Look::Unknown(format!(
                 "its code in \"{shown}\" is read at the deep level only"
             )),
@@ -234,9 +232,7 @@ fn look_at(ctx: &Ctx, candidate: &Candidate, resolver: &mut Option<Resolver>) ->
     match resolver.resolve(trimmed) {
         Resolution::Local(path) => file(ctx, &path, trimmed, candidate.span),
         Resolution::Missing { .. } | Resolution::Inline => Look::Nothing,
-        Resolution::Network(_) => Look::Unknown(format!(
-            "its code at network URL \"{shown}\" is not fetched"
-        )),
+        Resolution::Network(_) => Look::Unknown(format!("its code at {}", not_fetched(&shown))),
         Resolution::Outside(_) => Look::Unknown(format!(
             "its code in \"{shown}\" is outside the directory tree being checked and is not read"
         )),

@@ -20,7 +20,7 @@ use std::path::Path;
 
 use crate::model::{Document, NodeId, Span};
 use crate::read::{read_path, Contents};
-use crate::validate::texturing::files::{Resolution, Resolver};
+use crate::validate::texturing::files::{not_fetched, Resolution, Resolver};
 
 /// The largest shader file read (the largest real one is a few hundred KB).
 pub const MAX_SHADER_FILE: usize = 4 << 20;
@@ -172,7 +172,7 @@ pub fn find(doc: &Document, file: &[u8], id: NodeId, resolver: Option<&Resolver>
             "{name}: the source file \"{url}\" is read at the deep level only"
         ))
     } else if let Some(url) = network {
-        Some(format!("{name}: network URL \"{url}\" is not fetched"))
+        Some(format!("{name}: {}", not_fetched(&url)))
     } else if urls.is_empty() {
         Some(format!("{name}: no source (the url is empty)"))
     } else {

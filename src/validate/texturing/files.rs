@@ -106,6 +106,24 @@ pub enum Resolution {
     NoBase,
 }
 
+/// "network URL "…" is not fetched" for an address of a network scheme; for any other
+/// scheme (`urn:`, `mailto:`, …) it names the scheme instead of calling it a network URL.
+pub fn not_fetched(url: &str) -> String {
+    let scheme = url
+        .split_once(':')
+        .map(|(scheme, _)| scheme.to_ascii_lowercase())
+        .unwrap_or_default();
+    if matches!(
+        scheme.as_str(),
+        "http" | "https" | "ftp" | "ftps" | "ws" | "wss" | "file"
+    ) || url.starts_with("//")
+    {
+        format!("network URL \"{url}\" is not fetched")
+    } else {
+        format!("\"{url}\" is a `{scheme}:` address, which x3dcheck does not resolve")
+    }
+}
+
 /// Resolves url entries against one document's directory within the allowed tree.
 pub struct Resolver {
     base: Option<PathBuf>,

@@ -1,6 +1,6 @@
 //! URL_UNRESOLVED: no entry of a url field names a readable local file.
 
-use super::files::{url_fields, Resolution, Resolver};
+use super::files::{not_fetched, url_fields, Resolution, Resolver};
 use crate::report::Diagnostic;
 use crate::validate::document::validation_incomplete::VALIDATION_INCOMPLETE;
 use crate::validate::prototypes::externs::Resolved;
@@ -85,7 +85,7 @@ fn check(ctx: &mut Ctx) {
         let type_name = ctx.doc.node(field.node).type_name();
         let what = format!("{type_name}.{}", field.entry.name());
         let unchecked = urls.iter().zip(&resolutions).find_map(|(url, r)| match r {
-            Resolution::Network(_) => Some(format!("{what}: network URL \"{url}\" is not fetched")),
+            Resolution::Network(_) => Some(format!("{what}: {}", not_fetched(url))),
             Resolution::Outside(_) => Some(format!(
                 "{what}: \"{url}\" is outside the directory tree being checked and is not read"
             )),
