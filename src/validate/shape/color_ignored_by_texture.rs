@@ -2,9 +2,11 @@
 //! RGBA texture.
 
 use super::analysis::shape_pairs;
-use crate::model::{Document, NodeId};
+use crate::model::NodeId;
 use crate::report::Diagnostic;
-use crate::validate::Ctx;
+use crate::validate::texturing::data_url;
+use crate::validate::texturing::files::{bytes_channels, file_channels, Resolution, Resolver};
+use crate::validate::{Ctx, Level};
 
 crate::declare_rule! {
     /// ## What it does
@@ -14,10 +16,15 @@ crate::declare_rule! {
     /// one diagnostic per pair, at the geometry's `color` node.
     ///
     /// Whether a texture is RGB or RGBA is known from the document for a PixelTexture
-    /// (the components of its SFImage: 3 or 4). An ImageTexture's or MovieTexture's
-    /// components are those of its file, which this rule does not read, and a
-    /// MultiTexture combines its textures by its modes: neither is judged, so nothing is
-    /// reported for them (the rule prefers a miss to a guess).
+    /// (the components of its SFImage: 3 or 4). An ImageTexture's components are those
+    /// of its image, which the deep level reads: the first `url` entry that is a local
+    /// file or a `data:` URL (entries naming missing files are skipped, as a browser
+    /// skips them; an entry that cannot be read here, such as a network URL, ends the
+    /// search with no verdict), judged by the channels its header announces (grey 1,
+    /// grey and alpha 2, RGB 3, RGBA 4; a palette image counts as RGB or RGBA). Below the
+    /// deep level an ImageTexture is not judged. A MovieTexture's frames and a
+    /// MultiTexture, which combines its textures by its modes, are never judged: the rule
+    /// prefers a miss to a guess.
     ///
     /// ## Why it matters
     /// "RGB or RGBA textures take precedence over colours; specifying both an RGB or RGBA
@@ -62,7 +69,7 @@ fn check(ctx: &mut Ctx) {
         let Some(texture) = doc.node(appearance).children("texture").first().copied() else {
             continue;
         };
-        let Some(components) = rgb_components(doc, texture.node) else {
+        let Some(components) = rgb_components(ctx, texture.node) else {
             continue;
         };
         let geometry = doc.node(pair.geometry);
@@ -94,13 +101,36 @@ fn check(ctx: &mut Ctx) {
     }
 }
 
-/// The components (3 or 4) of a texture known to be RGB or RGBA from the document alone;
-/// None for any other texture or one that cannot be told.
-fn rgb_components(doc: &Document, texture: NodeId) -> Option<i32> {
-    let node = doc.node(texture);
-    if !node.is_a("PixelTexture") || node.is_connected("image") {
-        return None;
+/// The components (3 or 4) of a texture known to be RGB or RGBA: a PixelTexture's from
+/// the document, an ImageTexture's from its image at the deep level; None for any other
+/// texture or one that cannot be told.
+fn rgb_components(ctx: &Ctx, texture: NodeId) -> Option<i32> {
+    let node = ctx.doc.node(texture);
+    let components = match node.type_name() {
+        "PixelTexture" if !node.is_connected("image") => {
+            node.value("image")?.as_images()?.first()?.components
+        }
+        "ImageTexture" if ctx.config.level >= Level::Deep && !node.is_connected("url") => {
+            i32::from(image_channels(ctx, node.value("url")?.as_strings()?)?)
+        }
+        _ => return None,
+    };
+    matches!(components, 3 | 4).then_some(components)
+}
+
+/// The channels of the image a browser would load from `urls`: the first local file or
+/// `data:` URL, skipping missing files; None when an entry before it cannot be judged.
+fn image_channels(ctx: &Ctx, urls: &[String]) -> Option<u8> {
+    let resolver = Resolver::new(ctx.base, ctx.config.root.as_deref());
+    for url in urls {
+        if let Some(data) = data_url::decode(url) {
+            return bytes_channels(&data.ok()?.bytes);
+        }
+        match resolver.resolve(url) {
+            Resolution::Local(path) => return file_channels(&path),
+            Resolution::Missing { .. } => continue,
+            _ => return None,
+        }
     }
-    let image = node.value("image")?.as_images()?.first()?;
-    matches!(image.components, 3 | 4).then_some(image.components)
+    None
 }

@@ -384,6 +384,24 @@ impl Prober {
     }
 }
 
+/// The channels (1–4) an image file's header announces, without decoding its pixels;
+/// None when it cannot be read as an image.
+pub fn file_channels(path: &Path) -> Option<u8> {
+    let reader = image::ImageReader::open(path)
+        .ok()?
+        .with_guessed_format()
+        .ok()?;
+    Some(image::ImageDecoder::color_type(&reader.into_decoder().ok()?).channel_count())
+}
+
+/// [`file_channels`] of the image a `data:` URL carries.
+pub fn bytes_channels(bytes: &[u8]) -> Option<u8> {
+    let reader = image::ImageReader::new(std::io::Cursor::new(bytes))
+        .with_guessed_format()
+        .ok()?;
+    Some(image::ImageDecoder::color_type(&reader.into_decoder().ok()?).channel_count())
+}
+
 /// What the image a `data:` URL carries is (decoded within the same limits as files).
 pub fn probe_bytes(bytes: &[u8]) -> Probe {
     let reader = image::ImageReader::new(std::io::Cursor::new(bytes));
