@@ -4,6 +4,7 @@
 pub mod nurbs_control_points_too_few;
 pub mod nurbs_dimension_mismatch;
 pub mod nurbs_knot_count_mismatch;
+pub mod nurbs_knot_decreasing;
 pub mod nurbs_weight_count_mismatch;
 
 use std::collections::HashSet;
@@ -17,6 +18,7 @@ use crate::schema::FieldType;
 /// This group's rules, in catalogue order.
 pub static RULES: &[&Check] = &[
     &nurbs_knot_count_mismatch::CHECK,
+    &nurbs_knot_decreasing::CHECK,
     &nurbs_control_points_too_few::CHECK,
     &nurbs_weight_count_mismatch::CHECK,
     &nurbs_dimension_mismatch::CHECK,
@@ -66,7 +68,7 @@ pub(crate) fn nurbs_nodes(doc: &Document) -> Vec<(NodeId, Vec<Direction>)> {
         .collect()
 }
 
-const CURVES: [&str; 4] = [
+pub(crate) const CURVES: [&str; 4] = [
     "NurbsCurve",
     "NurbsCurve2D",
     "NurbsOrientationInterpolator",
