@@ -23,8 +23,9 @@ crate::declare_rule! {
     /// search with no verdict), judged by the channels its header announces (grey 1,
     /// grey and alpha 2, RGB 3, RGBA 4; a palette image counts as RGB or RGBA). Below the
     /// deep level an ImageTexture is not judged. A MovieTexture's frames and a
-    /// MultiTexture, which combines its textures by its modes, are never judged: the rule
-    /// prefers a miss to a guess.
+    /// MultiTexture, which combines its textures by its modes, are never judged, nor is a
+    /// PointSet whose Appearance has a PointProperties (point sprites, whose `colorMode`
+    /// may blend the point colours with the texture): the rule prefers a miss to a guess.
     ///
     /// ## Why it matters
     /// "RGB or RGBA textures take precedence over colours; specifying both an RGB or RGBA
@@ -73,7 +74,12 @@ fn check(ctx: &mut Ctx) {
             continue;
         };
         let geometry = doc.node(pair.geometry);
-        if geometry.is_connected("color") {
+        // Point sprites (a PointProperties beside the texture) blend point and texture
+        // colours by PointProperties.colorMode (12.4.7 of the 4.0 drafts, and the xj3d
+        // extension before it): not judged.
+        let sprites = geometry.is_a("PointSet")
+            && doc.node(appearance).child("pointProperties").is_some();
+        if geometry.is_connected("color") || sprites {
             continue;
         }
         let Some(&color) = geometry.children("color").first() else {
