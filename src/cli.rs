@@ -38,7 +38,7 @@ use color::{ColorChoice, ColorEnv};
 #[command(
     name = "x3dcheck",
     version,
-    about = "Checks X3D scene documents (XML and JSON encodings) like a compiler",
+    about = "Checks X3D scene documents (XML, JSON, ClassicVRML and VRML97, gzip-compressed or not) like a compiler",
     args_conflicts_with_subcommands = true,
     subcommand_negates_reqs = true,
     after_help = EXIT_CODES
