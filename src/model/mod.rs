@@ -635,3 +635,33 @@ impl Document {
             .filter(move |id| self.node(*id).def().is_some_and(|d| d.name == type_name))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::VersionHint;
+    use crate::schema::Version;
+
+    #[test]
+    fn version_hints_read_dtd_and_schema_names() {
+        let find = |text| VersionHint::find(text, "test").map(|h| h.version);
+        assert_eq!(
+            find(r#"X3D PUBLIC "ISO//Web3D//DTD X3D 3.0//EN" "x3d-3.0.dtd""#),
+            Some(Version::V3_0)
+        );
+        assert_eq!(
+            find("https://www.web3d.org/specifications/x3d-4.0.xsd"),
+            Some(Version::V4_0)
+        );
+        assert_eq!(
+            find("x3d-3.3-Web3dExtensionsPublic.xsd"),
+            Some(Version::V3_3)
+        );
+        assert_eq!(
+            find("https://www.web3d.org/specifications/x3d-4.1-JSONSchema.json"),
+            Some(Version::V4_1)
+        );
+        assert_eq!(find("x3d-9.9.xsd"), None);
+        assert_eq!(find("x3d-3.xsd"), None);
+        assert_eq!(find("scene.xsd"), None);
+    }
+}
