@@ -77,8 +77,8 @@ fn check(ctx: &mut Ctx) {
         // Point sprites (a PointProperties beside the texture) blend point and texture
         // colours by PointProperties.colorMode (12.4.7 of the 4.0 drafts, and the xj3d
         // extension before it): not judged.
-        let sprites = geometry.is_a("PointSet")
-            && doc.node(appearance).child("pointProperties").is_some();
+        let sprites =
+            geometry.is_a("PointSet") && doc.node(appearance).child("pointProperties").is_some();
         if geometry.is_connected("color") || sprites {
             continue;
         }
