@@ -467,10 +467,11 @@ impl<'s> XmlReader<'s> {
                     doc.version_text = Some(named);
                 }
                 "profile" => doc.profile = Some(named),
-                name if name.ends_with("noNamespaceSchemaLocation") => {
-                    if doc.version_hint.is_none() {
-                        doc.version_hint = VersionHint::find(&attr.value, "schema location");
-                    }
+                // The DOCTYPE, read before the root, wins.
+                name if name.ends_with("noNamespaceSchemaLocation")
+                    && doc.version_hint.is_none() =>
+                {
+                    doc.version_hint = VersionHint::find(&attr.value, "schema location");
                 }
                 _ => {}
             }
