@@ -36,7 +36,7 @@ pub fn readable(value: f64) -> String {
 }
 
 /// The index of the first value smaller than the one before it, in a list that shall not
-/// decrease (interpolator keys, background angles, LOD ranges). Pairs with a NaN or an
+/// decrease (interpolator and sequencer keys, background angles). Pairs with a NaN or an
 /// infinity have no order to judge (FIELD_VALUE_NONFINITE reports those).
 pub fn first_decrease(values: &[f32]) -> Option<usize> {
     values
