@@ -95,30 +95,38 @@ fn check(ctx: &mut Ctx) {
 }
 
 /// Field declarations (Script, shader nodes, ProtoDeclare interfaces) that give an
-/// inputOnly or outputOnly field an initial value. Copies made by instantiating a
-/// prototype carry their body node's declarations, reported once at the original.
+/// inputOnly or outputOnly field an initial value: a `value`, or child nodes (a node's
+/// declared field keeps those as a field entry, a ProtoDeclare's as the declaration's
+/// value). Copies made by instantiating a prototype carry their body node's
+/// declarations, reported once at the original.
 fn report_declarations(ctx: &mut Ctx) {
     let doc = ctx.doc;
     let mut found = Vec::new();
     for (id, node) in doc.iter().filter(|(_, node)| node.copy_of.is_none()) {
         for decl in &node.declared {
-            found.push((Some(id), node.type_name(), decl));
+            let nodes = node
+                .entry(&decl.name.text)
+                .filter(|entry| entry.origin != Origin::Is)
+                .map(|entry| entry.span);
+            let span = decl.value.as_ref().map(|(_, span)| *span).or(nodes);
+            found.push((Some(id), node.type_name(), decl, span));
         }
     }
     for proto in doc.protos.iter().filter(|proto| !proto.external) {
         for decl in &proto.interface {
-            found.push((None, "ProtoDeclare", decl));
+            let span = decl.value.as_ref().map(|(_, span)| *span);
+            found.push((None, "ProtoDeclare", decl, span));
         }
     }
-    for (id, owner, decl) in found {
-        let (Some(access @ (AccessType::InputOnly | AccessType::OutputOnly)), Some((_, span))) =
-            (decl.access, &decl.value)
+    for (id, owner, decl, span) in found {
+        let (Some(access @ (AccessType::InputOnly | AccessType::OutputOnly)), Some(span)) =
+            (decl.access, span)
         else {
             continue;
         };
         let mut diagnostic = Diagnostic::new(
             &FIELD_NOT_INITIALIZABLE,
-            *span,
+            span,
             format!(
                 "{owner} field `{}` is declared {}: its declaration cannot give it a value",
                 decl.name.text,
