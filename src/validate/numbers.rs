@@ -1,6 +1,8 @@
-//! Computed numbers as messages print them: short, as precise as the single-precision
-//! fields they come from, in exponent notation where positional digits would run long
-//! (±3.4e38, 1.4e-45), and never `inf`: what a rule prints has been checked finite.
+//! Numbers for the rules: computed numbers as messages print them (short, as precise as
+//! the single-precision fields they come from, in exponent notation where positional
+//! digits would run long, ±3.4e38, 1.4e-45, and never `inf`: what a rule prints has been
+//! checked finite), counts as messages word them, and the order of a list that shall not
+//! decrease.
 
 /// A computed value for a message. Within the normal f32 range (or zero) it is the
 /// shortest text that reads back as the same f32, the precision of the fields it comes
