@@ -4,7 +4,10 @@
 
 pub mod document;
 mod edits;
+pub mod environmental_effects;
 pub mod events;
+pub mod geometry2d;
+pub mod geometry3d;
 pub mod geospatial;
 pub mod hanim;
 mod instances;

@@ -1,6 +1,8 @@
-//! Computed numbers as messages print them: short, as precise as the single-precision
-//! fields they come from, in exponent notation where positional digits would run long
-//! (±3.4e38, 1.4e-45), and never `inf`: what a rule prints has been checked finite.
+//! Numbers for the rules: computed numbers as messages print them (short, as precise as
+//! the single-precision fields they come from, in exponent notation where positional
+//! digits would run long, ±3.4e38, 1.4e-45, and never `inf`: what a rule prints has been
+//! checked finite), counts as messages word them, and the order of a list that shall not
+//! decrease.
 
 /// A computed value for a message. Within the normal f32 range (or zero) it is the
 /// shortest text that reads back as the same f32, the precision of the fields it comes
@@ -35,9 +37,36 @@ pub fn readable(value: f64) -> String {
     }
 }
 
+/// The index of the first value smaller than the one before it, in a list that shall not
+/// decrease (interpolator and sequencer keys, background angles). Pairs with a NaN or an
+/// infinity have no order to judge (FIELD_VALUE_NONFINITE reports those).
+pub fn first_decrease(values: &[f32]) -> Option<usize> {
+    values
+        .windows(2)
+        .position(|pair| pair[0].is_finite() && pair[1].is_finite() && pair[1] < pair[0])
+        .map(|at| at + 1)
+}
+
+/// `n` things, in the singular for one: "1 key", "3 keys".
+pub fn plural(n: usize, what: &str) -> String {
+    if n == 1 {
+        format!("1 {what}")
+    } else {
+        format!("{n} {what}s")
+    }
+}
+
 #[cfg(test)]
 mod tests {
-    use super::readable;
+    use super::{first_decrease, readable};
+
+    #[test]
+    fn first_decrease_skips_equal_and_nonfinite_neighbours() {
+        assert_eq!(first_decrease(&[0.0, 0.5, 0.5, 1.0]), None);
+        assert_eq!(first_decrease(&[0.0, 0.6, 0.4, 0.2]), Some(2));
+        assert_eq!(first_decrease(&[1.0, f32::NAN, 0.0]), None);
+        assert_eq!(first_decrease(&[]), None);
+    }
 
     #[test]
     fn short_and_exact_at_single_precision() {

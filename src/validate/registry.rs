@@ -5,9 +5,9 @@
 use std::sync::LazyLock;
 
 use super::{
-    document, events, geospatial, hanim, interpolation, lighting, navigation, networking, nurbs,
-    particles, prototypes, rendering, rigid_body, scripting, sensors, shaders, shape, sound,
-    texturing, Check, Rule,
+    document, environmental_effects, events, geometry2d, geometry3d, geospatial, hanim,
+    interpolation, lighting, navigation, networking, nurbs, particles, prototypes, rendering,
+    rigid_body, scripting, sensors, shaders, shape, sound, texturing, Check, Rule,
 };
 
 /// Every rule with its check function (None for those reported while reading).
@@ -16,6 +16,8 @@ pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {
         document::RULES,
         shape::RULES,
         rendering::RULES,
+        geometry2d::RULES,
+        geometry3d::RULES,
         lighting::RULES,
         texturing::RULES,
         events::RULES,
@@ -26,6 +28,7 @@ pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {
         interpolation::RULES,
         sensors::RULES,
         navigation::RULES,
+        environmental_effects::RULES,
         nurbs::RULES,
         hanim::RULES,
         geospatial::RULES,

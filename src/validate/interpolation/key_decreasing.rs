@@ -1,13 +1,15 @@
-//! KEY_DECREASING: an interpolator key smaller than the key before it.
+//! KEY_DECREASING: an interpolator or sequencer key smaller than the key before it.
 
 use crate::report::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
+use crate::validate::numbers::first_decrease;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
     /// ## What it does
     /// Reports the first key of an interpolator (every node type derived from
-    /// X3DInterpolatorNode, and EaseInEaseOut) that is smaller than the key before it.
+    /// X3DInterpolatorNode, and EaseInEaseOut) or of a sequencer (X3DSequencerNode:
+    /// BooleanSequencer, IntegerSequencer) that is smaller than the key before it.
     /// Equal neighbouring keys are allowed (they make a step). A `key` that a ROUTE sends
     /// values to, or that takes its value through `IS`, is left alone, as are keys that
     /// are not finite (FIELD_VALUE_NONFINITE reports those).
@@ -32,7 +34,10 @@ crate::declare_rule! {
     /// non-decreasing, otherwise the results are undefined"), which is said of the
     /// interpolator nodes of clause 19. Reading: EaseInEaseOut (19.4.4), listed among
     /// them in 19.2.1 and with a key field of the same role, is held to it too, and so is
-    /// GeoPositionInterpolator (25), an X3DInterpolatorNode.
+    /// GeoPositionInterpolator (25), an X3DInterpolatorNode. 30.3.1 X3DSequencerNode
+    /// says the same of the sequencers' keys in the same words ("The keys shall be
+    /// monotonically non-decreasing, otherwise the results are undefined"), so this code
+    /// covers them too.
     pub static KEY_DECREASING = {
         severity: Error,
         level: Standard,
@@ -47,7 +52,10 @@ fn check(ctx: &mut Ctx) {
     let routed = routed_fields(doc);
     let mut found = Vec::new();
     for (id, node) in doc.iter() {
-        if !(node.is_a("X3DInterpolatorNode") || node.type_name() == "EaseInEaseOut") {
+        if !(node.is_a("X3DInterpolatorNode")
+            || node.is_a("X3DSequencerNode")
+            || node.type_name() == "EaseInEaseOut")
+        {
             continue;
         }
         if set_elsewhere(doc, &routed, id, "key") {
@@ -59,11 +67,8 @@ fn check(ctx: &mut Ctx) {
         let Some(keys) = entry.value.as_floats() else {
             continue;
         };
-        let first_drop = keys
-            .windows(2)
-            .position(|pair| pair[0].is_finite() && pair[1].is_finite() && pair[1] < pair[0]);
-        if let Some(at) = first_drop {
-            found.push((id, entry, at + 1, node.type_name()));
+        if let Some(at) = first_decrease(keys) {
+            found.push((id, entry, at, node.type_name()));
         }
     }
     for (id, entry, at, type_name) in found {

@@ -1,9 +1,10 @@
-//! KEY_VALUE_COUNT_MISMATCH: an interpolator whose keyValue (or keyVelocity) count does not
-//! match its key count.
+//! KEY_VALUE_COUNT_MISMATCH: an interpolator or sequencer whose keyValue (or keyVelocity)
+//! count does not match its key count.
 
 use crate::model::{NodeId, Span, Value};
 use crate::report::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
+use crate::validate::numbers::plural;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -14,8 +15,9 @@ crate::declare_rule! {
     /// OrientationInterpolator, ScalarInterpolator, the 2D and spline interpolators,
     /// SquadOrientationInterpolator, GeoPositionInterpolator), and an integer multiple
     /// of the key count for those that output an array (CoordinateInterpolator,
-    /// CoordinateInterpolator2D, NormalInterpolator). A value is one tuple of the
-    /// field's type (three numbers of an MFVec3f, four of an MFRotation). For the
+    /// CoordinateInterpolator2D, NormalInterpolator). A sequencer (X3DSequencerNode:
+    /// BooleanSequencer, IntegerSequencer) needs one keyValue per key. A value is one
+    /// tuple of the field's type (three numbers of an MFVec3f, four of an MFRotation). For the
     /// spline interpolators a `keyVelocity` that is neither empty nor one velocity per
     /// key is reported too. An interpolator with no keys and no values is left alone
     /// (it produces no events, 19.3.1), as are fields a ROUTE sends values to or that
@@ -50,7 +52,9 @@ crate::declare_rule! {
     /// which output arrays like CoordinateInterpolator, to its integer multiple. The
     /// spline clauses' "same number" is not applied to an empty keyVelocity, the default,
     /// from which 19.2.4 computes the velocities. Values with no keys are reported (no
-    /// integer multiple of zero is non-zero).
+    /// integer multiple of zero is non-zero). 30.3.1 X3DSequencerNode: "The
+    /// piecewise-linear function is defined by n values of t, called key, and the n
+    /// corresponding values of f(t), called keyValue" (the same one value per key).
     pub static KEY_VALUE_COUNT_MISMATCH = {
         severity: Error,
         level: Standard,
@@ -79,7 +83,7 @@ fn check(ctx: &mut Ctx) {
     let routed = routed_fields(doc);
     let mut found = Vec::new();
     for (id, node) in doc.iter() {
-        if !node.is_a("X3DInterpolatorNode") {
+        if !(node.is_a("X3DInterpolatorNode") || node.is_a("X3DSequencerNode")) {
             continue;
         }
         if ["key", "keyValue"]
@@ -164,12 +168,4 @@ fn tuples(ctx: &Ctx, id: NodeId, field: &str) -> Option<(usize, Option<Span>)> {
 fn key_span(ctx: &Ctx, id: NodeId) -> Span {
     let node = ctx.doc.node(id);
     node.entry("key").map_or(node.name_span, |e| e.span)
-}
-
-fn plural(n: usize, what: &str) -> String {
-    if n == 1 {
-        format!("1 {what}")
-    } else {
-        format!("{n} {what}s")
-    }
 }

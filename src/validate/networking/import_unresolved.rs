@@ -1,4 +1,4 @@
-//! IMPORT_UNRESOLVED: an IMPORT names no Inline, or a name its file does not export.
+//! IMPORT_UNRESOLVED: an IMPORT names a name its Inline's file does not export.
 
 use super::imports::ImportTarget;
 use crate::report::Diagnostic;
@@ -8,9 +8,11 @@ use crate::validate::{suggest, Ctx};
 
 crate::declare_rule! {
     /// ## What it does
-    /// At the deep level, reports an IMPORT statement whose `inlineDEF` names no Inline
-    /// node DEF'd in the statement's name scope, or whose `importedDEF` is not a name the
-    /// inlined file EXPORTs (an EXPORT's `AS`, else its `localDEF`). The inlined file is
+    /// At the deep level, reports an IMPORT statement whose `importedDEF` is not a name
+    /// the inlined file EXPORTs (an EXPORT's `AS`, else its `localDEF`). An `inlineDEF`
+    /// that names no Inline DEF'd in the statement's name scope is decided without the
+    /// inlined file and reported at every level as IMPORT_INLINE_UNDEFINED (this code
+    /// reported it before that code existed). The inlined file is
     /// the one the Inline loads: the first entry of its url naming a readable local file of
     /// the tree being checked, read as Inline files are (once per batch, checked as a
     /// scene of its own). An Inline whose file cannot be read (network URLs, files outside
@@ -65,46 +67,12 @@ fn check(ctx: &mut Ctx) {
         let imported = &import.imported_def;
         let diagnostic = match target {
             // A missing local file is URL_UNRESOLVED's finding at the Inline; a name exported
-            // but undefined is EXPORT_UNDEFINED's in the inlined file.
+            // but undefined is EXPORT_UNDEFINED's in the inlined file; no Inline at all,
+            // IMPORT_INLINE_UNDEFINED's at every level.
             ImportTarget::Node { .. }
             | ImportTarget::ExportUndefined
+            | ImportTarget::NoInline(_)
             | ImportTarget::Unread(None) => continue,
-            ImportTarget::NoInline(_) if inline.text.is_empty() => {
-                Diagnostic::new(&IMPORT_UNRESOLVED, inline.span, "IMPORT has no `inlineDEF`")
-            }
-            ImportTarget::NoInline(Some(type_name)) => Diagnostic::new(
-                &IMPORT_UNRESOLVED,
-                inline.span,
-                format!(
-                    "IMPORT inlineDEF `{}` names a {type_name}, not an Inline",
-                    inline.text
-                ),
-            )
-            .value(inline.text.clone()),
-            ImportTarget::NoInline(None) => {
-                let mut names: Vec<&str> = doc
-                    .defs
-                    .iter()
-                    .filter(|((scope, _), id)| {
-                        *scope == import.scope && doc.node(**id).is_a("Inline")
-                    })
-                    .map(|((_, n), _)| n.as_str())
-                    .collect();
-                names.sort_unstable();
-                Diagnostic::new(
-                    &IMPORT_UNRESOLVED,
-                    inline.span,
-                    format!(
-                        "IMPORT inlineDEF `{}` names no Inline DEF'd in its scope",
-                        inline.text
-                    ),
-                )
-                .value(inline.text.clone())
-                .help_opt(
-                    suggest::did_you_mean(&inline.text, names)
-                        .map(|c| format!("did you mean `{c}`?")),
-                )
-            }
             ImportTarget::NotExported { library, exported } => {
                 let file = display_path(ctx.base, &library.path);
                 let vrml97 = library

@@ -3,8 +3,9 @@
 //! 19775-1 4.9.2: `IMPORT inlineDEF.importedDEF AS name` names an Inline DEF'd in the
 //! statement's name scope and a name its file EXPORTs (its `AS`, else its `localDEF`,
 //! 4.9.3); the imported node takes the name `AS`, else `importedDEF`, in the importing
-//! scope, where ROUTEs may name it. IMPORT_UNRESOLVED reports the statements that name no
-//! Inline or no export; the ROUTE rules check ROUTEs to and from the nodes found.
+//! scope, where ROUTEs may name it. IMPORT_INLINE_UNDEFINED reports the statements that
+//! name no Inline (at every level, through [`named_inline`]), IMPORT_UNRESOLVED those
+//! that name no export; the ROUTE rules check ROUTEs to and from the nodes found.
 
 use std::sync::Arc;
 
@@ -75,13 +76,24 @@ impl Imports {
     }
 }
 
-fn resolve(doc: &Document, inlines: &Inlines, import: &Import) -> ImportTarget {
-    let inline = doc
+/// The Inline an IMPORT's `inlineDEF` names in the statement's scope; else what the name
+/// names instead (None: no node of the scope), as [`ImportTarget::NoInline`] holds it.
+/// Decided within this file, at every level.
+pub fn named_inline(doc: &Document, import: &Import) -> Result<NodeId, Option<String>> {
+    let named = doc
         .defs
         .get(&(import.scope, import.inline_def.text.clone()))
         .copied();
-    let Some(inline) = inline.filter(|&id| doc.node(id).is_a("Inline")) else {
-        return ImportTarget::NoInline(inline.map(|id| doc.node(id).type_name().to_string()));
+    match named {
+        Some(id) if doc.node(id).is_a("Inline") => Ok(id),
+        _ => Err(named.map(|id| doc.node(id).type_name().to_string())),
+    }
+}
+
+fn resolve(doc: &Document, inlines: &Inlines, import: &Import) -> ImportTarget {
+    let inline = match named_inline(doc, import) {
+        Ok(inline) => inline,
+        Err(named) => return ImportTarget::NoInline(named),
     };
     let library = match inlines.get(inline) {
         Some(InlineTarget::Loaded { library, .. }) => library,

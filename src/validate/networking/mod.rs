@@ -1,10 +1,12 @@
-//! Inline and IMPORT/EXPORT, RULES.md §8: EXPORT statements at the standard level; at the
-//! deep level, the scenes local Inlines load ([`inlines`]), files that load themselves,
-//! and IMPORT statements resolved against the exports of the inlined files ([`imports`]).
+//! Inline and IMPORT/EXPORT, RULES.md §8: EXPORT statements and the Inline an IMPORT names
+//! at the standard level; at the deep level, the scenes local Inlines load ([`inlines`]),
+//! files that load themselves, and IMPORT statements resolved against the exports of the
+//! inlined files ([`imports`]).
 
 use super::Check;
 
 pub mod export_undefined;
+pub mod import_inline_undefined;
 pub mod import_unresolved;
 pub mod imports;
 pub mod inline_cycle;
@@ -14,5 +16,6 @@ pub mod inlines;
 pub static RULES: &[&Check] = &[
     &inline_cycle::CHECK,
     &export_undefined::CHECK,
+    &import_inline_undefined::CHECK,
     &import_unresolved::CHECK,
 ];

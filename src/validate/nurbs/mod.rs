@@ -10,6 +10,7 @@ pub mod nurbs_weight_count_mismatch;
 use std::collections::HashSet;
 
 use super::events::wiring::{routed_fields, set_elsewhere};
+use super::numbers::plural;
 use super::{Check, Ctx, Rule};
 use crate::model::{Document, NodeId, Span};
 use crate::report::Diagnostic;
@@ -170,13 +171,5 @@ pub(crate) fn report(
 ) {
     for (id, span, message) in found {
         ctx.report(Diagnostic::new(rule, span, message).node(id).help(help));
-    }
-}
-
-pub(crate) fn plural(n: usize, what: &str) -> String {
-    if n == 1 {
-        format!("1 {what}")
-    } else {
-        format!("{n} {what}s")
     }
 }

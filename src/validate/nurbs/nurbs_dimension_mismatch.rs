@@ -1,7 +1,8 @@
 //! NURBS_DIMENSION_MISMATCH: a surface whose control points are not uDimension × vDimension.
 
-use super::{control_points, is_surface, nurbs_nodes, plural, report};
+use super::{control_points, is_surface, nurbs_nodes, report};
 use crate::validate::events::wiring::routed_fields;
+use crate::validate::numbers::plural;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,7 +1,8 @@
 //! NURBS_KNOT_COUNT_MISMATCH: a knot vector whose length is not the number of control
 //! points plus the order.
 
-use super::{nurbs_nodes, plural, report};
+use super::{nurbs_nodes, report};
+use crate::validate::numbers::plural;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,7 +1,8 @@
 //! NURBS_WEIGHT_COUNT_MISMATCH: weights written, but not one per control point.
 
-use super::{control_points, nurbs_nodes, plural, report};
+use super::{control_points, nurbs_nodes, report};
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
+use crate::validate::numbers::plural;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -3,7 +3,7 @@
 
 use super::ramps;
 use crate::report::Diagnostic;
-use crate::validate::nurbs::plural;
+use crate::validate::numbers::plural;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,7 +1,7 @@
 //! TRIANGLE_COUNT_NOT_MULTIPLE: an index or coordinate count that leaves a partial
 //! triangle (or quad) at the end.
 
-use super::geometry::{coord_list, shape_is_known};
+use super::geometry::{coord_list, is_known, shape_is_known};
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -10,7 +10,8 @@ crate::declare_rule! {
     /// Reports an IndexedTriangleSet whose `index` length, or a TriangleSet whose number
     /// of coordinates, is not a multiple of 3, and likewise an IndexedQuadSet `index` or a
     /// QuadSet coordinate count that is not a multiple of 4 (the CADGeometry quad sets
-    /// say the same of quads). The message says how many entries are left over.
+    /// say the same of quads), and a TriangleSet2D whose number of `vertices` is not a
+    /// multiple of 3. The message says how many entries are left over.
     ///
     /// ## Why it matters
     /// "If the index field does not contain a multiple of three coordinate values, the
@@ -26,7 +27,9 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 11.4.7 IndexedTriangleSet, 11.4.13 TriangleSet; 32.4.5 IndexedQuadSet,
-    /// 32.4.6 QuadSet.
+    /// 32.4.6 QuadSet; 14.4.8 TriangleSet2D ("The number of vertices provided shall be
+    /// evenly divisible by three. Excess vertices shall be ignored."), the same leftover
+    /// entries dropped, so the same code.
     pub static TRIANGLE_COUNT_NOT_MULTIPLE = {
         severity: Warning,
         level: Standard,
@@ -41,7 +44,7 @@ fn check(ctx: &mut Ctx) {
     for (id, node) in doc.iter() {
         let Some(def) = node.def() else { continue };
         let (size, shape) = match def.name {
-            "IndexedTriangleSet" | "TriangleSet" => (3, "triangle"),
+            "IndexedTriangleSet" | "TriangleSet" | "TriangleSet2D" => (3, "triangle"),
             "IndexedQuadSet" | "QuadSet" => (4, "quad"),
             _ => continue,
         };
@@ -49,7 +52,20 @@ fn check(ctx: &mut Ctx) {
             continue;
         }
         let mut shared = None;
-        let (count, what, span) = if def.name.starts_with("Indexed") {
+        let (count, what, span) = if def.name == "TriangleSet2D" {
+            if !is_known(node, "vertices") {
+                continue;
+            }
+            let Some(entry) = node.entry("vertices") else {
+                continue;
+            };
+            let vertices = entry.value.len() / 2;
+            (
+                vertices,
+                format!("TriangleSet2D has {vertices} vertices"),
+                entry.span,
+            )
+        } else if def.name.starts_with("Indexed") {
             let Some(entry) = node.entry("index") else {
                 continue;
             };
