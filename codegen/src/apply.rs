@@ -214,6 +214,15 @@ fn modify(fields: &mut Vec<Field>, position: usize, change: &Change) -> bool {
         }
         Change::Access(access) => replace(&mut field.access, *access),
         Change::Strict => replace(&mut field.enumeration_strict, true),
+        Change::AlsoValid(values) => {
+            let before = field.enumeration.len();
+            for value in *values {
+                if !field.enumeration.iter().any(|v| v == value) {
+                    field.enumeration.push(value.to_string());
+                }
+            }
+            field.enumeration.len() != before
+        }
         Change::Remove => {
             fields.remove(position);
             true
@@ -382,6 +391,19 @@ mod tests {
         assert_eq!(applied.changes, 1);
         // The same again changes nothing and is reported as such.
         apply_entry(&mut schema, &max, &mut applied).unwrap();
+        assert_eq!(applied.no_ops.len(), 1);
+    }
+
+    #[test]
+    fn also_valid_appends_values_once() {
+        let mut schema = schema();
+        schema.nodes[0].fields[0].enumeration = vec!["PLAIN".to_owned()];
+        let mut applied = Applied::default();
+        let empty = entry("SpotLight", "beamWidth", Change::AlsoValid(&[""]));
+        apply_entry(&mut schema, &empty, &mut applied).unwrap();
+        assert_eq!(schema.nodes[0].fields[0].enumeration, ["PLAIN", ""]);
+        apply_entry(&mut schema, &empty, &mut applied).unwrap();
+        assert_eq!(schema.nodes[0].fields[0].enumeration, ["PLAIN", ""]);
         assert_eq!(applied.no_ops.len(), 1);
     }
 

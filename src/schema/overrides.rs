@@ -1,5 +1,10 @@
 //! Corrections to the X3D Unified Object Model, from the specification clauses in
-//! `../shared/spec` (they win where the two differ; see `../shared/spec/README.md`).
+//! `../shared/spec` (they win where the two differ on meaning; see `../shared/spec/README.md`).
+//!
+//! Membership is not meaning: a node or field is in a version when that version's
+//! published UOM or XML Schema has it (`../shared/oracle/README.md`). The texts in
+//! `../shared/spec` are drafts (the 4.0 one predates Appearance.alphaMode), so no entry
+//! here removes a field, or adds one, on the ground of a draft text alone.
 //!
 //! Data only: the generator (`codegen/`, which includes this file by path) applies every
 //! entry to the tables it reads from the UOM before it writes `generated.rs`, and fails when
@@ -49,6 +54,10 @@ pub enum Change {
     /// The field's enumerated values are the only ones allowed (the clause's table is a
     /// closed list) although the UOM marks them as suggestions.
     Strict,
+    /// Values the clause gives a meaning to besides the UOM's enumeration (an empty string
+    /// the XML Schema's pattern cannot spell, for one), in the UOM's notation: an MFString
+    /// value as its quoted strings (`"\"\""` for one empty string).
+    AlsoValid(&'static [&'static str]),
     /// The field does not exist in these versions although the UOM lists it.
     Remove,
     /// The field exists in these versions although the UOM does not list it.
@@ -124,63 +133,6 @@ pub static FIELD_OVERRIDES: &[FieldOverride] = &[
         why: "backMaterial takes Material, PhysicalMaterial or UnlitMaterial, never a TwoSidedMaterial; the UOM says X3DMaterialNode",
     },
     FieldOverride {
-        versions: V4_0,
-        node: "Appearance",
-        field: "alphaMode",
-        change: Change::Remove,
-        clause: "12.4.2",
-        why: "added in 4.1 (001_ lists it, the 4.0 table in 000_ does not); the 4.0 UOM already has it",
-    },
-    FieldOverride {
-        versions: V4_0,
-        node: "Appearance",
-        field: "alphaCutoff",
-        change: Change::Remove,
-        clause: "12.4.2",
-        why: "added in 4.1 (001_ lists it, the 4.0 table in 000_ does not); the 4.0 UOM already has it",
-    },
-    FieldOverride {
-        versions: V4_0,
-        node: "X3DShapeNode",
-        field: "castShadow",
-        change: Change::Remove,
-        clause: "12.3.5",
-        why: "added to X3DShapeNode in 4.1 (001_); the 4.0 UOM already has it on Shape and ParticleSystem",
-    },
-    FieldOverride {
-        versions: V4_0,
-        node: "AcousticProperties",
-        field: "description",
-        change: Change::Remove,
-        clause: "12.4.1",
-        why: "added in 4.1 (001_ lists it, the 4.0 table in 000_ does not); the 4.0 UOM already has it",
-    },
-    FieldOverride {
-        versions: V4_0,
-        node: "AcousticProperties",
-        field: "enabled",
-        change: Change::Remove,
-        clause: "12.4.1",
-        why: "added in 4.1 (001_ lists it, the 4.0 table in 000_ does not); the 4.0 UOM already has it",
-    },
-    FieldOverride {
-        versions: V4_0,
-        node: "PointProperties",
-        field: "colorMode",
-        change: Change::Add(NewField {
-            ty: FieldType::SFString,
-            access: AccessType::InputOutput,
-            default: "TEXTURE_AND_POINT_COLOR",
-            min: None,
-            max: None,
-            enumeration: &["POINT_COLOR", "TEXTURE_COLOR", "TEXTURE_AND_POINT_COLOR"],
-            enumeration_strict: true,
-            acceptable: &[],
-        }),
-        clause: "12.4.7",
-        why: "in the 4.0 interface table (gone in 4.1); the UOM lists it in no version",
-    },
-    FieldOverride {
         versions: V4_1,
         node: "PointProperties",
         field: "markerType",
@@ -195,7 +147,7 @@ pub static FIELD_OVERRIDES: &[FieldOverride] = &[
             acceptable: &[],
         }),
         clause: "12.4.7",
-        why: "added in 4.1 (001_); the UOM lists it in no version",
+        why: "in the 4.1 table (001_); the 4.1 UOM lacks it and the 4.1 XML Schema has it commented out (\"Mantis 1393 … deferred to X3D4.1\"), so kept for 4.1 as the reading that gives no false FIELD_UNKNOWN, and MARKER_TYPE_UNSUPPORTED (RULES.md) needs it",
     },
     FieldOverride {
         versions: V4,
@@ -270,26 +222,6 @@ pub static FIELD_OVERRIDES: &[FieldOverride] = &[
         clause: "11.4 (Normal)",
         why: "the table gives (-∞,∞); the UOM says [-1,1]",
     },
-    FieldOverride {
-        versions: V4_0,
-        node: "IndexedTriangleStripSet",
-        field: "creaseAngle",
-        change: Change::Add(NewField {
-            ty: FieldType::SFFloat,
-            access: AccessType::InputOutput,
-            default: "0",
-            min: incl(0.0),
-            max: None,
-            enumeration: &[],
-            enumeration_strict: false,
-            acceptable: &[],
-        }),
-        clause: "11.4 (IndexedTriangleStripSet)",
-        why: "in the interface table; the UOM (and the XML Schemas) do not have it",
-    },
-    // ---- 17 Lighting ----
-    // The UOMs already agree on intensity; these entries pin the two ranges of 17.2.1 so a
-    // later UOM cannot change them unnoticed (the generator reports them as no-ops).
     FieldOverride {
         versions: V3,
         node: "X3DLightNode",
@@ -405,6 +337,99 @@ pub static FIELD_OVERRIDES: &[FieldOverride] = &[
         change: Change::Strict,
         clause: "18.4.3 Table 18.5",
         why: "the table lists the valid values of function; the UOM has the same values but marks them as suggestions",
+    },
+    // ---- 13 Geometry3D, 25 Geospatial: grid defaults ----
+    // The 3.x UOMs give a 2 × 2 grid of zero heights as the default, which no table of
+    // 19775-1 (nor VRML97 6.18) does; the 4.x UOMs have the tables' values.
+    FieldOverride {
+        versions: V3,
+        node: "ElevationGrid",
+        field: "height",
+        change: Change::Default(""),
+        clause: "13.3.4 ElevationGrid",
+        why: "the table gives [] (VRML97 6.18 too); the 3.x UOMs say 0 0 0 0, so an unwritten height counted as 4 values",
+    },
+    FieldOverride {
+        versions: V3,
+        node: "ElevationGrid",
+        field: "xDimension",
+        change: Change::Default("0"),
+        clause: "13.3.4 ElevationGrid",
+        why: "the table gives 0 [0,∞) (VRML97 6.18 too); the 3.x UOMs say 2",
+    },
+    FieldOverride {
+        versions: V3,
+        node: "ElevationGrid",
+        field: "zDimension",
+        change: Change::Default("0"),
+        clause: "13.3.4 ElevationGrid",
+        why: "the table gives 0 [0,∞) (VRML97 6.18 too); the 3.x UOMs say 2",
+    },
+    FieldOverride {
+        versions: V3,
+        node: "GeoElevationGrid",
+        field: "height",
+        change: Change::Default("0 0"),
+        clause: "25.4.5 GeoElevationGrid",
+        why: "the table gives [0 0], as the 4.x UOMs do; the 3.x UOMs say 0 0 0 0",
+    },
+    FieldOverride {
+        versions: V3,
+        node: "GeoElevationGrid",
+        field: "xDimension",
+        change: Change::Default("0"),
+        clause: "25.4.5 GeoElevationGrid",
+        why: "the table gives 0, as the 4.x UOMs do; the 3.x UOMs say 2",
+    },
+    FieldOverride {
+        versions: V3,
+        node: "GeoElevationGrid",
+        field: "zDimension",
+        change: Change::Default("0"),
+        clause: "25.4.5 GeoElevationGrid",
+        why: "the table gives 0, as the 4.x UOMs do; the 3.x UOMs say 2",
+    },
+    // ---- Ranges of vector fields (each component; the UOMs give none, or not in every version) ----
+    FieldOverride {
+        versions: ALL,
+        node: "Box",
+        field: "size",
+        change: Change::Min(excl(0.0)),
+        clause: "13.3.1 Box",
+        why: "the table gives (0,∞): \"each component value shall be greater than zero\" (VRML97 6.7 too); the UOMs give no range",
+    },
+    FieldOverride {
+        versions: ALL,
+        node: "Extrusion",
+        field: "scale",
+        change: Change::Min(excl(0.0)),
+        clause: "13.3.5 Extrusion",
+        why: "the table gives (0,∞) for each scale value (VRML97 6.18 too); the UOMs give no range",
+    },
+    FieldOverride {
+        versions: V4,
+        node: "Rectangle2D",
+        field: "size",
+        change: Change::Min(excl(0.0)),
+        clause: "14.4.8 Rectangle2D",
+        why: "the table gives (0,∞), as the 3.x UOMs do; the 4.x UOMs give no range",
+    },
+    // ---- 15 Text ----
+    FieldOverride {
+        versions: ALL,
+        node: "X3DFontStyleNode",
+        field: "style",
+        change: Change::AlsoValid(&[""]),
+        clause: "15.2.2.2",
+        why: "an empty style value is identical to \"PLAIN\" (as in VRML97 6.20); the UOM's list, like the XML Schema's, lacks it",
+    },
+    FieldOverride {
+        versions: ALL,
+        node: "X3DFontStyleNode",
+        field: "justify",
+        change: Change::AlsoValid(&["\"\""]),
+        clause: "15.2.2.3",
+        why: "justify values of \"\", \"BEGIN\" and \"BEGIN\" \"FIRST\" are equivalent (as in VRML97 6.20); the UOM's list lacks the empty string",
     },
     // ---- 8 Time ----
     FieldOverride {

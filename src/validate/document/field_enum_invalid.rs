@@ -11,7 +11,8 @@ crate::declare_rule! {
     /// field whose values are a closed list in the X3D Unified Object Model of the
     /// document's version (Appearance.alphaMode, TextureCoordinateGenerator.mode,
     /// TextureProperties boundary modes, filters and compression, MultiTexture
-    /// mode/source/function, PointProperties.colorMode, …). Each string of an MFString
+    /// mode/source/function, …), with the values a clause adds to the UOM's list (an
+    /// empty FontStyle `style` or `justify`, 15.2.2.2–3). Each string of an MFString
     /// is checked on its own against every string the allowed values are made of (the
     /// UOM lists MFString values whole, as combinations such as `"MIDDLE" "BEGIN"`).
     /// Values are case-sensitive, and a case slip gets a suggestion. The `category` of a

@@ -10,9 +10,9 @@ use crate::validate::Ctx;
 crate::declare_rule! {
     /// ## What it does
     /// Reports a field that the node's type has in another X3D version but not in the
-    /// document's: `backMaterial` in 3.x; `alphaMode`, `alphaCutoff`, `castShadow`,
-    /// `markerType`, AcousticProperties `description`/`enabled` in 4.0;
-    /// PointProperties `colorMode` in 4.1. In a VRML97 file, every field X3D added or
+    /// document's, as the published UOM and XML Schema of each version say (not the
+    /// drafts): `backMaterial`, `alphaMode`, `alphaCutoff`, `castShadow` in 3.x;
+    /// PointProperties `markerType` in 4.0. In a VRML97 file, every field X3D added or
     /// renamed: `metadata`, Collision `enabled` (VRML97's `collide`), LOD and Switch
     /// `children` (VRML97's `level` and `choice`), TimeSensor `pauseTime`, and the others
     /// `docs/vrml97-vs-x3d.md` lists; in an X3D file, those three VRML97 names. A node
@@ -27,7 +27,7 @@ crate::declare_rule! {
     ///
     /// ## Example
     /// ```xml
-    /// <X3D version='4.0' profile='Interchange'>
+    /// <X3D version='3.3' profile='Interchange'>
     ///   <Scene><Shape><Appearance alphaMode='BLEND'/><Box/></Shape></Scene>
     /// </X3D>
     /// ```

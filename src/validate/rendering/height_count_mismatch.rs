@@ -33,7 +33,9 @@ crate::declare_rule! {
     /// 19775-1 13.3.4 ElevationGrid ("The height field is an xDimension by zDimension
     /// array of scalar values"); GeoElevationGrid of the Geospatial component (clause 25),
     /// whose height array is laid out the same way. The clause fixes the count, so more
-    /// heights than grid points are reported as well as fewer.
+    /// heights than grid points are reported as well as fewer. A grid with no `height`
+    /// written is reported as having none (its default is empty; GeoElevationGrid's two
+    /// zeros are not counted as if written), unless the default fits the grid.
     pub static HEIGHT_COUNT_MISMATCH = {
         severity: Error,
         level: Standard,
@@ -67,22 +69,41 @@ fn check(ctx: &mut Ctx) {
             // Both below 2^31: the product fits in 64 bits.
             let points = x * z;
             let given = height.len() as u64;
-            if given != points {
-                let span = FIELDS
-                    .iter()
-                    .rev()
-                    .find_map(|f| node.entry(f))
-                    .map_or(node.name_span, |e| e.span);
-                found.push((id, span, type_name, x, z, points, given));
+            if given == points {
+                continue;
             }
+            let span = FIELDS
+                .iter()
+                .rev()
+                .find_map(|f| node.entry(f))
+                .map_or(node.name_span, |e| e.span);
+            // A dimension the author left out is 0 by the tables (the 3.x UOMs say 2, so
+            // files written with them may leave a 2 out): say so.
+            let unwritten: Vec<&str> = FIELDS[..2]
+                .iter()
+                .copied()
+                .filter(|f| node.entry(f).is_none())
+                .collect();
+            let defaults = match unwritten.as_slice() {
+                [] => String::new(),
+                [one] => format!(" ({one} is not written: its default is 0)"),
+                _ => {
+                    " (xDimension and zDimension are not written: their defaults are 0)".to_string()
+                }
+            };
+            // An unwritten height is the table's default (none for ElevationGrid, two zeros
+            // for GeoElevationGrid): the author gave no heights, so none are counted.
+            let message = if node.entry("height").is_none() {
+                format!("{type_name} has no height field for its {x} × {z} = {points} grid points{defaults}: it needs one height per point")
+            } else {
+                let only = if given < points { "only " } else { "" };
+                let values = if given == 1 { "value" } else { "values" };
+                format!("{type_name} has {only}{given} height {values} for its {x} × {z} = {points} grid points{defaults}: it needs one per point")
+            };
+            found.push((id, span, message));
         }
     }
-    for (id, span, type_name, x, z, points, given) in found {
-        let only = if given < points { "only " } else { "" };
-        let values = if given == 1 { "value" } else { "values" };
-        let message = format!(
-            "{type_name} has {only}{given} height {values} for its {x} × {z} = {points} grid points: it needs one per point"
-        );
+    for (id, span, message) in found {
         ctx.report(Diagnostic::new(&HEIGHT_COUNT_MISMATCH, span, message).node(id));
     }
 }

@@ -6,7 +6,8 @@ use crate::validate::Ctx;
 
 crate::declare_rule! {
     /// ## What it does
-    /// Reports an Appearance (X3D 4.1) that sets `alphaCutoff` explicitly while its
+    /// Reports an Appearance (X3D 4.0 and later: the published 4.0 has `alphaMode`, the 4.0
+    /// drafts do not) that sets `alphaCutoff` explicitly while its
     /// `alphaMode` is OPAQUE or BLEND. With AUTO (the default) the browser may choose MASK,
     /// so the cutoff may be used and is not reported.
     ///
@@ -21,18 +22,18 @@ crate::declare_rule! {
     /// ```
     ///
     /// ## Clause
-    /// 19775-1 12.4.2 Appearance (X3D 4.1).
+    /// 19775-1 12.4.2 Appearance (X3D 4.0, 4.1).
     pub static ALPHA_CUTOFF_UNUSED = {
         severity: Hint,
         level: Standard,
         clause: "12.4.2",
-        versions: "4.1",
+        versions: "4.x",
         check: Some(check),
     }
 }
 
 fn check(ctx: &mut Ctx) {
-    if ctx.version < Version::V4_1 {
+    if ctx.version < Version::V4_0 {
         return;
     }
     let doc = ctx.doc;
