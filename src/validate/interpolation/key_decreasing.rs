@@ -33,6 +33,7 @@ crate::declare_rule! {
     /// interpolator nodes of clause 19. Reading: EaseInEaseOut (19.4.4), listed among
     /// them in 19.2.1 and with a key field of the same role, is held to it too, and so is
     /// GeoPositionInterpolator (25), an X3DInterpolatorNode.
+    /// > "The keys shall be monotonically non-decreasing" (19775-1 19.2.2)
     pub static KEY_DECREASING = {
         severity: Error,
         level: Standard,

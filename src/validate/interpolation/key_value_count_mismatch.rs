@@ -51,6 +51,7 @@ crate::declare_rule! {
     /// spline clauses' "same number" is not applied to an empty keyVelocity, the default,
     /// from which 19.2.4 computes the velocities. Values with no keys are reported (no
     /// integer multiple of zero is non-zero).
+    /// > "shall contain exactly as many values as in the key field" (19775-1 19.4.7)
     pub static KEY_VALUE_COUNT_MISMATCH = {
         severity: Error,
         level: Standard,
