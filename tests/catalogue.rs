@@ -16,6 +16,15 @@ struct Entry {
 /// them. A code leaves this list when its rule lands (the test fails until it does).
 const PENDING: &[(&str, u32)] = &[];
 
+/// Codes whose severity departs on purpose from the catalogue's, with the severity they
+/// have and why. A code leaves this list when the catalogue agrees (the test fails until
+/// it does), so the list cannot go stale.
+const LOWERED: &[(&str, Severity, &str)] = &[(
+    "LIGHT_DIRECTION_ZERO",
+    Severity::Warning,
+    "issue 32: no 'shall' on the file; 17.4.1 gives direction the range (-∞,∞)",
+)];
+
 /// The table rows of RULES.md: `| CODE | sev | …`. §1 and §7 are the fast level; a
 /// table with a `lvl` column says the level in it; elsewhere a rule is standard unless
 /// the severity says "(deep)". For a severity that depends on version or
@@ -94,7 +103,15 @@ fn every_catalogue_code_is_implemented_as_catalogued() {
                 entry.code
             )),
             (Some(rule), None) => {
-                if rule.severity != entry.severity {
+                let lowered = LOWERED.iter().find(|(code, ..)| *code == entry.code);
+                if let Some((_, severity, why)) = lowered {
+                    if rule.severity != *severity || entry.severity == *severity {
+                        problems.push(format!(
+                            "{}: severity {} (catalogue: {}; LOWERED says {severity}: {why})",
+                            entry.code, rule.severity, entry.severity
+                        ));
+                    }
+                } else if rule.severity != entry.severity {
                     problems.push(format!(
                         "{}: severity {} (catalogue: {})",
                         entry.code, rule.severity, entry.severity
@@ -107,6 +124,11 @@ fn every_catalogue_code_is_implemented_as_catalogued() {
                     ));
                 }
             }
+        }
+    }
+    for (code, ..) in LOWERED {
+        if !entries.iter().any(|entry| entry.code == *code) {
+            problems.push(format!("{code}: on LOWERED but not in the catalogue"));
         }
     }
     assert!(

@@ -25,6 +25,7 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19776-1 (and -2, -5), the compressed forms of the encodings; RFC 1952 (gzip).
+    /// > "A compliant decompressor must check ID1, ID2, and CM, and provide an error indication if any of these have incorrect values" (RFC 1952 2.3.1.2)
     pub static GZIP_CORRUPT = {
         severity: Error,
         level: Fast,

@@ -14,6 +14,7 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19776-5 (JSON encoding); RFC 8259.
+    /// > "JSON-text = ws value ws" (RFC 8259 2, the grammar the text does not match)
     pub static JSON_MALFORMED = {
         severity: Error,
         level: Fast,

@@ -16,6 +16,7 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19776-1 (XML encoding) 4.1; XML 1.0 2.1 Well-formed documents.
+    /// > "Taken as a whole, it matches the production labeled document" (XML 1.0 2.1, the definition of a well-formed document)
     pub static XML_MALFORMED = {
         severity: Error,
         level: Fast,

@@ -21,6 +21,7 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 5.3.12 SFNode and MFNode.
+    /// > "SFxxxx fields may only contain a single value of the type indicated by the name of the field type" (19775-1 5.2.3)
     pub static SFNODE_MULTIPLE = {
         severity: Error,
         level: Fast,

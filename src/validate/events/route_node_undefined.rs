@@ -27,6 +27,7 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 4.4.8.2 Routes, 4.4.7 Run-time name scope.
+    /// > "Nodes referenced in a ROUTE statement shall be defined before the ROUTE statement" (14772-1 4.10.2; the order is not checked, only that the node is defined)
     pub static ROUTE_NODE_UNDEFINED = {
         severity: Error,
         level: Standard,

@@ -26,6 +26,7 @@ crate::declare_rule! {
     /// ## Clause
     /// 19775-1 4.4.8.2 Routes: the destination field's type shall be the same as the
     /// source field's.
+    /// > "The types of the eventIn and the eventOut shall match exactly" (14772-1 4.10.2; 19775-1 4.4.8.2 keeps the rule for input and output fields)
     pub static ROUTE_TYPE_MISMATCH = {
         severity: Error,
         level: Standard,

@@ -46,6 +46,7 @@ crate::declare_rule! {
     /// matching is case sensitive". Reading: a value that designates no frame, or two,
     /// has no defined meaning, so it is reported as an error like the missing zone the
     /// clause requires.
+    /// > "one further required argument must be supplied" (19775-1 25.2.3)
     pub static GEO_SYSTEM_INVALID = {
         severity: Error,
         level: Standard,

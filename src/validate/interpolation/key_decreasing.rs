@@ -38,6 +38,7 @@ crate::declare_rule! {
     /// says the same of the sequencers' keys in the same words ("The keys shall be
     /// monotonically non-decreasing, otherwise the results are undefined"), so this code
     /// covers them too.
+    /// > "The keys shall be monotonically non-decreasing" (19775-1 19.2.2)
     pub static KEY_DECREASING = {
         severity: Error,
         level: Standard,

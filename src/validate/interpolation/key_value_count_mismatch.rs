@@ -55,6 +55,7 @@ crate::declare_rule! {
     /// integer multiple of zero is non-zero). 30.3.1 X3DSequencerNode: "The
     /// piecewise-linear function is defined by n values of t, called key, and the n
     /// corresponding values of f(t), called keyValue" (the same one value per key).
+    /// > "shall contain exactly as many values as in the key field" (19775-1 19.4.7)
     pub static KEY_VALUE_COUNT_MISMATCH = {
         severity: Error,
         level: Standard,

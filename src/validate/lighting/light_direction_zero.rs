@@ -21,8 +21,12 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 17.4.1 DirectionalLight, 17.4.4 SpotLight, 17.2.2 Lighting model.
+    /// A warning, not an error: no sentence forbids the zero vector. The interface
+    /// tables give `direction` the range `(-∞,∞)`, and the text only says that it
+    /// "specifies the direction vector of the illumination" (17.4.1); what a zero vector
+    /// lights is left undefined, not made wrong (issue 32).
     pub static LIGHT_DIRECTION_ZERO = {
-        severity: Error,
+        severity: Warning,
         level: Standard,
         clause: "17.4.1",
         versions: "all",

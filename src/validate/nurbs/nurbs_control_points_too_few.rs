@@ -35,6 +35,7 @@ crate::declare_rule! {
     /// greater than the order"), and the same for each direction of the surfaces
     /// (27.3.2 X3DNurbsSurfaceGeometryNode: `uDimension` and `vDimension` are the numbers
     /// of control points in each direction).
+    /// > "The number of control points shall be equal to or greater than the order" (19775-1 27.4.4)
     pub static NURBS_CONTROL_POINTS_TOO_FEW = {
         severity: Error,
         level: Standard,

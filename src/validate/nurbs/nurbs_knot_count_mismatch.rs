@@ -45,6 +45,7 @@ crate::declare_rule! {
     /// X3DNurbsSurfaceGeometryNode, 27.4.10 NurbsSurfaceInterpolator and 27.4.13
     /// NurbsTextureCoordinate. Reading: the browser's fallback makes the file usable, not
     /// correct, so the "shall" is an error.
+    /// > "The number of knots shall be equal to the number of control points plus the order of the curve" (19775-1 27.4.4)
     pub static NURBS_KNOT_COUNT_MISMATCH = {
         severity: Error,
         level: Standard,

@@ -50,6 +50,7 @@ crate::declare_rule! {
     /// value", is not checked: read to the letter it forbids the clamped end knots
     /// (`0 0 0 … 1 1 1` for order 3) that the clause's own examples and every exporter
     /// write.
+    /// > "The order shall be non-decreasing" (19775-1 27.4.4; read as said of the knots)
     pub static NURBS_KNOT_DECREASING = {
         severity: Error,
         level: Standard,

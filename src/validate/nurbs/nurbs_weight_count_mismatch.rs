@@ -40,6 +40,7 @@ crate::declare_rule! {
     /// of 1.0 shall be used"), the same in 27.4.13 NurbsTextureCoordinate. Reading: the
     /// curves pair `weight[i]` with control point i in the same way (27.4.4 NurbsCurve),
     /// so the count is held to them too.
+    /// > "The number of values shall be identical to the number of control points" (19775-1 27.3.2)
     pub static NURBS_WEIGHT_COUNT_MISMATCH = {
         severity: Error,
         level: Standard,

@@ -46,6 +46,7 @@ crate::declare_rule! {
     /// `QUAD` gives the four corners counter-clockwise, `TRIANGLE` "only four coordinates
     /// are supplied, representing the four corners of the quad"; `POINT`, `SPRITE` and
     /// `GEOMETRY` ignore the ramp.
+    /// > "The node placed in texCoordRamp shall have enough values to work with the numbers required by geometryType" (19775-1 40.4.5)
     pub static PARTICLE_TEXCOORD_RAMP_SHORT = {
         severity: Error,
         level: Standard,

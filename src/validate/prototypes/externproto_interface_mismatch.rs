@@ -35,6 +35,7 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 4.4.5.2 EXTERNPROTO interface semantics.
+    /// > "shall be a subset of those defined in the implementation" (14772-1 4.9.2, said of the names and types of the interface declaration)
     pub static EXTERNPROTO_INTERFACE_MISMATCH = {
         severity: Error,
         level: Deep,

@@ -53,6 +53,7 @@ crate::declare_rule! {
     /// ## Clause
     /// 19775-1 11.4 (the triangle sets, IndexedLineSet, LineSet, PointSet), 13.3.4
     /// ElevationGrid, 13.3.6 IndexedFaceSet, 32.4.5 IndexedQuadSet, 32.4.6 QuadSet.
+    /// > "there shall be at least as many values as are present in the coord field" (19775-1 11.4.6, and the other triangle sets of 11.4)
     pub static ATTRIBUTE_COUNT_INSUFFICIENT = {
         severity: Error,
         level: Standard,

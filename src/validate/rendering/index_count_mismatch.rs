@@ -42,6 +42,7 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 13.3.6 IndexedFaceSet; 11.4 IndexedLineSet (its colour rules).
+    /// > "The colorIndex field shall contain at least as many indices as the coordIndex field" (19775-1 13.3.6; the same for normalIndex and texCoordIndex)
     pub static INDEX_COUNT_MISMATCH = {
         severity: Error,
         level: Standard,

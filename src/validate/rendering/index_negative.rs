@@ -35,6 +35,7 @@ crate::declare_rule! {
     /// ## Clause
     /// 19775-1 11.4.4, 11.4.6–11.4.8, 13.3.6, 32.4.5 (the `[0,∞) or -1` ranges and the
     /// text on per-face index lists).
+    /// > "MFInt32 [] coordIndex [] [0,∞) or -1" (19775-1 11.4.4, the interface table's range)
     pub static INDEX_NEGATIVE = {
         severity: Error,
         level: Standard,

@@ -37,6 +37,7 @@ crate::declare_rule! {
     /// ## Clause
     /// 19775-1 11.4.4 (IndexedLineSet), 11.4.6–11.4.8 (indexed triangle sets), 13.3.6
     /// (IndexedFaceSet), 32.4.5 (IndexedQuadSet).
+    /// > "If the greatest index in the colorIndex field is N, then there shall be N+1 colours in the Color node" (19775-1 13.3.6; the same for the other index fields)
     pub static INDEX_OUT_OF_RANGE = {
         severity: Error,
         level: Standard,

@@ -22,6 +22,7 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 11.2.1 (normals shall have unit length), 11.4.10 Normal.
+    /// > "When specified as part of the content, normals shall have unit length" (19775-1 11.2.1)
     pub static NORMAL_ZERO = {
         severity: Error,
         level: Deep,

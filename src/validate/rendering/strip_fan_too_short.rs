@@ -29,6 +29,8 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 11.4.6 IndexedTriangleFanSet, 11.4.8 IndexedTriangleStripSet.
+    /// > "Each fan shall have at least three non-coincident vertices" (19775-1 11.4.6)
+    /// > "Each strip shall have at least three non-coincident vertices" (19775-1 11.4.8)
     pub static STRIP_FAN_TOO_SHORT = {
         severity: Error,
         level: Standard,

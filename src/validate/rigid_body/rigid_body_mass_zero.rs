@@ -30,6 +30,7 @@ crate::declare_rule! {
     /// kilograms. All bodies shall have a non-zero mass, with the default value of 1
     /// kilogram." The interface table gives `mass` no range, so FIELD_OUT_OF_RANGE does
     /// not report it.
+    /// > "All bodies shall have a non-zero mass" (19775-1 37.4.10)
     pub static RIGID_BODY_MASS_ZERO = {
         severity: Error,
         level: Standard,

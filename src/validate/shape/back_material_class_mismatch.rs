@@ -27,6 +27,7 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 12.2.3 Two-sided materials; 12.4.2 Appearance.
+    /// > "The node type provided to backMaterial (if any) must match the node type provided to material" (19775-1 12.4.2)
     pub static BACK_MATERIAL_CLASS_MISMATCH = {
         severity: Error,
         level: Standard,

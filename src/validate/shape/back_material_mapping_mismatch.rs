@@ -26,6 +26,7 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 12.2.3 Two-sided materials, item 2; 12.2.4.
+    /// > "the values of the fields xxxTexture and xxxTextureMapping … shall be equal for both front and back materials" (19775-1 12.2.3)
     pub static BACK_MATERIAL_MAPPING_MISMATCH = {
         severity: Error,
         level: Standard,

@@ -24,6 +24,7 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 12.2.3 Two-sided materials.
+    /// > "It is not allowed to provide a backMaterial when the material specifies a TwoSidedMaterial" (19775-1 12.2.3)
     pub static BACK_MATERIAL_WITH_TWO_SIDED = {
         severity: Error,
         level: Standard,

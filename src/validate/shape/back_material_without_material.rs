@@ -22,6 +22,7 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 12.2.3 Two-sided materials; 12.4.2 Appearance.
+    /// > "It is only allowed to define a backMaterial if the material is also defined (not NULL)" (19775-1 12.4.2)
     pub static BACK_MATERIAL_WITHOUT_MATERIAL = {
         severity: Error,
         level: Standard,

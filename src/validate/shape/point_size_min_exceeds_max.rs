@@ -23,6 +23,7 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 12.4.7 PointProperties.
+    /// > "The provided value for pointSizeMinValue must be less than or equal to value for pointSizeMaxValue" (19775-1 12.4.7)
     pub static POINT_SIZE_MIN_EXCEEDS_MAX = {
         severity: Error,
         level: Standard,

@@ -27,6 +27,7 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 12.2.4.1 Texture coordinates.
+    /// > "All the X3DSingleTextureCoordinateNode nodes on the list of texture coordinates defined above must have a different mapping value" (19775-1 12.2.4.1)
     pub static TEXCOORD_MAPPING_DUPLICATE = {
         severity: Error,
         level: Standard,

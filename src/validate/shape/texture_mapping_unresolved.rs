@@ -40,6 +40,7 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 12.2.4.1 Texture coordinates.
+    /// > "it must refer to a corresponding X3DSingleTextureCoordinateNode node" (19775-1 V4.0 12.2.4.1; 4.1 says "should", hence a warning there)
     pub static TEXTURE_MAPPING_UNRESOLVED = {
         severity: Error,
         level: Standard,

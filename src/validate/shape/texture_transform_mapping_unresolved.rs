@@ -43,6 +43,7 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 12.2.4.2 Texture coordinates transformation.
+    /// > "it must refer to a corresponding X3DSingleTextureTransformNode node within the list of texture transformations" (19775-1 V4.0 12.2.4.2; 4.1 says "should", hence a warning there)
     pub static TEXTURE_TRANSFORM_MAPPING_UNRESOLVED = {
         severity: Error,
         level: Standard,

@@ -42,6 +42,7 @@ crate::declare_rule! {
     /// coordinates, and shall be greater than or equal to zero. The minBack field shall be
     /// less than or equal to maxBack, and minFront shall be less than or equal to
     /// maxFront." The first sentence is the fields' range, which FIELD_OUT_OF_RANGE checks.
+    /// > "The minBack field shall be less than or equal to maxBack, and minFront shall be less than or equal to maxFront" (19775-1 16.4.2)
     pub static SOUND_MIN_EXCEEDS_MAX = {
         severity: Error,
         level: Standard,

@@ -27,6 +27,7 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 5.3.6 SFImage and MFImage; 18.4.6 PixelTexture; 33.4.5 PixelTexture3D.
+    /// > "SFImage fields contain three integers representing the width, height and number of components in the image, followed by width×height hexadecimal or integer values" (19775-1 5.3.6, the form of the value)
     pub static PIXEL_TEXTURE_SIZE_MISMATCH = {
         severity: Error,
         level: Standard,
