@@ -306,7 +306,7 @@ pub fn attribute_lists<'a>(
 /// The places of a field's numbers, found in one forward pass: asking for the k-th number
 /// after the j-th (k ≥ j) costs only the text between them, so that reporting every bad
 /// element of a million-element field stays linear. Separators are those of the XML and
-/// JSON encodings (white space, commas, brackets).
+/// JSON encodings (white space, commas, brackets), and comments in ClassicVRML.
 pub struct ScalarSpans<'s> {
     text: &'s [u8],
     base: usize,
@@ -339,8 +339,15 @@ impl<'s> ScalarSpans<'s> {
                 self.at += 1;
                 continue;
             }
+            if self.text[self.at] == b'#' {
+                self.at = crate::validate::comment_end(self.text, self.at);
+                continue;
+            }
             let start = self.at;
-            while self.at < self.text.len() && !is_separator(self.text[self.at]) {
+            while self.at < self.text.len()
+                && !is_separator(self.text[self.at])
+                && self.text[self.at] != b'#'
+            {
                 self.at += 1;
             }
             self.seen += 1;
