@@ -372,6 +372,29 @@ impl<'s> ScalarSpans<'s> {
     }
 }
 
+/// The numbers written in `text` (a span of a field's value), one space apart: without
+/// the comments and line breaks a ClassicVRML value may hold between them.
+fn numbers_text(text: &[u8]) -> String {
+    let mut words = Vec::new();
+    let mut at = 0;
+    while at < text.len() {
+        match text[at] {
+            b'#' => at = crate::validate::comment_end(text, at),
+            b if b.is_ascii_whitespace() || b == b',' => at += 1,
+            _ => {
+                let start = at;
+                while at < text.len()
+                    && !(text[at].is_ascii_whitespace() || matches!(text[at], b',' | b'#'))
+                {
+                    at += 1;
+                }
+                words.push(String::from_utf8_lossy(&text[start..at]));
+            }
+        }
+    }
+    words.join(" ")
+}
+
 /// A LineSet, TriangleStripSet or TriangleFanSet with its count field and coordinates.
 pub struct Counted<'a> {
     pub type_name: &'static str,
@@ -443,8 +466,7 @@ pub fn each_normal(ctx: &mut Ctx, rule: &'static Rule, judge: impl Fn(f64) -> Op
             };
             ctx.report_repeated(rule, id, "vector", k, || {
                 let span = spans.span_of(3 * k, 3 * k + 2);
-                let text = String::from_utf8_lossy(source.get(span.range()).unwrap_or_default())
-                    .into_owned();
+                let text = numbers_text(source.get(span.range()).unwrap_or_default());
                 Diagnostic::new(rule, span, format!("Normal.vector[{k}] = {text} {what}"))
                     .node(id)
                     .value(text)
