@@ -167,3 +167,40 @@ fn one_cause_gives_one_diagnostic() {
     ));
     assert_eq!(codes, ["INDEX_NEGATIVE"]);
 }
+
+/// The findings of a ClassicVRML or VRML97 text that are about its syntax.
+fn syntax_codes(text: &str) -> Vec<String> {
+    check_text(text)
+        .into_iter()
+        .filter(|c| {
+            matches!(
+                c.as_str(),
+                "VRML_MALFORMED" | "FIELD_UNKNOWN" | "FIELD_VALUE_SYNTAX" | "NODE_UNKNOWN"
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn one_classic_syntax_error_gives_one_diagnostic() {
+    // A PROTO in a node list: read where it stands, its instance known.
+    let codes = syntax_codes(
+        "#VRML V2.0 utf8\nTransform { children [ Shape { } PROTO P [ field SFFloat s 1 ] { Group { } } Group { } ] translation 1 0 0 }\nP { s 2 }\n",
+    );
+    assert_eq!(codes, ["VRML_MALFORMED"]);
+    // A ROUTE in a node list.
+    let codes = syntax_codes(
+        "#X3D V3.3 utf8\nPROFILE Interchange\nDEF T TimeSensor { }\nDEF G Group { children [ DEF I ScalarInterpolator { } ROUTE T.fraction_changed TO I.set_fraction Shape { } ] }\n",
+    );
+    assert_eq!(codes, ["VRML_MALFORMED"]);
+    // A name that is neither a node nor a field of the enclosing node, with a value.
+    let codes = syntax_codes(
+        "#VRML V2.0 utf8\nTransform { children [ Shape { } Bogus [ 1 2 3 ] Shape { } ] translation 1 0 0 }\n",
+    );
+    assert_eq!(codes, ["VRML_MALFORMED"]);
+    // A string that never ends swallows the rest of the file, braces included.
+    let codes = syntax_codes("#VRML V2.0 utf8\nGroup { children [ WorldInfo { title \"abc } ] }\n");
+    assert_eq!(codes, ["VRML_MALFORMED"]);
+    let codes = syntax_codes("#VRML V2.0 utf8\nGroup { children [ Anchor { url [ \"abc ] } ] }\n");
+    assert_eq!(codes, ["VRML_MALFORMED"]);
+}

@@ -6,7 +6,7 @@ use super::rules::{
     DEF_DUPLICATE, FIELD_DUPLICATE, LIMIT_EXCEEDED, USE_CYCLE, USE_TYPE_MISMATCH, USE_UNDEFINED,
 };
 use super::*;
-use crate::diagnostic::Diagnostic;
+use crate::diagnostic::{Diagnostic, Severity};
 use crate::schema::{self, Version};
 
 /// Where a node being added goes.
@@ -297,22 +297,40 @@ impl Builder {
         }
     }
 
-    /// Records `DEF` on a node. A name already defined in this scope keeps its first node.
+    /// Records `DEF` on a node. In X3D a name already defined in this scope keeps its
+    /// first node (an error); in VRML97 the later DEF takes the name over (a warning),
+    /// since a USE there names the most recent DEF (14772-1 4.6.2).
     pub fn define(&mut self, id: NodeId, name: Named) {
         let key = (self.scope(), name.text.clone());
         if let Some(&first) = self.doc.defs.get(&key) {
+            let vrml97 = self.doc.encoding == Encoding::Vrml97;
             let first_span = self.doc.node(first).def_name.as_ref().map(|d| d.span);
-            let mut diagnostic = Diagnostic::new(
-                &DEF_DUPLICATE,
-                name.span,
-                format!("DEF name `{}` is already defined in this scope", name.text),
-            )
+            let mut diagnostic = if vrml97 {
+                Diagnostic::new(
+                    &DEF_DUPLICATE,
+                    name.span,
+                    format!(
+                        "DEF name `{}` is already defined in this scope: VRML97 lets this DEF take it over for what follows, X3D does not",
+                        name.text
+                    ),
+                )
+                .severity(Severity::Warning)
+            } else {
+                Diagnostic::new(
+                    &DEF_DUPLICATE,
+                    name.span,
+                    format!("DEF name `{}` is already defined in this scope", name.text),
+                )
+            }
             .node(id)
             .value(name.text.clone());
             if let Some(first_span) = first_span {
                 diagnostic = diagnostic.related(first_span, "first defined here");
             }
             self.report(diagnostic);
+            if vrml97 {
+                self.doc.defs.insert(key, id);
+            }
         } else {
             self.doc.defs.insert(key, id);
         }

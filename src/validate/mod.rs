@@ -241,8 +241,12 @@ impl Ctx<'_> {
                 at += 1;
                 continue;
             }
+            if text[at] == b'#' {
+                at = comment_end(text, at);
+                continue;
+            }
             let start = at;
-            while at < text.len() && !is_separator(text[at]) {
+            while at < text.len() && !is_separator(text[at]) && text[at] != b'#' {
                 at += 1;
             }
             if seen == k {
@@ -252,6 +256,19 @@ impl Ctx<'_> {
         }
         entry.span
     }
+}
+
+/// The end of the comment starting at `at` (a `#`) in the text of a field's value: a
+/// block comment `#/* … */#` (19776-2 A.1.2) or the rest of the line. Only ClassicVRML
+/// and VRML97 values hold comments; in XML and JSON a `#` among numbers fails to parse,
+/// so no rule asks for the place of a number there.
+pub fn comment_end(text: &[u8], at: usize) -> usize {
+    if text[at + 1..].starts_with(b"/*") {
+        if let Some(k) = memchr::memmem::find(&text[at + 3..], b"*/#") {
+            return at + 3 + k + 3;
+        }
+    }
+    memchr::memchr2(b'\n', b'\r', &text[at..]).map_or(text.len(), |k| at + k)
 }
 
 /// Runs every enabled rule with a check on `doc`, read from `file` (None: standard input).

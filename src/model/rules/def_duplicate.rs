@@ -6,8 +6,14 @@ crate::declare_rule! {
     /// one ProtoBody).
     ///
     /// ## Why it matters
-    /// DEF names identify nodes for `USE` and `ROUTE`. A second definition is an error;
-    /// browsers disagree on which node a later USE gets. x3dcheck keeps the first.
+    /// DEF names identify nodes for `USE` and `ROUTE`. In X3D a second definition is an
+    /// error; browsers disagree on which node a later USE gets. x3dcheck keeps the first.
+    ///
+    /// VRML97 allows it: "If multiple nodes are given the same name, each USE statement
+    /// refers to the closest node with the given name preceding it in either the VRML
+    /// file or prototype definition" (14772-1 4.6.2). In a VRML97 file (`#VRML V2.0`)
+    /// the finding is a warning, since the file stops being valid once converted to X3D,
+    /// and the later DEF takes the name over for the USEs and ROUTEs that follow.
     ///
     /// ## Example
     /// ```xml
@@ -16,7 +22,7 @@ crate::declare_rule! {
     /// ```
     ///
     /// ## Clause
-    /// 19775-1 4.4.3 DEF/USE semantics; 4.4.7 Run-time name scope.
+    /// 19775-1 4.4.3 DEF/USE semantics; 4.4.7 Run-time name scope; 14772-1 4.6.2.
     pub static DEF_DUPLICATE = {
         severity: Error,
         level: Fast,

@@ -540,10 +540,13 @@ impl<'s> Reader<'s> {
                 true
             }
             Kind::End => {
-                self.malformed(
-                    token.span(),
-                    format!("the file ends inside {what}: `]` is missing"),
-                );
+                if !self.end_reported {
+                    self.end_reported = true;
+                    self.malformed(
+                        token.span(),
+                        format!("the file ends inside {what}: `]` is missing"),
+                    );
+                }
                 true
             }
             _ => false,
@@ -1087,18 +1090,49 @@ impl<'s> Reader<'s> {
                     );
                     return;
                 }
-                Kind::Id if !matches!(token.text, "PROTO" | "EXTERNPROTO" | "ROUTE" | "NULL") => {
+                Kind::Id if matches!(token.text, "PROTO" | "EXTERNPROTO" | "ROUTE") => {
+                    // One finding, and the statement read as if written outside the
+                    // list: skipping token by token would misread its interface and
+                    // body as nodes and fields, and its prototype's instances as unknown.
+                    self.malformed(
+                        token.span(),
+                        format!(
+                            "a {} statement where a node belongs: a node list holds node statements only",
+                            token.text
+                        ),
+                    );
+                    self.lexer.next();
+                    if token.text == "ROUTE" {
+                        self.route(token);
+                    } else {
+                        self.proto(token);
+                    }
+                }
+                Kind::Id if token.text != "NULL" => {
                     // A name followed by a name is a field of the enclosing node: the
                     // list's `]` is missing.
                     if !matches!(token.text, "DEF" | "USE") && !self.followed_by_brace(token) {
+                        if self.names_field_of_parent(hint, token.text) {
+                            self.malformed(
+                                token.span(),
+                                format!(
+                                    "`{}` where a node belongs: is the node list's `]` missing?",
+                                    token.text
+                                ),
+                            );
+                            return;
+                        }
+                        // Neither a node nor a field of the enclosing node: skipped with
+                        // the value that follows it, and the list read on.
                         self.malformed(
                             token.span(),
-                            format!(
-                                "`{}` where a node belongs: is the node list's `]` missing?",
-                                token.text
-                            ),
+                            format!("`{}` where a node belongs in a node list", token.text),
                         );
-                        return;
+                        self.lexer.next();
+                        if matches!(self.lexer.peek().kind, Kind::OpenBracket | Kind::OpenBrace) {
+                            self.skip_one();
+                        }
+                        continue;
                     }
                     self.node_statement(hint);
                 }
@@ -1119,6 +1153,17 @@ impl<'s> Reader<'s> {
                     }
                 }
             }
+        }
+    }
+
+    /// Whether `name` is a field of the node whose field value is being read (a name
+    /// there in a node list means the list's `]` is missing).
+    fn names_field_of_parent(&self, hint: Hint<'s>, name: &str) -> bool {
+        match hint {
+            Hint::Field { node, .. } => {
+                !matches!(self.builder.field_ref(node, name), FieldRef::Unknown { .. })
+            }
+            Hint::TopLevel | Hint::ProtoField { .. } => true,
         }
     }
 

@@ -104,6 +104,9 @@ impl<'s> Reader<'s> {
         }
         if token.is(Kind::Unterminated) {
             self.lexer.next();
+            // The string runs to the end of the file: the braces it swallowed are not
+            // reported missing as well.
+            self.end_reported = true;
             self.malformed(
                 token.span(),
                 format!(
@@ -143,6 +146,7 @@ impl<'s> Reader<'s> {
         let mut comments = Vec::new();
         let Some(close) = self.lexer.bracket_end(from, &mut comments) else {
             self.lexer.pos = self.lexer.text.len();
+            self.end_reported = true;
             self.malformed(
                 open.span(),
                 format!("the `[` of `{}` is never closed", name.text),

@@ -306,7 +306,7 @@ pub fn attribute_lists<'a>(
 /// The places of a field's numbers, found in one forward pass: asking for the k-th number
 /// after the j-th (k ≥ j) costs only the text between them, so that reporting every bad
 /// element of a million-element field stays linear. Separators are those of the XML and
-/// JSON encodings (white space, commas, brackets).
+/// JSON encodings (white space, commas, brackets), and comments in ClassicVRML.
 pub struct ScalarSpans<'s> {
     text: &'s [u8],
     base: usize,
@@ -339,8 +339,15 @@ impl<'s> ScalarSpans<'s> {
                 self.at += 1;
                 continue;
             }
+            if self.text[self.at] == b'#' {
+                self.at = crate::validate::comment_end(self.text, self.at);
+                continue;
+            }
             let start = self.at;
-            while self.at < self.text.len() && !is_separator(self.text[self.at]) {
+            while self.at < self.text.len()
+                && !is_separator(self.text[self.at])
+                && self.text[self.at] != b'#'
+            {
                 self.at += 1;
             }
             self.seen += 1;
@@ -363,6 +370,29 @@ impl<'s> ScalarSpans<'s> {
             end: end.end,
         }
     }
+}
+
+/// The numbers written in `text` (a span of a field's value), one space apart: without
+/// the comments and line breaks a ClassicVRML value may hold between them.
+fn numbers_text(text: &[u8]) -> String {
+    let mut words = Vec::new();
+    let mut at = 0;
+    while at < text.len() {
+        match text[at] {
+            b'#' => at = crate::validate::comment_end(text, at),
+            b if b.is_ascii_whitespace() || b == b',' => at += 1,
+            _ => {
+                let start = at;
+                while at < text.len()
+                    && !(text[at].is_ascii_whitespace() || matches!(text[at], b',' | b'#'))
+                {
+                    at += 1;
+                }
+                words.push(String::from_utf8_lossy(&text[start..at]));
+            }
+        }
+    }
+    words.join(" ")
 }
 
 /// A LineSet, TriangleStripSet or TriangleFanSet with its count field and coordinates.
@@ -436,8 +466,7 @@ pub fn each_normal(ctx: &mut Ctx, rule: &'static Rule, judge: impl Fn(f64) -> Op
             };
             ctx.report_repeated(rule, id, "vector", k, || {
                 let span = spans.span_of(3 * k, 3 * k + 2);
-                let text = String::from_utf8_lossy(source.get(span.range()).unwrap_or_default())
-                    .into_owned();
+                let text = numbers_text(source.get(span.range()).unwrap_or_default());
                 Diagnostic::new(rule, span, format!("Normal.vector[{k}] = {text} {what}"))
                     .node(id)
                     .value(text)
