@@ -101,8 +101,6 @@ const QUOTE_PENDING: &[&str] = &[
     "FIELD_VALUE_NONFINITE",
     "FIELD_VALUE_SYNTAX",
     "HANIM_SKIN_COORD_INDEX_OUT_OF_RANGE",
-    "HANIM_SKIN_WEIGHT_COUNT_MISMATCH",
-    "HEIGHT_COUNT_MISMATCH",
     "IMAGE_UNREADABLE",
     "IMPORT_UNRESOLVED",
     "INLINE_CYCLE",
@@ -133,6 +131,7 @@ const QUOTE_PENDING: &[&str] = &[
     "X3D_VERSION_MISSING",
     "X3D_VERSION_UNKNOWN",
     "XML_ENCODING_UNSUPPORTED",
+    "IMPORT_INLINE_UNDEFINED",
 ];
 
 /// An error says which "shall" it enforces: the `## Clause` section of every rule whose

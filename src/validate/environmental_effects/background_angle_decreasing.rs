@@ -38,6 +38,7 @@ crate::declare_rule! {
     /// restricted to non-decreasing values in the range [0.0, π/2]"; ISO/IEC 14772-1 6.5
     /// Background for VRML97, in the same words. Range and order are one restriction;
     /// the order is a rule between a field's values, as KEY_DECREASING's keys.
+    /// > "skyAngle is restricted to non-decreasing values in the range [0.0, π]" (19775-1 24.2.1)
     pub static BACKGROUND_ANGLE_DECREASING = {
         severity: Error,
         level: Standard,

@@ -39,6 +39,7 @@ crate::declare_rule! {
     /// more groundColor value than there are groundAngle values"; ISO/IEC 14772-1 6.5
     /// Background for VRML97, in the same words. Reading: no colours and no angles is the
     /// default of the ground (groundColor `[]`), a gradient not drawn, not a mismatch.
+    /// > "There shall be one more skyColor value than there are skyAngle values" (19775-1 24.2.1)
     pub static BACKGROUND_COLOR_COUNT_MISMATCH = {
         severity: Error,
         level: Standard,

@@ -37,6 +37,7 @@ crate::declare_rule! {
     /// 19775-1 14.4.4 Disk2D: "The value of innerRadius shall be greater than or equal to
     /// zero and less than or equal to outerRadius." The bound at zero is the field's
     /// range, which FIELD_OUT_OF_RANGE checks.
+    /// > "The value of innerRadius shall be greater than or equal to zero and less than or equal to outerRadius" (19775-1 14.4.4)
     pub static DISK2D_RADII_INVERTED = {
         severity: Error,
         level: Standard,

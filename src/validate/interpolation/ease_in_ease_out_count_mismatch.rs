@@ -34,6 +34,7 @@ crate::declare_rule! {
     /// the key field, and each Vec2f value of the easeInEaseOut field corresponds to the
     /// key value with the same index." (The EaseInEaseOut has no keyValue, so this is not
     /// KEY_VALUE_COUNT_MISMATCH's; its keys' order is KEY_DECREASING's.)
+    /// > "The easeInEaseOut field shall have the same size as the key field" (19775-1 19.4.4)
     pub static EASE_IN_EASE_OUT_COUNT_MISMATCH = {
         severity: Error,
         level: Standard,

@@ -36,6 +36,7 @@ crate::declare_rule! {
     /// shall be greater than zero." and "Each value in the range field shall be greater
     /// than the previous value." ISO/IEC 14772-1 6.26 LOD for VRML97, in the same words
     /// (there followed by "otherwise results are undefined").
+    /// > "Each value in the range field shall be greater than the previous value" (19775-1 23.4.3)
     pub static LOD_RANGE_NOT_INCREASING = {
         severity: Error,
         level: Standard,

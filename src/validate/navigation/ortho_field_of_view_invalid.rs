@@ -37,6 +37,7 @@ crate::declare_rule! {
     /// y, maximum x, maximum y) are those of the interface's default `-1 -1 1 1`; the
     /// clause names no other layout, so a count other than four leaves the relationship
     /// it requires unreadable and is reported under the same code.
+    /// > "The minimum and maximum values in each direction of the field of view shall have the relationship minimum < maximum" (19775-1 23.4.5)
     pub static ORTHO_FIELD_OF_VIEW_INVALID = {
         severity: Error,
         level: Standard,
