@@ -116,6 +116,9 @@ impl Preview {
 /// [`crate::config::CheckConfig::root`]; None: the document's directory) and never from
 /// outside it. None when `--render` was not given; Err: why no image can be made (no
 /// document, bad --camera, a build without the renderer).
+// Without the renderer `Unresolved` has no values, so everything after its first use is
+// unreachable; the function is kept so that callers need no feature gates.
+#[cfg_attr(not(feature = "render"), allow(unreachable_code, unused_variables))]
 pub fn prepare(
     args: &RenderArgs,
     path: &Path,
