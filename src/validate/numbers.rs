@@ -38,12 +38,16 @@ pub fn readable(value: f64) -> String {
 }
 
 /// The index of the first value smaller than the one before it, in a list that shall not
-/// decrease (interpolator and sequencer keys, background angles). Pairs with a NaN or an
-/// infinity have no order to judge (FIELD_VALUE_NONFINITE reports those).
-pub fn first_decrease(values: &[f32]) -> Option<usize> {
+/// decrease (interpolator and sequencer keys, background angles, NURBS knots). Pairs with
+/// a NaN or an infinity have no order to judge (FIELD_VALUE_NONFINITE reports those).
+/// SFFloat values compare exactly as f64.
+pub fn first_decrease<T: Copy + Into<f64>>(values: &[T]) -> Option<usize> {
     values
         .windows(2)
-        .position(|pair| pair[0].is_finite() && pair[1].is_finite() && pair[1] < pair[0])
+        .position(|pair| {
+            let (before, after) = (pair[0].into(), pair[1].into());
+            before.is_finite() && after.is_finite() && after < before
+        })
         .map(|at| at + 1)
 }
 
@@ -65,7 +69,7 @@ mod tests {
         assert_eq!(first_decrease(&[0.0, 0.5, 0.5, 1.0]), None);
         assert_eq!(first_decrease(&[0.0, 0.6, 0.4, 0.2]), Some(2));
         assert_eq!(first_decrease(&[1.0, f32::NAN, 0.0]), None);
-        assert_eq!(first_decrease(&[]), None);
+        assert_eq!(first_decrease::<f32>(&[]), None);
     }
 
     #[test]

@@ -3,6 +3,7 @@
 use super::{is_surface, CURVES};
 use crate::report::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
+use crate::validate::numbers::first_decrease;
 use crate::validate::rendering::geometry::ScalarSpans;
 use crate::validate::Ctx;
 
@@ -13,8 +14,8 @@ crate::declare_rule! {
     /// the NURBS surfaces, NurbsSurfaceInterpolator and NurbsTextureCoordinate) in which a
     /// knot is smaller than the knot before it, once per vector, at the first such knot.
     /// Equal knots (multiplicity) are fine. Fields a ROUTE sends values to or that take
-    /// their value through `IS` are left alone, and NaN (FIELD_VALUE_NONFINITE's) compares
-    /// as nothing.
+    /// their value through `IS` are left alone, and a pair with NaN or an infinity
+    /// (FIELD_VALUE_NONFINITE's) is not judged.
     ///
     /// ## Why it matters
     /// A B-spline's basis functions are defined over the intervals between consecutive
@@ -82,16 +83,15 @@ fn check(ctx: &mut Ctx) {
             let Some(knots) = entry.value.as_doubles() else {
                 continue;
             };
-            if let Some(at) = knots.windows(2).position(|pair| pair[1] < pair[0]) {
-                let span = ScalarSpans::new(ctx.source, entry).span(at + 1);
+            if let Some(at) = first_decrease(knots) {
+                let span = ScalarSpans::new(ctx.source, entry).span(at);
                 let message = format!(
-                    "{}.{field}[{}] = {} is smaller than the knot before it ({}): knots are non-decreasing",
+                    "{}.{field}[{at}] = {} is smaller than the knot before it ({}): knots are non-decreasing",
                     node.type_name(),
-                    at + 1,
-                    knots[at + 1],
-                    knots[at]
+                    knots[at],
+                    knots[at - 1]
                 );
-                found.push((id, span, message, at + 1));
+                found.push((id, span, message, at));
             }
         }
     }
