@@ -118,8 +118,14 @@ fn check(ctx: &mut Ctx) {
             Fault::NotPlanar => "is not planar",
             Fault::Concave => "is concave",
         };
+        // Most files never write `convex`: say that TRUE is then the default.
+        let convex = if geometry.node.entry("convex").is_some() {
+            "convex TRUE"
+        } else {
+            "convex TRUE, the default"
+        };
         let message = format!(
-            "IndexedFaceSet is convex (convex TRUE) but {} of its {} faces {} not (first: face {number}, at coordIndex[{position}], {what})",
+            "IndexedFaceSet is declared convex ({convex}) but {} of its {} faces {} not convex and planar (first: face {number}, at coordIndex[{position}], {what})",
             found.count,
             found.faces,
             if found.count == 1 { "is" } else { "are" },
