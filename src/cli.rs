@@ -6,6 +6,7 @@
 
 mod color;
 mod discover;
+mod generate;
 mod inlined;
 mod merge;
 mod progress;
@@ -58,6 +59,10 @@ enum Command {
     Merge(merge::MergeArgs),
     /// Run the language server (LSP over stdin/stdout) for editors
     Server,
+    /// Write a shell completion script to stdout (bash, zsh, fish, elvish, powershell)
+    Completions(generate::CompletionsArgs),
+    /// Write the manual page (roff) to stdout: `x3dcheck manpage > x3dcheck.1`
+    Manpage,
 }
 
 #[derive(Args, Debug)]
@@ -214,6 +219,8 @@ fn run(cli: Cli) -> u8 {
             .map(|()| 0),
         Some(Command::Merge(args)) => merge::merge(&args),
         Some(Command::Server) => crate::lsp::run().map(|()| 0),
+        Some(Command::Completions(args)) => generate::completions(&args),
+        Some(Command::Manpage) => generate::manpage(),
         None => check(&cli.check),
     };
     match result {

@@ -5,6 +5,8 @@
 
 use std::path::Path;
 
+mod common;
+
 fn repository_file(name: &str) -> String {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(name);
     std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
@@ -97,4 +99,98 @@ fn the_pre_commit_hook_runs_x3dcheck_on_scene_files() {
         .filter(|e| !e.is_empty())
         .collect();
     assert_eq!(hooked, walked);
+}
+
+fn x3dcheck_stdout(args: &[&str]) -> String {
+    let output = std::process::Command::new(env!("CARGO_BIN_EXE_x3dcheck"))
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "x3dcheck {args:?}: {output:?}");
+    String::from_utf8(output.stdout).unwrap()
+}
+
+/// The completion scripts know the subcommands and the options, in every shell's form.
+#[test]
+fn completions_cover_the_options_in_each_shell() {
+    let bash = x3dcheck_stdout(&["completions", "bash"]);
+    assert!(bash.contains("complete -F _x3dcheck"), "{bash}");
+    assert!(bash.contains("--level") && bash.contains("rules"), "{bash}");
+    // The values of an enumerated option are offered too.
+    assert!(bash.contains("sarif"), "{bash}");
+    let zsh = x3dcheck_stdout(&["completions", "zsh"]);
+    assert!(zsh.starts_with("#compdef x3dcheck"), "{zsh}");
+    let fish = x3dcheck_stdout(&["completions", "fish"]);
+    assert!(
+        fish.contains("complete -c x3dcheck") && fish.contains("-l level"),
+        "{fish}"
+    );
+}
+
+/// The manual page is roff for section 1 and lists the options and the exit codes.
+#[test]
+fn the_manual_page_lists_options_and_exit_codes() {
+    let page = x3dcheck_stdout(&["manpage"]);
+    assert!(page.contains(".TH x3dcheck 1"), "{page}");
+    assert!(page.contains("\\-\\-level"), "{page}");
+    assert!(page.contains("Exit codes:"), "{page}");
+}
+
+/// The `run: |` script of the action.yml step named `step`, unindented.
+fn action_step_script(step: &str) -> String {
+    let action = repository_file("action.yml");
+    let start = action
+        .find(&format!("- name: {step}\n"))
+        .unwrap_or_else(|| panic!("action.yml has no step {step}"));
+    let mut lines = action[start..]
+        .lines()
+        .skip_while(|l| !l.trim_start().starts_with("run: |"));
+    let run = lines.next().unwrap();
+    let indent = run.len() - run.trim_start().len() + 2;
+    lines
+        .take_while(|l| l.trim().is_empty() || l.len() - l.trim_start().len() >= indent)
+        .map(|l| l.get(indent..).unwrap_or(""))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// The action's check step, run as GitHub runs it (bash, the inputs in the environment,
+/// x3dcheck on PATH): annotations and exit 1 for a bad scene; with SARIF, the report
+/// written and the exit code kept for the last step.
+#[test]
+fn the_github_action_checks_and_keeps_the_exit_code() {
+    let script = action_step_script("Check the scenes");
+    let dir = common::scratch("action", &[]);
+    let bad = Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus/rules/DEF_DUPLICATE");
+    let bin_dir = Path::new(env!("CARGO_BIN_EXE_x3dcheck")).parent().unwrap();
+    let path = format!(
+        "{}:{}",
+        bin_dir.display(),
+        std::env::var("PATH").unwrap_or_default()
+    );
+    let run = |format: &str| {
+        std::process::Command::new("bash")
+            .args(["-c", &script])
+            .current_dir(&dir)
+            .env("PATH", &path)
+            .env("FORMAT", format)
+            .env("PATHS", &bad)
+            .env("ARGS", "--color never")
+            .env("SARIF_FILE", dir.join("out.sarif"))
+            .env("GITHUB_OUTPUT", dir.join("github_output"))
+            .output()
+            .unwrap()
+    };
+    let github = run("github");
+    let annotations = String::from_utf8_lossy(&github.stdout);
+    assert_eq!(github.status.code(), Some(1), "{github:?}");
+    assert!(annotations.contains("::error file="), "{annotations}");
+    assert!(annotations.contains("DEF_DUPLICATE"), "{annotations}");
+
+    let sarif = run("sarif");
+    assert_eq!(sarif.status.code(), Some(0), "{sarif:?}");
+    let report = std::fs::read_to_string(dir.join("out.sarif")).unwrap();
+    assert!(report.contains("\"ruleId\": \"DEF_DUPLICATE\""), "{report}");
+    let outputs = std::fs::read_to_string(dir.join("github_output")).unwrap();
+    assert_eq!(outputs.trim(), "exit-code=1");
 }
