@@ -157,6 +157,10 @@ fn a_session_from_initialize_to_exit() {
     );
     assert!(on_node.contains("12.4."), "the clause: {on_node}");
     assert!(
+        on_node.contains("| diffuseColor | SFColor | inputOutput | `0.8 0.8 0.8` |"),
+        "the fields, with their types and defaults: {on_node}"
+    );
+    assert!(
         on_node.contains("Material specifies surface rendering properties"),
         "the UOM's description: {on_node}"
     );

@@ -142,7 +142,49 @@ impl Descriptions {
 /// The text with its runs of white space made single spaces, or None when it says
 /// nothing (some UOM entries are a lone ".").
 fn prose(text: &str) -> Option<String> {
+    let text = without_todo_notes(text);
     let words: Vec<&str> = text.split_whitespace().collect();
     text.contains(char::is_alphanumeric)
         .then(|| words.join(" "))
+}
+
+/// The text without the UOM editors' notes to themselves ("TODO undefined in X3D
+/// specification.", "(TODO elaborate)", ", TODO define more precisely."): hover shows the
+/// user the standard's prose, not its to-do list. A note runs to the end of its sentence.
+fn without_todo_notes(text: &str) -> String {
+    let mut out = text.to_owned();
+    while let Some(at) = out.find("TODO") {
+        let (start, end) = match out[..at].rfind('(') {
+            Some(open) if !out[open..at].contains(')') => {
+                let close = out[at..].find(')').map_or(out.len(), |p| at + p + 1);
+                (open, close)
+            }
+            _ => {
+                let start = out[..at].trim_end().strip_suffix(',').map_or(at, str::len);
+                let end = out[at..].find('.').map_or(out.len(), |p| at + p);
+                (start, end)
+            }
+        };
+        out.replace_range(start..end, "");
+    }
+    out.replace(" .", ".")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::prose;
+
+    #[test]
+    fn todo_notes_are_left_out() {
+        assert_eq!(prose("TODO undefined in X3D specification."), None);
+        assert_eq!(
+            prose("metallic is a PBR parameter (TODO elaborate)."),
+            Some("metallic is a PBR parameter.".to_owned())
+        );
+        assert_eq!(
+            prose("similar to diffuseColor, TODO define more precisely. Range [0,1]."),
+            Some("similar to diffuseColor. Range [0,1].".to_owned())
+        );
+        assert_eq!(prose("No notes here."), Some("No notes here.".to_owned()));
+    }
 }

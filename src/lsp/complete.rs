@@ -15,6 +15,8 @@ use crate::schema::{
 /// A completion's label, kind, detail and Markdown documentation.
 pub struct Candidate {
     pub label: String,
+    /// What the completion inserts, when it is not the label.
+    pub insert: Option<String>,
     pub kind: CompletionItemKind,
     pub detail: Option<String>,
     pub doc: Option<String>,
@@ -24,7 +26,10 @@ impl Candidate {
     pub fn item(self, edit_range: lsp_types::Range) -> CompletionItem {
         CompletionItem {
             text_edit: Some(lsp_types::CompletionTextEdit::Edit(
-                lsp_types::TextEdit::new(edit_range, self.label.clone()),
+                lsp_types::TextEdit::new(
+                    edit_range,
+                    self.insert.unwrap_or_else(|| self.label.clone()),
+                ),
             )),
             label: self.label,
             kind: Some(self.kind),
@@ -54,6 +59,13 @@ pub fn complete(text: &[u8], offset: usize, analysis: Option<&Analysis>) -> Vec<
         Some(Context::NodeName { parent, field }) => {
             node_names(schema, syntax, parent.as_deref(), field.as_deref())
         }
+        Some(Context::ElementContent { parent }) => {
+            let mut names = node_names(schema, syntax, Some(&parent), None);
+            for name in &mut names {
+                name.insert = Some(format!("<{}", name.label));
+            }
+            names
+        }
         Some(Context::FieldName { node, written }) => match schema.node(&node) {
             Some(def) => field_names(def, syntax, &written),
             None => Vec::new(),
@@ -66,6 +78,7 @@ pub fn complete(text: &[u8], offset: usize, analysis: Option<&Analysis>) -> Vec<
                     .enumeration
                     .iter()
                     .map(|value| Candidate {
+                        insert: None,
                         label: value.to_string(),
                         kind: CompletionItemKind::ENUM_MEMBER,
                         detail: Some(format!("{} of {node}", field.name)),
@@ -84,6 +97,7 @@ pub fn complete(text: &[u8], offset: usize, analysis: Option<&Analysis>) -> Vec<
                 .iter()
                 .filter(|((def_scope, _), _)| *def_scope == scope)
                 .map(|((_, name), node)| Candidate {
+                    insert: None,
                     label: name.clone(),
                     kind: CompletionItemKind::REFERENCE,
                     detail: doc
@@ -158,6 +172,7 @@ fn node_names(
         .iter()
         .filter(|n| fits(n))
         .map(|n| Candidate {
+            insert: None,
             label: n.name.to_string(),
             kind: CompletionItemKind::CLASS,
             detail: Some(format!("{} {}", n.component.component, n.component.level)),
@@ -181,6 +196,7 @@ fn node_names(
         out.clear();
     }
     out.extend(statements.iter().map(|s| Candidate {
+        insert: None,
         label: s.to_string(),
         kind: CompletionItemKind::KEYWORD,
         detail: None,
@@ -204,6 +220,7 @@ fn field_names(def: &NodeDef, syntax: Syntax, written: &[String]) -> Vec<Candida
                 _ => f.name.to_string(),
             };
             Candidate {
+                insert: None,
                 label,
                 kind: CompletionItemKind::FIELD,
                 detail: Some(format!("{} ({})", f.ty.as_str(), f.access.as_str())),
@@ -217,6 +234,7 @@ fn field_names(def: &NodeDef, syntax: Syntax, written: &[String]) -> Vec<Candida
         Syntax::Classic => &[],
     };
     out.extend(extra.iter().map(|name| Candidate {
+        insert: None,
         label: name.to_string(),
         kind: CompletionItemKind::KEYWORD,
         detail: None,
@@ -249,6 +267,22 @@ mod tests {
         assert!(in_scene.contains(&"Transform".to_string()));
         assert!(in_scene.contains(&"ROUTE".to_string()));
         assert!(!in_scene.contains(&"Box".to_string()));
+    }
+
+    #[test]
+    fn element_content_offers_child_elements_with_their_angle_bracket() {
+        let text = "<X3D><Scene><Shape>\n  Ap";
+        let items = complete(text.as_bytes(), text.len(), None);
+        let appearance = items.iter().find(|c| c.label == "Appearance").unwrap();
+        assert_eq!(appearance.insert.as_deref(), Some("<Appearance"));
+        assert!(!items.iter().any(|c| c.label == "Transform"));
+        let hover = appearance.doc.as_deref().unwrap_or_default();
+        assert!(
+            hover.contains("| material | SFNode | inputOutput |"),
+            "the fields, with their types: {hover}"
+        );
+        let in_head = labels("<X3D version='4.0'><head>\n|");
+        assert_eq!(in_head, ["component", "unit", "meta"]);
     }
 
     #[test]

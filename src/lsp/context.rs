@@ -21,6 +21,9 @@ pub enum Context {
     Value { node: String, field: String },
     /// A DEF name: after USE, or a ROUTE's node name.
     DefName,
+    /// XML element content, where a child element may start (a `<` is not typed yet):
+    /// inside an element of type `parent`.
+    ElementContent { parent: String },
 }
 
 /// The encodings completion knows, as the text's first bytes tell them.
@@ -165,7 +168,11 @@ fn xml(text: &[u8]) -> Option<Context> {
             }
         }
     }
-    None
+    // Past the last tag: in the content of the innermost open element, if any (before the
+    // root element, nothing goes).
+    stack.last().map(|parent| Context::ElementContent {
+        parent: text_of(parent),
+    })
 }
 
 fn name_end(text: &[u8], from: usize) -> usize {
@@ -439,7 +446,14 @@ mod tests {
                 field: "fogType".into()
             })
         );
-        assert_eq!(at_cursor(Syntax::Xml, &format!("{head} te|xt")), None);
+        // In element content a child element may start: completion inserts its `<`.
+        assert_eq!(
+            at_cursor(Syntax::Xml, &format!("{head} te|xt")),
+            Some(Context::ElementContent {
+                parent: "Transform".into()
+            })
+        );
+        assert_eq!(at_cursor(Syntax::Xml, "<?xml version='1.0'?>\n|"), None);
     }
 
     #[test]

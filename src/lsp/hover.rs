@@ -116,7 +116,32 @@ pub fn node_type_markdown(def: &NodeDef, version: Version) -> String {
     if !def.ancestors.is_empty() {
         let _ = write!(out, "\n\nis a {}", def.ancestors.join(", "));
     }
+    out.push_str("\n\n| field | type | access | default |\n|---|---|---|---|");
+    for field in def.fields {
+        let _ = write!(
+            out,
+            "\n| {} | {} | {} | {} |",
+            field.name,
+            field.ty.as_str(),
+            field.access.as_str(),
+            table_default(field.default)
+        );
+    }
     out
+}
+
+/// A default as a table cell: code, cut to a line's worth (an MF default may be long), and
+/// `|` escaped, which would end the cell.
+fn table_default(default: &str) -> String {
+    const LONGEST: usize = 32;
+    if default.is_empty() {
+        return String::new();
+    }
+    let mut text: String = default.chars().take(LONGEST).collect();
+    if text.len() < default.len() {
+        text.push('…');
+    }
+    format!("`{}`", text.replace('|', "\\|"))
 }
 
 /// A field as hover and completion documentation show it.

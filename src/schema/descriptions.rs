@@ -680,735 +680,732 @@ static D674: &str = "Suprasternale.";
 static D675: &str = "SurfaceEmitter generates particles from the surface of an object.";
 static D676: &str = "Switch is a Grouping node that only renders one (or zero) child at a time.";
 static D677: &str = "TERRAIN is an example value.";
-static D678: &str = "TODO not properly defined in X3D spedification.";
-static D679: &str = "TODO undefined in X3D specification.";
-static D680: &str = "TODO, X3D specification is undefined.";
-static D681: &str = "Tactical Data Link (TDL) type as an enumerated value when the Encoding Class is voice, raw binary, application-specific, or database index representation of a TDL message.";
-static D682: &str = "Tangent defines a set of 3D surface-normal vectors that apply either to a sibling Coordinate|CoordinateDouble node, or else to a parent ElevationGrid node.";
-static D683: &str = "TexCoordChaser2D generates a series of single floating-point values that progressively change from initial value to destination value.";
-static D684: &str = "TexCoordDamper2D generates a series of 2D floating-point arrays that progressively change from initial value to destination value.";
-static D685: &str = "Text description or navigation hint to describe the significance of this model Viewpoint.";
-static D686: &str = "Text description or navigation hint to identify this ViewpointGroup.";
-static D687: &str = "Text is a 2D (flat) geometry node that can contain multiple lines of string values.";
-static D688: &str = "Texture coordinates are mirrored and then clamped as in CLAMP_TO_EDGE.";
-static D689: &str = "TextureBackground simulates ground and sky, using vertical arrays of wraparound color values, TextureBackground can also provide backdrop texture images on all six sides.";
-static D690: &str = "TextureCoordinate specifies 2D (s,t) texture-coordinate points, used by vertex-based geometry nodes (such as IndexedFaceSet or ElevationGrid) to map textures to vertices (and patches to NURBS surfaces).";
-static D691: &str = "TextureCoordinate3D specifies a set of 3D texture coordinates used by vertex-based geometry nodes (such as IndexedFaceSet or ElevationGrid) to map 3D textures to vertices.";
-static D692: &str = "TextureCoordinate4D specifies a set of 4D (homogeneous 3D) texture coordinates used by vertex-based geometry nodes (such as IndexedFaceSet or ElevationGrid) to map 3D textures to vertices.";
-static D693: &str = "TextureCoordinateGenerator computes 2D (s,t) texture-coordinate points, used by vertex-based geometry nodes (such as IndexedFaceSet or ElevationGrid) to map textures to vertices (and patches to NURBS surfaces).";
-static D694: &str = "TextureProjector is similar to a light that projects a texture into the scene, illuminating geometry that intersects the perspective projection volume.";
-static D695: &str = "TextureProjectorParallel is similar to a light that projects a texture into the scene, illuminating geometry that intersects the parallel projection volume.";
-static D696: &str = "TextureProperties allows precise fine-grained control over application of image textures to geometry.";
-static D697: &str = "TextureTransform shifts 2D texture coordinates for positioning, orienting and scaling image textures on geometry.";
-static D698: &str = "TextureTransform3D applies a 3D transformation to texture coordinates.";
-static D699: &str = "TextureTransformMatrix3D applies a 3D transformation to texture coordinates.";
-static D700: &str = "The Gain node amplifies or deamplifies the input signal.";
-static D701: &str = "The GaussianSplats node adds basic support for direct real-time radiance field rendering of volume data without converting into surface or line primitives.";
-static D702: &str = "The HAnimHumanoid node is used to: (a) store references to the joints, segments, sites, skeleton, optional skin, and fixed viewpoints, (b) serve as a container for the entire humanoid, (c) provide a convenient way of moving the humanoid through its environment, and (d) store human-readable metadata such as name, version, author, copyright, age, gender and other information.";
-static D703: &str = "The Sound node controls the 3D spatialization of sound playback by a child AudioClip or MovieTexture node.";
-static D704: &str = "The SpatialSound node controls the 3D spatialization of sound playback by a child AudioClip or MovieTexture node.";
-static D705: &str = "The [autoRefresh field has no effect, Anchor operation is only triggered by user selection.";
-static D706: &str = "The [autoRefreshTimeLimit field has no effect, Anchor operation is only triggered by user selection.";
-static D707: &str = "The align field values align the sized rectangle to an edge or center of the parent rectangle.";
-static D708: &str = "The alpha field defines the alpha (1-transparency) base value for mode operations.";
-static D709: &str = "The angle array values increase from 0.";
-static D710: &str = "The appearance field holds an Appearance node that is used for the geometry.";
-static D711: &str = "The attack field is the duration of time (in seconds) to reduce the gain by 10dB.";
-static D712: &str = "The body1 and body2 fields indicate the two RigidBody nodes connected by this joint.";
-static D713: &str = "The body1 and body2 fields specify two top-level nodes that should be evaluated in the physics model as a single set of interactions with respect to each other.";
-static D714: &str = "The bounce field value is used.";
-static D715: &str = "The castShadow field defines whether this Shape casts shadows as produced by lighting nodes.";
-static D716: &str = "The ccw field indicates counterclockwise ordering of vertex-coordinates orientation.";
-static D717: &str = "The children field lists all HAnimJoint nodes making up this pose.";
-static D718: &str = "The children field monitors one or more USE nodes that contain a valid url field.";
-static D719: &str = "The children field specifies audio-graph sound sources providing input signals for this node, making up a section of the audio graph.";
-static D720: &str = "The children field specifies audio-graph sound sources providing input signals for this node.";
-static D721: &str = "The children form a closed loop with first point of first child repeated as last point of last child, and the last point of a segment repeated as first point of the consecutive one.";
-static D722: &str = "The collidable field holds a reference to a single nested item of a collidable scene graph.";
-static D723: &str = "The collider field associates a collision collection with this rigid body collection allowing seamless updates and integration without the need to use the X3D event model.";
-static D724: &str = "The collider field specifies a CollisionCollection node that holds a collidables field of nodes and spaces that are to be included in collision-detection computations.";
-static D725: &str = "The color field contains Color|ColorRGBA nodes as a series of color values to be used at the given colorKey points in time.";
-static D726: &str = "The color field defines an array of 3-tuple RGB colors.";
-static D727: &str = "The color field defines an array of 4-tuple RGBA colors.";
-static D728: &str = "The color field defines the RGB base values for mode operations.";
-static D729: &str = "The color space of the reconstructed color values, either SRGB_REC709_DISPLAY or LIN_REC709_DISPLAY Hint: for details see https://github.";
-static D730: &str = "The content of the LayoutGroup is clipped by the specified viewport.";
-static D731: &str = "The convex field is a hint to renderers whether all polygons in a shape are convex (true), or possibly concave (false).";
-static D732: &str = "The crossSection array defines a silhouette outline of the outer Extrusion surface.";
-static D733: &str = "The curve field is an array of floating-point numbers describing the distortion to apply.";
-static D734: &str = "The detune field, measured in cents, modulates the speed at which the the audio stream is rendered.";
-static D735: &str = "The emitter field specifies the type of emitter geometry and properties that the particles are given for their initial positions.";
-static D736: &str = "The family field provides an identifying alias for the font in the associated file, if that file only contains a single font family (possibly with multiple styles).";
-static D737: &str = "The fontStyle field can contain a FontStyle or ScreenFontStyle node defining size, family, and style for presented text.";
-static D738: &str = "The frequency of oscillation in hertz.";
-static D739: &str = "The gain field is a factor that represents the amount of linear amplification to apply to the output of the node.";
-static D740: &str = "The gain value only affects analysis, not output signal.";
-static D741: &str = "The geometry field is used to connect the body modelled by the physics engine implementation to the real geometry of the scene through the use of collidable nodes.";
-static D742: &str = "The geometry node provides geometry used as the emitting surface.";
-static D743: &str = "The geometry1 and geometry2 fields specify collision-related information about body1 and body2.";
-static D744: &str = "The global field controls potential external scoping effects of lights found within an Inline scene.";
-static D745: &str = "The interauralDistance field is.";
-static D746: &str = "The joints field contains a list of USE references for all HAnimJoint node instances found within the preceding skeleton hierarchy.";
-static D747: &str = "The joints field is used to register all joints between bodies contained in this collection.";
-static D748: &str = "The justify field determines horizontal and vertical alignment of text layout, relative to the origin of the object coordinate system.";
-static D749: &str = "The language field indicates to the X3D player which shading language is used.";
-static D750: &str = "The layers list defines a list of Layer nodes that contain the constituent parts of the scene.";
-static D751: &str = "The layout field contains an X3DLayoutNode node that provides the information required to locate and size the layout region of the LayoutGroup node relative to its parent’s layout region, and also to scale the contents of the LayoutGroup.";
-static D752: &str = "The load field has no effect, Anchor operation is only triggered by user selection.";
-static D753: &str = "The mapping label identifies which texture coordinates and transformations are used to compute texture effects from corresponding geometry on a given material.";
-static D754: &str = "The massDensityModel field is used to describe the geometry type and dimensions used to calculate the mass density in the physics model.";
-static D755: &str = "The mean vector for the Gaussian splat is provided by the positions of the mesh primitive.";
-static D756: &str = "The metadata provided by this node is contained in the Boolean values of the value field.";
-static D757: &str = "The metadata provided by this node is contained in the double-precision floating point numbers of the value field.";
-static D758: &str = "The metadata provided by this node is contained in the integer numbers of the value field.";
-static D759: &str = "The metadata provided by this node is contained in the metadata nodes of the value field.";
-static D760: &str = "The metadata provided by this node is contained in the single-precision floating point numbers of the value field.";
-static D761: &str = "The metadata provided by this node is contained in the strings of the value field.";
-static D762: &str = "The navigationInfo field defines a dedicated NavigationInfo node for this X3DViewpointNode.";
-static D763: &str = "The objectType field specifies a set of labels used in the picking process.";
-static D764: &str = "The offsetUnits field values are used to interprete the offset values.";
-static D765: &str = "The opacity of a Gaussian splat is defined by the opacities field.";
-static D766: &str = "The order list defines the order in which layers are rendered.";
-static D767: &str = "The orientation array is a list of axis-angle 4-tuple values applied at each spine-aligned cross-section plane.";
-static D768: &str = "The outputOnly children field exposes a portion of the scene graph for the currently loaded set of nodes.";
-static D769: &str = "The outputs field is a set of output nodes receiving the split channels, and making up a section of the audio graph.";
-static D770: &str = "The oversample field is specifies what type of oversampling (if any) should be used when applying the shaping curve.";
-static D771: &str = "The periodicWave field is an optional PeriodicWave node providing a regular or arbitrary periodic waveform.";
-static D772: &str = "The pickable field determines whether pick traversal is performed on this node or its children.";
-static D773: &str = "The proxy node is used as a substitute for Collision children during collision detection, simplifying collision-intersection computations.";
-static D774: &str = "The scaleMode field specifies how the scale of the parent is modified.";
-static D775: &str = "The segments field contains a list of USE references for all HAnimSegment node instances found within the preceding skeleton hierarchy.";
-static D776: &str = "The shape field provides a geometry proxy for specifying which geometry best represents the collidable object.";
-static D777: &str = "The sizeUnits field values are used to interprete the offset values.";
-static D778: &str = "The smooth field provides a hint to the browser whether smooth rendering is preferred for a retrieved polygonal mesh.";
-static D779: &str = "The sortOrder field determines the order provided for picked output events.";
-static D780: &str = "The spine array defines a center-line sequence of 3D points that define a piecewise-linear curve forming a series of connected vertices.";
-static D781: &str = "The summary string array contains a set of keyword/value pairs, with each keyword and its subsequent value contained in separate strings.";
-static D782: &str = "The surfaceNormals field contains a 3D texture with at least three component values.";
-static D783: &str = "The system will normally calculate the friction direction vector that is perpendicular to the contact normal. This setting indicates that the user-supplied value in this contact should be used.";
-static D784: &str = "The transferFunction field holds a single texture representation in either two or three dimensions that maps the voxel data values to a specific colour output.";
-static D785: &str = "The two values in the size field define the width and height of the layout rectangle.";
-static D786: &str = "The type field specifies shape of waveform to play, which can be one of several provided values or else 'custom' to indicate that real and imaginary coefficient arrays define a custom waveform.";
-static D787: &str = "The url field typically defines a relative address to a file name that can be used for storing one or more rendered textures, and can also provide a destination for output of successive image files as a video file or video stream.";
-static D788: &str = "The value attribute is a strictly typed data array providing relevant metadata information.";
-static D789: &str = "The value field provides a list of X3DMetadataObject nodes whose meaning is determined by the name field.";
-static D790: &str = "The values in the scales field correspond to the spread of the Gaussian along its local principal axes.";
-static D791: &str = "The values of the offset field are used to translate the location of this rectangle after the initial alignment.";
-static D792: &str = "The viewport field is a single Viewport node that constrains layer output to a sub-region of the render surface.";
-static D793: &str = "The weigh factor has typical range [0,1] and defines the scale factor applied to displacement values before adding them to neutral vertex positions.";
-static D794: &str = "The weightTransferFunction1 and weightTransferFunction2 fields specify two-dimensional textures that are used to determine the weight values when the weight function is set to \"TABLE\".";
-static D795: &str = "Threshold for gradient magnitude for voxel inolusion in isosurface.";
-static D796: &str = "Threshold value used for pixel rendering either transparent or opaque, used when alphaMode=\"MASK\".";
-static D797: &str = "Threshold value used when type=MIN (LMIP) or type=MAX (MIP).";
-static D798: &str = "Time continuously sends the absolute time (value 0.";
-static D799: &str = "Time event generated when sensor is touched by pointing device, and then deselected by the user.";
-static D800: &str = "Time event generated when targetObject enters the box region for sensor.";
-static D801: &str = "Time event generated when targetObject exits the box region for sensor.";
-static D802: &str = "Time event generated when touched.";
-static D803: &str = "Time event generated when user's camera enters the box.";
-static D804: &str = "Time event generated when user's camera enters visibility region for sensor.";
-static D805: &str = "Time event generated when user's camera exits the box.";
-static D806: &str = "Time event generated when user's camera exits visibility region for sensor.";
-static D807: &str = "Time in seconds of maximum load duration prior to declaring failure.";
-static D808: &str = "Time of collision between camera (avatar) and geometry.";
-static D809: &str = "Time of successful load complete, not sent on failure.";
-static D810: &str = "TimeSensor continuously generates events as time passes.";
-static D811: &str = "TimeTrigger converts boolean true events to time events.";
-static D812: &str = "ToneMappedVolumeStyle specifies that volumetric data is rendered with Gooch shading model of two-toned warm/cool coloring.";
-static D813: &str = "Total mass of the segment, 0 if not available, defined in mass base units (default is kilograms).";
-static D814: &str = "TouchSensor tracks location and state of the pointing device, detecting when a user points at or selects (activates) geometry.";
-static D815: &str = "Transform is a Grouping node that can contain most nodes.";
-static D816: &str = "TransformSensor generates output events when its targetObject enters, exits, and moves within a region in space (defined by a box).";
-static D817: &str = "Transition instantly by jumping, otherwise smoothly adjust offsets in place when changing to this Viewpoint.";
-static D818: &str = "Translation offset from origin of local coordinate system, applied prior to rotation or scaling.";
-static D819: &str = "Translation offset from origin of local coordinate system.";
-static D820: &str = "Transmission frequency in Hz.";
-static D821: &str = "TransmitterPdu is a networked Protocol Data Unit (PDU) information node that provides detailed information about a radio transmitter modeled in a simulation.";
-static D822: &str = "TriangleFanSet is a geometry node containing a Coordinate|CoordinateDouble node, and can also contain Color|ColorRGBA, Normal and TextureCoordinate nodes.";
-static D823: &str = "TriangleSet is a geometry node containing a Coordinate|CoordinateDouble node, and can also contain Color|ColorRGBA, Normal and TextureCoordinate nodes.";
-static D824: &str = "TriangleSet2D is a geometry node that defines a set of filled 2D triangles in X-Y plane.";
-static D825: &str = "TriangleStripSet is a geometry node containing a Coordinate|CoordinateDouble node, and can also contain Color|ColorRGBA, Normal and TextureCoordinate nodes.";
-static D826: &str = "TwoSidedMaterial specifies surface rendering properties for associated geometry, for outer (front) and inner (back) sides of polygons.";
-static D827: &str = "Unique name attribute must be defined so that HAnimDisplacer node can be identified at run time for animation purposes.";
-static D828: &str = "Unique name attribute must be defined so that HAnimJoint node can be identified at run time for animation purposes.";
-static D829: &str = "Unique name attribute must be defined so that HAnimMotion node can be identified at run time for animation purposes.";
-static D830: &str = "Unique name attribute must be defined so that HAnimPose node can be identified at run time for animation purposes.";
-static D831: &str = "Unique name attribute must be defined so that HAnimSegment node can be identified at run time for animation purposes.";
-static D832: &str = "Unique name attribute must be defined so that HAnimSite node can be identified at run time for animation purposes.";
-static D833: &str = "Unique name attribute must be defined so that each HAnimHumanoid node in a scene can be identified at run time for animation purposes.";
-static D834: &str = "UniversalJoint is like a BallJoint that constrains an extra degree of rotational freedom.";
-static D835: &str = "UnlitMaterial specifies surface rendering properties for associated geometry that is unaffected by scene lighting.";
-static D836: &str = "Upper limit for maximum joint rotation in radians.";
-static D837: &str = "Use 1 - O_blend.";
-static D838: &str = "Use 1 - O_v.";
-static D839: &str = "Use O_blend.";
-static D840: &str = "Use O_v.";
-static D841: &str = "Use reflection vector, transformed to camera space, as input texture coordinates.";
-static D842: &str = "Use table lookup value.";
-static D843: &str = "Use vertex coordinates transformed to camera space.";
-static D844: &str = "Use vertex coordinates.";
-static D845: &str = "Use vertex normal, transformed to camera space, as input texture coordinates.";
-static D846: &str = "Use vertex position, transformed to camera space, as input texture coordinates.";
-static D847: &str = "Use weightConstant1.";
-static D848: &str = "User-specified dash pattern.";
-static D849: &str = "Vector assigning relative weight value to each control point.";
-static D850: &str = "Velocity of the entity relative to the rotating Earth in either world or entity coordinates, depending on the dead reckoning algorithm used.";
-static D851: &str = "Vertical equally spaced parallel lines.";
-static D852: &str = "Vertical exaggeration of displayed data produced from the height array.";
-static D853: &str = "Viewer range from geographic-coordinates center triggers quadtree loading/unloading.";
-static D854: &str = "Viewpoint distance-measurement offset from origin of local coordinate system, used for LOD node distance calculations.";
-static D855: &str = "Viewpoint is automatically adjusted to view all visible geometry.";
-static D856: &str = "Viewpoint provides a specific location and direction where the user may view the scene.";
-static D857: &str = "ViewpointGroup can contain Viewpoint, OrthoViewpoint, GeoViewpoint and other ViewpointGroup nodes for better user-navigation support with a shared description on the viewpoint list.";
-static D858: &str = "ViewpointGroup contains Viewpoint, OrthoViewpoint, GeoViewpoint and other ViewpointGroup nodes that each have containerField='children' default value.";
-static D859: &str = "Viewport is a Grouping node that can contain most nodes.";
-static D860: &str = "VisibilitySensor detects when user can see a specific object or region as they navigate the world.";
-static D861: &str = "VolumeData displays a simple non-segmented voxel dataset with a single RenderStyle node.";
-static D862: &str = "VolumeEmitter emits particles from a random position confined within the given closed geometry volume.";
-static D863: &str = "VolumePickSensor tests picking intersections using the pickingGeometry against the pickTarget geometry volume.";
-static D864: &str = "WaveShaper node represents a nonlinear distorter that applies a wave-shaping distortion curve to the signal.";
-static D865: &str = "Weight deformation values for the corresponding values in the skinCoordIndex field.";
-static D866: &str = "When applying ambientIntensity for this material node, the contained texture provides Physically Based Rendering (PBR) modulation for each pixel.";
-static D867: &str = "When applying baseColor for this material node, the contained texture provides Physically Based Rendering (PBR) modulation for each pixel.";
-static D868: &str = "When applying diffuseColor for this material node, the contained texture provides Physically Based Rendering (PBR) modulation for each pixel.";
-static D869: &str = "When applying emissiveColor for this material node, the contained texture provides Physically Based Rendering (PBR) modulation for each pixel.";
-static D870: &str = "When applying metallic for this material node, the contained texture provides Physically Based Rendering (PBR) modulation for each pixel.";
-static D871: &str = "When applying normalScale for this material node, the contained texture modulates the texture across the surface.";
-static D872: &str = "When applying occlusionStrength for this material node, the contained texture provides Physically Based Rendering (PBR) modulation for each pixel.";
-static D873: &str = "When applying shininess for this material node, the contained texture provides Physically Based Rendering (PBR) modulation for each pixel.";
-static D874: &str = "When applying specularColor for this material node, the contained texture provides Physically Based Rendering (PBR) modulation for each pixel.";
-static D875: &str = "When did we shoot a weapon (Fire PDU)? Warning: it is an error to define this transient outputOnly field in an X3D file, instead only use it a source for ROUTE events.";
-static D876: &str = "When pointing device selects geometry, send event containing 3D point on surface of underlying geometry, as measured in reference frame for TouchSensor's local coordinate system.";
-static D877: &str = "When pointing device selects geometry, send event containing surface normal vector at the hitPoint.";
-static D878: &str = "When pointing device selects geometry, send event containing texture coordinates of surface at the hitPoint.";
-static D879: &str = "When resumeTime becomes <= time now, isPaused becomes false and AudioClip becomes active.";
-static D880: &str = "When resumeTime becomes <= time now, isPaused becomes false and MovieTexture becomes active.";
-static D881: &str = "When resumeTime becomes <= time now, isPaused becomes false and TimeSensor becomes inactive.";
-static D882: &str = "When stopTime becomes <= time now, isActive becomes false and TimeSensor becomes inactive.";
-static D883: &str = "When time now >= pauseTime, isPaused becomes true and AudioClip becomes paused.";
-static D884: &str = "When time now >= pauseTime, isPaused becomes true and MovieTexture becomes paused.";
-static D885: &str = "When time now >= pauseTime, isPaused becomes true and TimeSensor becomes paused.";
-static D886: &str = "When time now >= startTime, isActive becomes true and TimeSensor becomes active.";
-static D887: &str = "When were we collided with? Warning: it is an error to define this transient outputOnly field in an X3D file, instead only use it a source for ROUTE events.";
-static D888: &str = "When were we detonated?.";
-static D889: &str = "Whether Color node color values are applied to each point vertex (true) or per polyline (false).";
-static D890: &str = "Whether Color node color values are applied to each point vertex (true) or per quadrilateral (false).";
-static D891: &str = "Whether Color|ColorRGBA values are applied to each point vertex (true) or to each polygon face (false).";
-static D892: &str = "Whether Normal node vector values are applied to each point vertex (true) or per quadrilateral (false).";
-static D893: &str = "Whether Normal node vector values are applied to each point vertex (true) or to each polygon face (false).";
-static D894: &str = "Whether RTP headers are prepended to DIS PDUs.";
-static D895: &str = "Whether beginning cap is drawn (similar to Cylinder top cap).";
-static D896: &str = "Whether end cap is drawn (similar to Cylinder bottom cap).";
-static D897: &str = "Whether incoming DIS packets have an RTP header prepended.";
-static D898: &str = "Whether networkMode='local' (ignore network but still respond to local events).";
-static D899: &str = "Whether networkMode='master' (output to network as master entity at writeInterval).";
-static D900: &str = "Whether networkMode='remote' (listen to network as copy of remote entity).";
-static D901: &str = "Whether only a single updated image file or multiple image files can be saved.";
-static D902: &str = "Whether opposite surface sides are closed (seamless) across u dimension.";
-static D903: &str = "Whether or not LineProperties are applied to associated geometry.";
-static D904: &str = "Whether or not associated geometry is filled.";
-static D905: &str = "Whether or not associated geometry is hatched.";
-static D906: &str = "Whether or not renderable content within this node is visually displayed.";
-static D907: &str = "Whether or not the curve is closed (i.";
-static D908: &str = "Whether rendering calculates and applies shading effects to visual output.";
-static D909: &str = "Whether rendering calculates and applies shadows to visual output (using global illumination model).";
-static D910: &str = "Whether text direction is horizontal (true) or vertical (false).";
-static D911: &str = "Whether text direction is left-to-right (true) or right-to-left (false).";
-static D912: &str = "Whether text direction is top-to-bottom (true) or bottom-to-top (false).";
-static D913: &str = "Whether this entity is ignoring the network, sending DIS packets to the network, or receiving DIS packets from the network.";
-static D914: &str = "Whether to display bounding box for associated geometry, aligned with world coordinates.";
-static D915: &str = "Whether to draw bottom (inside faces are never drawn).";
-static D916: &str = "Whether to draw bottom (other inside faces are not drawn).";
-static D917: &str = "Whether to draw sides (inside faces are never drawn).";
-static D918: &str = "Whether to draw sides (other inside faces are not drawn).";
-static D919: &str = "Whether to draw top (inside faces are never drawn).";
-static D920: &str = "Whether to perform every range-based transition, regardless of browser optimizations that might otherwise occur.";
-static D921: &str = "Whether to repeat texture along R axis from front to back.";
-static D922: &str = "Whether to repeat texture along S axis horizontally from left to right.";
-static D923: &str = "Whether to repeat texture along T axis vertically from top to bottom.";
-static D924: &str = "Whether to rotate coordinates of nodes using this GeoOrigin so that local-up direction aligns with VRML Y axis rotateYUp false means local up-direction is relative to planet surface rotateYUp true allows proper operation of NavigationInfo modes FLY, WALK.";
-static D925: &str = "Whether to spatialize sound playback relative to viewer.";
-static D926: &str = "Whether to transition instantly by jumping, or else smoothly animate to this Viewpoint.";
-static D927: &str = "WindPhysicsModel applies a wind effect to the particles.";
-static D928: &str = "World coordinates for antenna location.";
-static D929: &str = "World coordinates for detonationLocation.";
-static D930: &str = "WorldInfo contains a title and simple persistent metadata information about an X3D scene. This node is strictly for documentation purposes and has no effect on the visual appearance or behaviour of the world.";
-static D931: &str = "X3D version of \"allpass\" in Web Audio API.";
-static D932: &str = "X3D version of \"bandpass\" in Web Audio API.";
-static D933: &str = "X3D version of \"clamped-max\" in Web Audio API.";
-static D934: &str = "X3D version of \"custom\" in Web Audio API.";
-static D935: &str = "X3D version of \"discrete\" in Web Audio API.";
-static D936: &str = "X3D version of \"explicit\" in Web Audio API.";
-static D937: &str = "X3D version of \"exponential\" in Web Audio API.";
-static D938: &str = "X3D version of \"highpass\" in Web Audio API.";
-static D939: &str = "X3D version of \"highshelf\" in Web Audio API.";
-static D940: &str = "X3D version of \"inverse\" in Web Audio API.";
-static D941: &str = "X3D version of \"linear\" in Web Audio API.";
-static D942: &str = "X3D version of \"lowpass\" in Web Audio API.";
-static D943: &str = "X3D version of \"lowshelf\" in Web Audio API.";
-static D944: &str = "X3D version of \"max\" in Web Audio API.";
-static D945: &str = "X3D version of \"notch\" in Web Audio API.";
-static D946: &str = "X3D version of \"peaking\" in Web Audio API.";
-static D947: &str = "X3D version of \"sawtooth\" in Web Audio API.";
-static D948: &str = "X3D version of \"sine\" in Web Audio API.";
-static D949: &str = "X3D version of \"speakers\" in Web Audio API.";
-static D950: &str = "X3D version of \"square\" in Web Audio API.";
-static D951: &str = "X3D version of \"triangle\" in Web Audio API.";
-static D952: &str = "Zero or more contained TextureCoordinate or TextureCoordinateGenerator nodes that specify texture coordinates for the different texture channels, used for texture mapping onto corresponding geometry.";
-static D953: &str = "Zero or more contained TextureTransform nodes, for each of the different texture channels, that define 2D transformation applied to texture coordinates.";
-static D954: &str = "Zero or more contained programmable shader nodes (ComposedShader, PackagedShader, ProgramShader) that specify, in order of preference, author-programmed rendering characteristics.";
-static D955: &str = "[maxChannelCount.";
-static D956: &str = "action key press gives following values: HOME=000 END=1001 PGUP=1002 PGDN=1003 UP=1004 DOWN=1005 LEFT=1006 RIGHT=1007 F1.";
-static D957: &str = "action key release gives following values: HOME=000 END=1001 PGUP=1002 PGDN=1003 UP=1004 DOWN=1005 LEFT=1006 RIGHT=1007 F1.";
-static D958: &str = "activate forces the shader to activate the contained objects.";
-static D959: &str = "activeLayer field specifies the layer in which navigation takes place.";
-static D960: &str = "addedEntities array contains any new entities added during the last frame.";
-static D961: &str = "all forceOutput fields computed.";
-static D962: &str = "altKey generates true event when pressed, false event when released.";
-static D963: &str = "amount of the silhouette enhancement to use.";
-static D964: &str = "anchorPoint is joint center, specified in world coordinates.";
-static D965: &str = "angularDampingFactor automatically damps a portion of body motion over time.";
-static D966: &str = "angularVelocity sets constant velocity value to object every frame, and reports updates by physics model.";
-static D967: &str = "anisotropicDegree defines minimum degree of anisotropy to account for in texture filtering (1=no effect for symmetric filtering, otherwise provide higher value).";
-static D968: &str = "any match of objectType values is acceptable.";
-static D969: &str = "any single object that can satisfy picking conditions.";
-static D970: &str = "aspectRatio is the ratio of width and height that is projected, reported as output event when contained image is loaded.";
-static D971: &str = "attenuation array values [a, b, c] are set to default values if undefined.";
-static D972: &str = "autoCalc controls whether user manually provides individual angle rotations each frame (false) or if angle values are automatically calculated by motor implementations (true).";
-static D973: &str = "autoDamp enables/disables angularDampingFactor and linearDampingFactor.";
-static D974: &str = "autoDisable toggles operation of disableAngularSpeed, disableLinearSpeed, disableTime.";
-static D975: &str = "autoRefresh defines interval in seconds before automatic reload of current url asset is performed.";
-static D976: &str = "autoRefreshTimeLimit defines maximum duration that automatic refresh activity can occur.";
-static D977: &str = "avatarSize triplet values define three separate parameters: (a) collisionDistance between user and geometry, i.";
-static D978: &str = "axis defines vector of joint connection between body1 and body2.";
-static D979: &str = "axis is normalized vector specifying direction of motion.";
-static D980: &str = "axis1 defines axis vector of joint connection to body1.";
-static D981: &str = "axis1Angle (radians) is rotation angle for corresponding motor axis when in user-calculated mode.";
-static D982: &str = "axis1Torque is rotational torque applied by corresponding motor axis when in user-calculated mode.";
-static D983: &str = "axis2 defines axis vector of joint connection to body2.";
-static D984: &str = "axis2Angle (radians) is rotation angle for corresponding motor axis when in user-calculated mode.";
-static D985: &str = "axis2Torque is rotational torque applied by corresponding motor axis when in user-calculated mode.";
-static D986: &str = "axis3Angle (radians) is rotation angle for corresponding motor axis when in user-calculated mode.";
-static D987: &str = "axis3Torque is rotational torque applied by corresponding motor axis when in user-calculated mode.";
-static D988: &str = "axisOfRotation direction is relative to local coordinate system.";
-static D989: &str = "axisRotation determines local sensor coordinate system by rotating the local coordinate system.";
-static D990: &str = "body1AnchorPoint describes anchorPoint position relative to local coordinate reference frame.";
-static D991: &str = "body1Axis describes report the current location of the anchor point relative to the corresponding body.";
-static D992: &str = "body2AnchorPoint describes anchorPoint position relative to local coordinate reference frame.";
-static D993: &str = "bold and italic type.";
-static D994: &str = "boldface type.";
-static D995: &str = "boolean values for each channel indicating whether enabled.";
-static D996: &str = "borderColor defines border pixel color.";
-static D997: &str = "borderWidth number of pixels for texture border.";
-static D998: &str = "bounce indicates bounciness (0 = no bounce at all, 1 = maximum bounce).";
-static D999: &str = "boundaryModeR describes handling of texture-coordinate boundaries.";
-static D1000: &str = "boundaryModeS describes handling of texture-coordinate boundaries.";
-static D1001: &str = "boundaryModeT describes handling of texture-coordinate boundaries.";
-static D1002: &str = "boundaryOpacity k_gs is the factored amount of the gradient enhancement to use.";
-static D1003: &str = "browser can offer any type for user to choose.";
-static D1004: &str = "browser-specified default compression mode.";
-static D1005: &str = "browser-specified default magnification mode.";
-static D1006: &str = "browser-specified default minification mode.";
-static D1007: &str = "buffer is a memory-resident audio asset that can contain one or more channels.";
-static D1008: &str = "bufferDuration is duration in seconds to use from buffer field.";
-static D1009: &str = "castShadow defines whether this GaussianSplats node casts shadows as produced by lighting nodes.";
-static D1010: &str = "castShadow defines whether this Shape casts shadows as produced by lighting nodes.";
-static D1011: &str = "ccw defines clockwise/counterclockwise ordering of vertex coordinates, which in turn defines front/back orientation of polygon normals according to Right-Hand Rule (RHR).";
-static D1012: &str = "center point above tip of chin.";
-static D1013: &str = "center point in 2D (s,t) texture coordinates for rotation and scaling.";
-static D1014: &str = "center specifies center point of proximity box within which ViewpointGroup is usable and displayed on viewpoint list.";
-static D1015: &str = "centerOfMass defines local center of mass for physics calculations.";
-static D1016: &str = "centerOfRotation specifies center point about which to rotate user's eyepoint when in EXAMINE or LOOKAT mode.";
-static D1017: &str = "channelCount reports number of channels provided by input nodes.";
-static D1018: &str = "channelCountMode determines how individual channels are counted when up-mixing and down-mixing connections to any inputs.";
-static D1019: &str = "channelInterpretation determines how individual channels are treated when up-mixing and down-mixing connections to any inputs.";
-static D1020: &str = "channelSelection is single channel of interest from those provided by input nodes.";
-static D1021: &str = "choose mipmap that most closely matches size of pixel being textured, use weighted average of four texture elements closest to center of pixel.";
-static D1022: &str = "circle radius, of which the arc is a portion.";
-static D1023: &str = "circle radius.";
-static D1024: &str = "clamps rotation_changed events within range of min/max values Hint: if minAngle > maxAngle, rotation is not clamped.";
-static D1025: &str = "clipBoundary is specified in fractions of the normal render surface in the sequence left/right/bottom/top.";
-static D1026: &str = "collection of 2D texture sources.";
-static D1027: &str = "color of light, applied to colors of objects.";
-static D1028: &str = "color space of the reconstructed color values.";
-static D1029: &str = "color used to highlight edges.";
-static D1030: &str = "colorIndex values define the order in which Color|ColorRGBA values are applied to polygons (or vertices), interspersed by -1 if colorlPerVertex=true.";
-static D1031: &str = "commencePose is an input boolean event that triggers the animation of Joint values to achieve the pose.";
-static D1032: &str = "coneInnerAngle is centered along direction and defines the inner conical volume, inside of which no source gain reduction occurs.";
-static D1033: &str = "coneOuterAngle is centered along direction and defines an outer conical volume, within which the sound gain decreases from full gain to coneOuterGain.";
-static D1034: &str = "coneOuterGain is minimum gain value found outside coneOuterAngle.";
-static D1035: &str = "confirm whether there has been a recent network update.";
-static D1036: &str = "consistent keystroke navigation for both geospatial and Cartesian modes.";
-static D1037: &str = "constantForceMix modifies damping calculations by violating normal constraints while applying small, constant forces in those calculations.";
-static D1038: &str = "contactNormal is unit vector describing normal between two colliding bodies.";
-static D1039: &str = "contactSurfaceThickness defines how far bodies may interpenetrate after a collision, allowing simulation of softer bodies that deform somewhat during collision.";
-static D1040: &str = "controlKey generates true event when pressed, false event when released.";
-static D1041: &str = "controlPoint defines a set of control points of dimension uDimension by vDimension, and defines a mesh where the points do not have uniform spacing.";
-static D1042: &str = "controlPoint specifies the end points of each segment of the piecewise linear curve.";
-static D1043: &str = "coolColor is used for surfaces facing away from the light direction.";
-static D1044: &str = "coordIndex indices are applied to contained Coordinate values in order to define randomly generated initial geometry of the particles.";
-static D1045: &str = "coordIndex indices provide the order in which coordinates are applied to construct each polygon face.";
-static D1046: &str = "coordIndex indices provide the order in which coordinates are applied to construct each polyline.";
-static D1047: &str = "creaseAngle defines angle (in radians) for determining whether adjacent polygons are drawn with sharp edges or smooth shading.";
-static D1048: &str = "creaseAngle defines angle (in radians) where adjacent polygons are drawn with sharp edges or smooth shading.";
-static D1049: &str = "cycleInterval is loop duration in seconds.";
-static D1050: &str = "cycleTime sends a time event at initial starting time and at beginning of each new cycle.";
-static D1051: &str = "cycleTime sends a time outputOnly at startTime, and also at the beginning of each new cycle (useful for synchronization with other time-based objects).";
-static D1052: &str = "default font family for a fixed-pitch font such as Courier.";
-static D1053: &str = "default font family for sans-serif font such as Helvetica.";
-static D1054: &str = "default font family for serif font such as Times-Roman.";
-static D1055: &str = "default plain type.";
-static D1056: &str = "define order of surface by polynomials of degree = order-1.";
-static D1057: &str = "define scattering model for implementations using global illumination (NONE or Henyey-Greenstein phase function).";
-static D1058: &str = "defines cross-section of the surface traced about the trajectoryCurve axis.";
-static D1059: &str = "defines whether the intersection test (i.";
-static D1060: &str = "delayTime is duration of delay applied (in seconds).";
-static D1061: &str = "depth contains a set of 3D coordinate (triplet) point values.";
-static D1062: &str = "depth indicates how deep the current intersection is along normal vector.";
-static D1063: &str = "describes the center-line path using a NurbsCurve node, oriented so that it is defined counterclockwise when looking down the −Y axis, thus defining a concept of inside and outside.";
-static D1064: &str = "designates both Encoding Class and Encoding Type.";
-static D1065: &str = "desiredAngularVelocity1 is goal rotation rate for hinge connection to body1.";
-static D1066: &str = "desiredAngularVelocity2 is goal rotation rate for hinge connection to body2.";
-static D1067: &str = "determines whether previous offset values are remembered/accumulated.";
-static D1068: &str = "diffuse coefficient of sound reflection indicates how much of the incident sound energy is reflected back in multiple directions.";
-static D1069: &str = "diffuseCoefficients field provides a 3 x 9 array of float values providing spherical harmonic coefficients for low-frequency characteristics of the environment map to produce an irradiance map corresponding to glTF irradianceCoefficients field.";
-static D1070: &str = "diffuseTexture defines explicit precomputed X3DEnvironmentTextureNode (ComposedCubeMapTexture, GeneratedCubeMapTexture, ImageCubeMapTexture) nodes as the image source for the EnvironmentLight.";
-static D1071: &str = "direction in which wind is travelling in the form of a normalized, unit vector.";
-static D1072: &str = "direction of sound axis, relative to local coordinate system.";
-static D1073: &str = "disableAngularSpeed defines lower-limit tolerance value when body is considered at rest and not part of rigid body calculations, reducing numeric instabilities.";
-static D1074: &str = "disableLinearSpeed defines lower-limit tolerance value when body is considered at rest and not part of rigid body calculation, reducing numeric instabilitiess.";
-static D1075: &str = "disableTime defines interval when body becomes at rest and not part of rigid body calculations, reducing numeric instabilities.";
-static D1076: &str = "disables all navigation interfaces.";
-static D1077: &str = "displacements are a set of SFVec3f values added to neutral/resting position of each of the corresponding HAnimSegment vertices (or HAnimJoint/HAnimHumanoid vertices) referenced by coordIndex field.";
-static D1078: &str = "displayed determines whether this ViewpointGroup is displayed in the current viewpoint list.";
-static D1079: &str = "distanceModel determines which algorithm to use for sound attenuation, corresponding to distance between an audio source and a listener, as it moves away from the listener.";
-static D1080: &str = "dopplerEnabled enables/disables whether real-time Doppler effects (due to relation motion between sources and listeners) are computed by browser between virtual sound sources and active listening locations, then applied to received frequency at active listening locations.";
-static D1081: &str = "duration is the time interval for filter response in seconds.";
-static D1082: &str = "each node is available for picking.";
-static D1083: &str = "elapsedTime is computed elapsed time since the Motion object was activated and running, counting all traversed frames (as if frameIndex equaled 1) and multiplied by frameDuration, cumulative in seconds.";
-static D1084: &str = "enableHRTF enables/disables Head Related Transfer Function (HRTF) auralization, if available.";
-static D1085: &str = "enabledAxes indicates which motor axes are active.";
-static D1086: &str = "endFrame indicates final index of animated frame.";
-static D1087: &str = "errorCorrection describes how quickly intersection errors due to floating-point inaccuracies are resolved (0=no correction, 1=all corrected in single step).";
-static D1088: &str = "event sent when node becomes active/inactive.";
-static D1089: &str = "event true sent when node becomes active, event false sent when unbound by another node.";
-static D1090: &str = "every object that satisfies picking conditions for this pick sensor is returned, in sorted order.";
-static D1091: &str = "every object that satisfies picking conditions for this pick sensor is returned.";
-static D1092: &str = "every objectType value in X3DPickSensorNode and X3DPickableObject shall match.";
-static D1093: &str = "exponential blending as a function of distance.";
-static D1094: &str = "fanCount array provides number of vertices in each fan.";
-static D1095: &str = "farDistance defines maximum clipping plane distance allowed for object display.";
-static D1096: &str = "fastest method available, use mipmaps if possible.";
-static D1097: &str = "fastest method available.";
-static D1098: &str = "fftSize represents size of Fast Fourier Transform (FFT) used to determine frequency domain.";
-static D1099: &str = "finiteRotationAxis specifies vector around which the object rotates.";
-static D1100: &str = "fixed indicates whether body is able to move.";
-static D1101: &str = "force field indicates strength and direction of the propelling force on the particles (for example, default is Earth's gravity).";
-static D1102: &str = "forceID determines the team membership of the issuing entity, and whether FRIENDLY OPPOSING or NEUTRAL or OTHER.";
-static D1103: &str = "forceOutput controls which output fields are generated for the next frame.";
-static D1104: &str = "forces defines linear force values applied to the object every frame.";
-static D1105: &str = "fraction_changed continuously sends value in range [0,1] showing time progress in the current cycle.";
-static D1106: &str = "fragment shader.";
-static D1107: &str = "frameCount is computed at run time and indicates the total number of frames present in the animation, equaling the number of sets of channel data rows present in the values array.";
-static D1108: &str = "frameDuration specifies the duration of each frame in seconds.";
-static D1109: &str = "frameIncrement field controls whether playback direction is forwards or backwards, and also whether frames are skipped (for example, subsampled replay).";
-static D1110: &str = "frameIndex indicates index of current frame.";
-static D1111: &str = "free navigation, avatar remains on ground, collision detection.";
-static D1112: &str = "free navigation, collision detection.";
-static D1113: &str = "frequency at which the BiquadFilterNode operates, in Hz.";
-static D1114: &str = "frequencyBinCount is half of fftSize and generally equates to number of data values available for the visualization.";
-static D1115: &str = "frictionCoefficients used for computing surface drag.";
-static D1116: &str = "frictionDirection controls friction vector.";
-static D1117: &str = "function operators COMPLEMENT or ALPHAREPLICATE can be applied after the mode blending operation.";
-static D1118: &str = "geometry field is used for rendering each particle.";
-static D1119: &str = "glabella is between the eyebrows and above the nose.";
-static D1120: &str = "global field affects the scope of lighting effects produced by the EnvironmentLight node, and has no effect on the computation of environment textures.";
-static D1121: &str = "gravity indicates direction and strength of local gravity vector for this collection of bodies (units m/sec^2).";
-static D1122: &str = "greatest amount of compression.";
-static D1123: &str = "gustiness specifies how much wind speed varies from the average speed.";
-static D1124: &str = "hatchStyle selects a hatch pattern from ISO/IEC 9973 International Register of Graphical Items.";
-static D1125: &str = "highest quality method available.";
-static D1126: &str = "hint for surface tessellation.";
-static D1127: &str = "how \"clear\" an object is: 1.";
-static D1128: &str = "how \"clear\" the background is, allows underlying page to show through: 1.";
-static D1129: &str = "how much ambient omnidirectional light is reflected from all light sources.";
-static D1130: &str = "how much direct, angle-dependent light is reflected from all light sources.";
-static D1131: &str = "how much glowing light is emitted from this object.";
-static D1132: &str = "if TRUE only a single image is captured, otherwise continuous updates are captured.";
-static D1133: &str = "ignore network but still respond to events in local scene.";
-static D1134: &str = "image describes raw data for this 3D texture: number of components to the image [0,4], width, height and depth of the texture, followed by (width x height x depth) pixel values.";
-static D1135: &str = "image height in pixels.";
-static D1136: &str = "imaginary coefficients for defining a waveform.";
-static D1137: &str = "immediate transition.";
-static D1138: &str = "index list specifies triangles by connecting Coordinate vertices for each individual strip, separated by -1 sentinel values.";
-static D1139: &str = "index list specifies triangles by connecting Coordinate vertices, each individual fan separated by -1 sentinel value.";
-static D1140: &str = "index list specifies triangles by connecting Coordinate vertices.";
-static D1141: &str = "index values provide order in which coordinates are applied.";
-static D1142: &str = "indicates that a generated texture contains a depth buffer for the image, instead of a color buffer.";
-static D1143: &str = "indicates the maximum number of independent frame files (or movie frames) that can be saved for a single series of image captures.";
-static D1144: &str = "indicates time intervals between render captures when the update field is \"ALWAYS\".";
-static D1145: &str = "indicates whether this GaussianSplats node is a target for pointer events, if FALSE then it is ignored during pointer picking.";
-static D1146: &str = "inertia matrix defines a 3x2 inertia tensor matrix.";
-static D1147: &str = "inputFalse only passes a false value, which occurs when set_boolean is false.";
-static D1148: &str = "inputNegate is an output event that provides an opposite value by negating set_boolean input.";
-static D1149: &str = "inputTrue only passes a true value, which occurs when set_boolean input is true.";
-static D1150: &str = "integerKey is value for output when triggered.";
-static D1151: &str = "interpolated coordinate in the geographic coordinate system specified by geoSystem Hint: X3D for Advanced Modeling (X3D4AM) slideset https://x3dgraphics.";
-static D1152: &str = "intersectionType specifies precision of the collision computation.";
-static D1153: &str = "isActive indicates when the intersecting object is picked by the picking geometry.";
-static D1154: &str = "isActive true/false events are sent as viewer enters/exits Proximity box.";
-static D1155: &str = "isActive true/false events are sent when TimeSensor starts/stops running.";
-static D1156: &str = "isActive true/false events are sent when follower-node computation starts/stops.";
-static D1157: &str = "isActive true/false events are sent when playback starts/stops.";
-static D1158: &str = "isActive true/false events are sent when pose animation starts/stops.";
-static D1159: &str = "isActive true/false events are sent when sensing starts/stops.";
-static D1160: &str = "isActive true/false events are sent when triggering the sensor.";
-static D1161: &str = "isPaused true/false events are sent when AudioClip is paused/resumed.";
-static D1162: &str = "isPaused true/false events are sent when MovieTexture is paused/resumed.";
-static D1163: &str = "isPaused true/false events are sent when TimeSensor is paused/resumed.";
-static D1164: &str = "isSelected indicates this shader instance is selected for use by browser Warning: it is an error to define this transient outputOnly field in an X3D file, instead only use it a source for ROUTE events.";
-static D1165: &str = "isValid indicates whether current shader objects can be run as a shader program.";
-static D1166: &str = "italic type.";
-static D1167: &str = "iterations controls number of iterations performed over collectioned joints and bodies during each evaluation.";
-static D1168: &str = "joints field lists names of joints that raw motion data is to be applied to.";
-static D1169: &str = "knee field contains a decibel value representing range above threshold where the curve smoothly transitions to compressed portion.";
-static D1170: &str = "knot vector, where size = number of control points + order of curve.";
-static D1171: &str = "least amount of compression.";
-static D1172: &str = "line is drawn along current velocity vector of particle.";
-static D1173: &str = "linear blending as a function of distance.";
-static D1174: &str = "linearDampingFactor automatically damps a portion of body motion over time.";
-static D1175: &str = "linearVelocity sets constant velocity value to object every frame, and reports updates by physics model.";
-static D1176: &str = "linetype selects a line pattern, with solid default if defined value isn't supported.";
-static D1177: &str = "linewidthScaleFactor is a scale factor multiplied by browser-dependent nominal linewidth, mapped to nearest available line width.";
-static D1178: &str = "list of number of channels for transformation, followed by transformation type of each channel of data.";
-static D1179: &str = "listen to network and read PDU packets at readInterval, act as remotely linked copy of entity.";
-static D1180: &str = "load=true means load immediately, load=false means defer loading or else unload a previously loaded asset.";
-static D1181: &str = "loopEnd field is optional playhead position where looping ends if loop=true.";
-static D1182: &str = "loopStart field is optional playhead position where looping begins if loop=true.";
-static D1183: &str = "magnificationFilter indicates texture filter when image is smaller than screen space representation.";
-static D1184: &str = "mapping field provides a mechanism for automatically creating an X3D model when a new entity arrives over the network.";
-static D1185: &str = "mass of the body in kilograms.";
-static D1186: &str = "matrix is a generalized, unfiltered 4x4 transformation matrix to modify texture (opposite effect appears on geometry).";
-static D1187: &str = "maxAngle is maximum rotation angle for hinge.";
-static D1188: &str = "maxAngle1 is maximum rotation angle for hinge.";
-static D1189: &str = "maxDecibels represents maximum power value in scaling range for FFT analysis data.";
-static D1190: &str = "maxDelayTime is duration of maximum amount of delay (in seconds) that can be applied.";
-static D1191: &str = "maxDistance is the maximum distance where sound is renderable between source and listener, after which no reduction in sound volume occurs.";
-static D1192: &str = "maxSeparation is maximum separation distance between the two bodies.";
-static D1193: &str = "maxTorque1 is maximum rotational torque applied by corresponding motor axis to achieve desiredAngularVelocity1.";
-static D1194: &str = "maxTorque2 is maximum rotational torque applied by corresponding motor axis to achieve desiredAngularVelocity2.";
-static D1195: &str = "maximum distance necessary for texture display, -1 if unconstrained.";
-static D1196: &str = "mediaDeviceID field provides a unique identifier for the active device that corresponds to deviceId functionality defined in W3C Web Audio API.";
-static D1197: &str = "metallic is a PBR parameter (TODO elaborate).";
-static D1198: &str = "minAngle is minimum rotation angle for hinge.";
-static D1199: &str = "minAngle1 is minimum rotation angle for hinge.";
-static D1200: &str = "minBounceSpeed m/s needed to bounce.";
-static D1201: &str = "minDecibels represents minimum power value in scaling range for FFT analysis data.";
-static D1202: &str = "minPosition and maxPosition clamp translations to a range of values measured from origin of Z=0 plane default maxPosition < minPosition means no clamping.";
-static D1203: &str = "minSeparation is minimum separation distance between the two bodies.";
-static D1204: &str = "minificationFilter indicates texture filter when image is larger than screen space representation.";
-static D1205: &str = "minimum angle (in radians) away from view-direction vector for surface normal before applying enhancement.";
-static D1206: &str = "minimum distance necessary for texture display, -1 if unconstrained.";
-static D1207: &str = "mode field indicates the type of blending operation, both for color and for alpha channel.";
-static D1208: &str = "moderate amount of compressions.";
-static D1209: &str = "motor1Angle provides calculated angle of rotation (radians) for this motor joint from last frame.";
-static D1210: &str = "motor1AngleRate provides calculated anglular rotation rate (radians/second) for this motor joint from last frame.";
-static D1211: &str = "motor1Axis defines axis vector of corresponding motor axis.";
-static D1212: &str = "motor2Angle provides calculated angle of rotation (radians) for this motor joint from last frame.";
-static D1213: &str = "motor2AngleRate provides calculated anglular rotation rate (radians/second) for this motor joint from last frame.";
-static D1214: &str = "motor2Axis defines axis vector of corresponding motor axis.";
-static D1215: &str = "motor3Angle provides calculated angle of rotation (radians) for this motor joint from last frame.";
-static D1216: &str = "motor3AngleRate provides calculated anglular rotation rate (radians/second) for this motor joint from last frame.";
-static D1217: &str = "motor3Axis defines axis vector of corresponding motor axis.";
-static D1218: &str = "munitionApplicationID, unique for application at that site.";
-static D1219: &str = "munitionEntityID is unique ID for entity firing munition within that application.";
-static D1220: &str = "nVidia Cg shading language.";
-static D1221: &str = "name of the prototype node being instanced.";
-static D1222: &str = "navigate to particular object.";
-static D1223: &str = "nearDistance defines minimum clipping plane distance necessary for object display.";
-static D1224: &str = "no forceOutput fields computed.";
-static D1225: &str = "no further texture updates are rendered.";
-static D1226: &str = "no node is available for picking.";
-static D1227: &str = "no scattering.";
-static D1228: &str = "normalIndex values define the order in which normal vectors are applied to polygons (or vertices), interspersed by -1 if normalPerVertex=true.";
-static D1229: &str = "normalScale controls the degree to which normalTexture RGB values apply XYZ-normal bump mapping to pixels in the parent material.";
-static D1230: &str = "normalize controls whether or not the impulse response from the buffer is scaled by an equal-power normalization when the buffer field is set.";
-static D1231: &str = "normalizeVelocity field specifies whether the velocity vectors are normalized to produce smooth speed transitions, or transformed into tangency vectors.";
-static D1232: &str = "notch just above the tragus of the ear.";
-static D1233: &str = "numComponents specifies how many consecutive floating-point values should be grouped together per vertex.";
-static D1234: &str = "number of bits of digital voice audio or digital data being sent in the Signal PDU.";
-static D1235: &str = "number of color components for the rendered texture.";
-static D1236: &str = "numberOfChannels is number of audio channels found in this buffer source.";
-static D1237: &str = "occlusionStrength indicates areas of indirect lighting, typically called ambient occlusion.";
-static D1238: &str = "one and only one objectType value can match.";
-static D1239: &str = "opacityFactor k_ge is the power function to control the slope of the opacity curve to highlight the set of data.";
-static D1240: &str = "or -1, maxCorrectionSpeed.";
-static D1241: &str = "or -1.";
-static D1242: &str = "order defines the number of internal filters (larger means smoother response, longer delay).";
-static D1243: &str = "orientation sets body direction in world space, then reports physics updates.";
-static D1244: &str = "origin defines the relative position for observing the surrounding scene to create an environment texture.";
-static D1245: &str = "origin of the text local coordinate system, in units of the coordinate system in which the Text node is embedded.";
-static D1246: &str = "orthogonalColor is used for surface normals that are orthogonal (perpendicular) to viewer's current location.";
-static D1247: &str = "osseocartilaginous junction of the nasal dorsum.";
-static D1248: &str = "pair of triangles creating quad geometry is rendered at particle position facing direction traveled.";
-static D1249: &str = "pairs of 2D (s,t) texture coordinates, either in range [0,1] or higher if repeating.";
-static D1250: &str = "parallelColor is used for surface normals that are orthogonal to viewer's current location.";
-static D1251: &str = "parameter array contains scale and translation (x y z) values for Perlin NOISE mode, parameter[0] contains index of refraction for SPHERE-REFLECT mode, parameter[0] contains index of refraction and parameter[1 to 3] contains the eye point in local coordinates for SPHERE-REFLECT-LOCAL mode.";
-static D1252: &str = "parameter field defines the algorithm used to compute texture coordinates.";
-static D1253: &str = "particleSize describes width and height dimensions for each particle in length base units (default is meters).";
-static D1254: &str = "pickTarget specifies the list of nodes against which picking operations are performed.";
-static D1255: &str = "pickable determines whether pick traversal is performed for this layer.";
-static D1256: &str = "pickingGeometry specifies the exact geometry coordinates that are used to perform the intersection testing of the picking operation.";
-static D1257: &str = "playbackRate field is speed at which to render the audio stream, and forms a compound field together with detune field Hint: negative values play in reverse.";
-static D1258: &str = "point contains a set of 3D coordinate (triplet) point values.";
-static D1259: &str = "point contains a set of actual 3D geographic coordinates, provided in geoSystem format can split strings if desired: \"x1 y1 z1 x2 y2 z2\" or \"x1 y1 z1\", \"x2 y2 z2\".";
-static D1260: &str = "point geometry is rendered at particle position.";
-static D1261: &str = "pointSize field specifies the size of text in points.";
-static D1262: &str = "pointSizeMaxValue is maximum allowed scaling factor on nominal browser point scaling.";
-static D1263: &str = "pointSizeMinValue is minimum allowed scaling factor on nominal browser point scaling.";
-static D1264: &str = "position (x, y, z in meters) of exact location of collision.";
-static D1265: &str = "position (x, y, z in meters) relative to local coordinate system.";
-static D1266: &str = "position relative to local georeferenced coordinate system, in proper format.";
-static D1267: &str = "position sets body location in world space, then reports physics updates.";
-static D1268: &str = "power function to control sharpness of the silhouette.";
-static D1269: &str = "preferAccuracy provides hint for performance preference: higher accuracy or faster computational speed.";
-static D1270: &str = "provides a TRUE event when the data output process becomes active, and a FALSE event when the data output process is stopped.";
-static D1271: &str = "quad geometry is rendered at particle position facing direction traveled.";
-static D1272: &str = "quad geometry is rendered at particle position facing screen.";
-static D1273: &str = "quadtree geometry loaded when viewer is within range.";
-static D1274: &str = "qualityFactor is Quality Factor (Q) of the respective filter algorithm.";
-static D1275: &str = "ratio field represents amount of input change, in dB, needed for 1 dB change in output.";
-static D1276: &str = "real coefficients for defining a waveform.";
-static D1277: &str = "receivedPower indicates radio frequency (RF) power received, in units of decibel-milliwatts (dBm), after applying any propagation loss and antenna gain.";
-static D1278: &str = "receiverState indicates if receiver is currently idle or busy via one of these enumerated values: 0 = off, 1 = on but not receiving, or 2 = on and receiving.";
-static D1279: &str = "reduction field provides amount of gain reduction in dB currently applied by compressor to signal.";
-static D1280: &str = "referenceDistance for reducing volume as source moves further from the listener.";
-static D1281: &str = "release field represents amount of time (in seconds) to increase gain by 10dB.";
-static D1282: &str = "removedEntities output array provides EspduTransform references to any entities removed during last frame, either due to a timeout or from an explicit RemoveEntityPDU action.";
-static D1283: &str = "render texture once at end of frame.";
-static D1284: &str = "resetAllJoints is an input boolean event that zeroes all Joint objects in the skeleton field to their default values, matching the default binding pose (i.";
-static D1285: &str = "retainedOpacity k_gc is the amount of initial opacity to mix into the output.";
-static D1286: &str = "return closest object by distance that satisfies conditions of this pick sensor.";
-static D1287: &str = "rolloffFactor indicates how quickly volume is reduced as source moves further from listener.";
-static D1288: &str = "rotation angle of texture about center (opposite effect appears on geometry).";
-static D1289: &str = "rotation field represents the overall rotation of the IBL environment.";
-static D1290: &str = "rotation_changed events equal sum of relative bearing changes plus offset value about Y-axis in local coordinate system.";
-static D1291: &str = "rotation_changed events equal sum of relative bearing changes plus offset value.";
-static D1292: &str = "roughness is a PBR parameter (TODO elaborate).";
-static D1293: &str = "rowser-specific transition.";
-static D1294: &str = "sampleRate field is sample-frames per second.";
-static D1295: &str = "sampleRate gives either (1) sample rate in samples per second if Encoding Class is encoded audio, or (2) data rate in bits per second for data transmissions.";
-static D1296: &str = "scale for surface tessellation in children NurbsSurface nodes.";
-static D1297: &str = "scale is a list of 2D-scale parameters applied at each spine-aligned cross-section plane.";
-static D1298: &str = "scaling of non-silhouette regions.";
-static D1299: &str = "send PDU packets to network at writeInterval, act as master entity.";
-static D1300: &str = "separateBackColor determines whether separate Material values are used for back faces.";
-static D1301: &str = "separation indicates final separation distance between the two bodies.";
-static D1302: &str = "separationRate indicates change in separation distance over time between the two bodies.";
-static D1303: &str = "set of unit-length normal vectors, corresponding to indexed polygons or vertices.";
-static D1304: &str = "set of x-y-z-w orthogonal vector values for a surface, applied either per-vertex or per-face to a mesh.";
-static D1305: &str = "set_bind true makes this node active, set_bind false makes this node inactive.";
-static D1306: &str = "set_boolean is the input value to be filtered.";
-static D1307: &str = "set_contacts input field for Contact nodes provides per-frame information about contacts between bodies.";
-static D1308: &str = "set_destination resets destination value of this node.";
-static D1309: &str = "set_fraction selects input fraction for computation of corresponding easeInEaseOut output value, modifiedFraction_changed.";
-static D1310: &str = "set_fraction selects input key for corresponding keyValue output.";
-static D1311: &str = "set_fraction selects input key for corresponding use of keyValue, keyVelocity values for output computation.";
-static D1312: &str = "set_startTime is an input event that commences the animation of Joint objects in the parent Humanoid object.";
-static D1313: &str = "set_triggerTime provides input time event, typical event sent is TouchSensor touchTime.";
-static D1314: &str = "set_value resets current value of this node.";
-static D1315: &str = "setting fraction in range [0,1] provides an input event that allows gradual change of each joint in the pose, where 0 indicates no change and 1 indicates fully changed.";
-static D1316: &str = "setting fraction in range [0,1] selects input key for corresponding keyValue output, computing a 3D position on the curve.";
-static D1317: &str = "shadowIntensity field defines how much light is obscured by shapes that cast shadows, ranging from 0 (light not obscured, no visible shadows) to 1 (light completely obscured, full-intensity shadows).";
-static D1318: &str = "shadows field indicates whether or not this light casts a shadow behind illuminated X3DShapeNode geometry.";
-static D1319: &str = "shiftKey generates true event when pressed, false event when released.";
-static D1320: &str = "similar to CAMERASPACEREFLECTIONVECTOR with optional index of refraction.";
-static D1321: &str = "similar to diffuseColor, TODO define more precisely.";
-static D1322: &str = "sites field contains a list of USE references for all HAnimSite node instances found within the preceding skeleton hierarchy.";
-static D1323: &str = "size indicates the resolution of the generated images in number of pixels per side.";
-static D1324: &str = "size of Proximity box around center location, oriented within local transformation frame, within which ViewpointGroup is usable and displayed on viewpoint list.";
-static D1325: &str = "size of Proximity box around center location, oriented within local transformation frame.";
-static D1326: &str = "size of transformation-traccking box around center location, oriented within local transformation frame.";
-static D1327: &str = "size of visibility box around center location, oriented within local transformation frame.";
-static D1328: &str = "size x y z in meters.";
-static D1329: &str = "sliderForce value is used to apply a force (specified in force base units) along the axis of the slider in equal and opposite directions to the two bodies.";
-static D1330: &str = "slipCoefficients used for computing surface drag.";
-static D1331: &str = "slipFactors used for computing surface drag.";
-static D1332: &str = "smoothingTimeConstant represents averaging constant during last analysis frame.";
-static D1333: &str = "softnessConstantForceMix value applies a constant force value to make colliding surfaces appear to be somewhat soft.";
-static D1334: &str = "softnessErrorCorrection indicates fraction of collision error fixed in a set of evaluations (0 = no error correction, 1 = all errors corrected in single step).";
-static D1335: &str = "sound refraction coefficient of a medium, which determines change in propagation direction of sound wave when obliquely crossing boundary between two mediums where its speed is different.";
-static D1336: &str = "sound source for the Sound node, either an AudioClip node or a MovieTexture node.";
-static D1337: &str = "source field determines whether each image source is treated as DIFFUSE, SPECULAR or a multiplicative FACTOR.";
-static D1338: &str = "specifies 2D textures used to determine weight values when weight function is set to TABLE.";
-static D1339: &str = "specifies the sound absorption coefficient of a surface, meaning the ratio of sound intensity not reflected by a surface.";
-static D1340: &str = "specifies type of geometry used to represent individual particles.";
-static D1341: &str = "specular coefficient of sound reflection striking a plane surface, directly reflected back into space, where angle of reflection equals angle of incidence.";
-static D1342: &str = "specular highlights are brightness reflections (example: shiny spots on an apple).";
-static D1343: &str = "specularTexture defines explicit precomputed X3DEnvironmentTextureNode (ComposedCubeMapTexture, GeneratedCubeMapTexture, ImageCubeMapTexture) nodes as the image source for the EnvironmentLight.";
-static D1344: &str = "speedFactor is a multiplier to modify the original elevation-based speed that is set automatically by the browser.";
-static D1345: &str = "spherical harmonics data.";
-static D1346: &str = "startFrame indicates initial index of animated frame.";
-static D1347: &str = "stop1Bounce is velocity factor for bounce back once stop point is reached.";
-static D1348: &str = "stop1ConstantForceMix value applies a constant force value to make colliding surfaces appear to be somewhat soft.";
-static D1349: &str = "stop1ErrorCorrection is fraction of error correction performed during time step once stop point is reached.";
-static D1350: &str = "stop2Bounce is velocity factor for bounce back once stop point is reached.";
-static D1351: &str = "stop2ErrorCorrection is fraction of error correction performed during time step once stop point is reached.";
-static D1352: &str = "stop3Bounce is velocity factor for bounce back once stop point is reached.";
-static D1353: &str = "stop3ErrorCorrection is fraction of error correction performed during time step once stop point is reached.";
-static D1354: &str = "stopBounce is velocity factor for bounce back once stop point is reached.";
-static D1355: &str = "stopErrorCorrection is fraction of error correction performed during time step once stop point is reached.";
-static D1356: &str = "stripCount array provides number of vertices in each strip.";
-static D1357: &str = "surfaceSpeed defines speed vectors for computing surface drag, if contact surfaces move independently of bodies.";
-static D1358: &str = "suspensionErrorCorrection describes how quickly the system resolves intersection errors due to floating-point inaccuracies.";
-static D1359: &str = "suspensionForce describes how quickly the system resolves intersection errors due to floating-point inaccuracies.";
-static D1360: &str = "tailTime is duration of time that a node continues to provide output signal after the input signal becomes silent.";
-static D1361: &str = "targetObject is the movable geometry represented by any valid X3DGroupingNode or X3DShapeNode which may enter or exit the box.";
-static D1362: &str = "tau is the exponential-decay time constant for filter response in seconds.";
-static D1363: &str = "texture coordinates of the provided texture(s) in the Appearance node, over time.";
-static D1364: &str = "texture element nearest to center of pixel being textured, use average of two nearest mipmaps.";
-static D1365: &str = "texture element nearest to center of pixel being textured, use nearest mipmap.";
-static D1366: &str = "texture element nearest to center of pixel being textured.";
-static D1367: &str = "texture element nearest to the center of pixel being textured.";
-static D1368: &str = "texture to be rendered every frame.";
-static D1369: &str = "textureCompression indicates compression algorithm selection mode.";
-static D1370: &str = "texturePriority defines relative priority for this texture when allocating texture memory, an important rendering resource in graphics-card hardware.";
-static D1371: &str = "the coord field is used for HAnimSegment objects that have deformable meshes and shall contain coordinates referenced from the IndexedFaceSet for the parent HAnimSegment object.";
-static D1372: &str = "the displacers field stores HAnimDisplacer objects for a particular HAnimJoint object.";
-static D1373: &str = "the displacers field stores HAnimDisplacer objects for a particular HAnimSegment object.";
-static D1374: &str = "threshold field represents decibel value above which compression starts taking effect.";
-static D1375: &str = "title of this world, placed in window title.";
-static D1376: &str = "torques defines rotational force values applied to the object every frame.";
-static D1377: &str = "trackPoint_changed events give intersection point of bearing with sensor's virtual geometry.";
-static D1378: &str = "transition may proceed directly through intervening objects.";
-static D1379: &str = "transitionTime defines the expected duration of viewpoint transition in seconds.";
-static D1380: &str = "translation_changed events equal sum of relative translation change plus offset value.";
-static D1381: &str = "transparency applied to texture images, enabling an X3D scene to overlay an HTML page or desktop.";
-static D1382: &str = "tri-linear mipmap filtering.";
-static D1383: &str = "triggerTime is output time event, sent when input event set_boolean is true.";
-static D1384: &str = "triggerTrue outputs a true value whenever a triggerTime event is received.";
-static D1385: &str = "triggerValue provides integer event output matching integerKey when true set_boolean received.";
-static D1386: &str = "triplets of 3D (s,t,r) texture coordinates, either in range [0,1] or higher if repeating.";
-static D1387: &str = "turbulence field specifies how much the wind acts directly in line with the direction, and how much variation is applied in directions other than the wind direction.";
-static D1388: &str = "type indicates whether this ShaderProgram is a vertex or fragment (pixel) shader.";
-static D1389: &str = "type selects which BiquadFilter algorithm is used.";
-static D1390: &str = "upVector describes camera orientation by defining which direction is up.";
-static D1391: &str = "update controls regeneration of the texture.";
-static D1392: &str = "url for scene providing geometry for the root tile.";
-static D1393: &str = "url points to a shader source-code file that may contain a number of shaders and combined effects.";
-static D1394: &str = "useFiniteRotation enables/disables higher-resolution, higher-cost computational method for calculating rotations.";
-static D1395: &str = "useGeometry indicates whether collision-detection code checks down to level of geometry, or only make approximations using geometry bounds.";
-static D1396: &str = "useGlobalGravity indicates whether this particular body is influenced by parent RigidBodyCollection's gravity setting.";
-static D1397: &str = "value specifies an arbitrary collection of floating-point values that will be passed to the shader as per-vertex information.";
-static D1398: &str = "value specifies an arbitrary collection of matrix values that will be passed to the shader as per-vertex information.";
-static D1399: &str = "values field contains all transformation values, ordered first by frame, then by joint, and then by transformation Sets of floats in the values array matching the order listed in joints and channels fields.";
-static D1400: &str = "vertex shader.";
-static D1401: &str = "vertexCount describes how many vertices are used in each individual polyline segment from the Coordinate point values.";
-static D1402: &str = "view an individual object by rotating view about center.";
-static D1403: &str = "warmColor is used for surfaces facing towards the light.";
-static D1404: &str = "weightConstant1 is used when weightFunction1=CONSTANT.";
-static D1405: &str = "weightConstant2 is used when weightFunction2=CONSTANT.";
-static D1406: &str = "weighted average of four texture elements closest to center of pixel being textured.";
+static D678: &str = "Tactical Data Link (TDL) type as an enumerated value when the Encoding Class is voice, raw binary, application-specific, or database index representation of a TDL message.";
+static D679: &str = "Tangent defines a set of 3D surface-normal vectors that apply either to a sibling Coordinate|CoordinateDouble node, or else to a parent ElevationGrid node.";
+static D680: &str = "TexCoordChaser2D generates a series of single floating-point values that progressively change from initial value to destination value.";
+static D681: &str = "TexCoordDamper2D generates a series of 2D floating-point arrays that progressively change from initial value to destination value.";
+static D682: &str = "Text description or navigation hint to describe the significance of this model Viewpoint.";
+static D683: &str = "Text description or navigation hint to identify this ViewpointGroup.";
+static D684: &str = "Text is a 2D (flat) geometry node that can contain multiple lines of string values.";
+static D685: &str = "Texture coordinates are mirrored and then clamped as in CLAMP_TO_EDGE.";
+static D686: &str = "TextureBackground simulates ground and sky, using vertical arrays of wraparound color values, TextureBackground can also provide backdrop texture images on all six sides.";
+static D687: &str = "TextureCoordinate specifies 2D (s,t) texture-coordinate points, used by vertex-based geometry nodes (such as IndexedFaceSet or ElevationGrid) to map textures to vertices (and patches to NURBS surfaces).";
+static D688: &str = "TextureCoordinate3D specifies a set of 3D texture coordinates used by vertex-based geometry nodes (such as IndexedFaceSet or ElevationGrid) to map 3D textures to vertices.";
+static D689: &str = "TextureCoordinate4D specifies a set of 4D (homogeneous 3D) texture coordinates used by vertex-based geometry nodes (such as IndexedFaceSet or ElevationGrid) to map 3D textures to vertices.";
+static D690: &str = "TextureCoordinateGenerator computes 2D (s,t) texture-coordinate points, used by vertex-based geometry nodes (such as IndexedFaceSet or ElevationGrid) to map textures to vertices (and patches to NURBS surfaces).";
+static D691: &str = "TextureProjector is similar to a light that projects a texture into the scene, illuminating geometry that intersects the perspective projection volume.";
+static D692: &str = "TextureProjectorParallel is similar to a light that projects a texture into the scene, illuminating geometry that intersects the parallel projection volume.";
+static D693: &str = "TextureProperties allows precise fine-grained control over application of image textures to geometry.";
+static D694: &str = "TextureTransform shifts 2D texture coordinates for positioning, orienting and scaling image textures on geometry.";
+static D695: &str = "TextureTransform3D applies a 3D transformation to texture coordinates.";
+static D696: &str = "TextureTransformMatrix3D applies a 3D transformation to texture coordinates.";
+static D697: &str = "The Gain node amplifies or deamplifies the input signal.";
+static D698: &str = "The GaussianSplats node adds basic support for direct real-time radiance field rendering of volume data without converting into surface or line primitives.";
+static D699: &str = "The HAnimHumanoid node is used to: (a) store references to the joints, segments, sites, skeleton, optional skin, and fixed viewpoints, (b) serve as a container for the entire humanoid, (c) provide a convenient way of moving the humanoid through its environment, and (d) store human-readable metadata such as name, version, author, copyright, age, gender and other information.";
+static D700: &str = "The Sound node controls the 3D spatialization of sound playback by a child AudioClip or MovieTexture node.";
+static D701: &str = "The SpatialSound node controls the 3D spatialization of sound playback by a child AudioClip or MovieTexture node.";
+static D702: &str = "The [autoRefresh field has no effect, Anchor operation is only triggered by user selection.";
+static D703: &str = "The [autoRefreshTimeLimit field has no effect, Anchor operation is only triggered by user selection.";
+static D704: &str = "The align field values align the sized rectangle to an edge or center of the parent rectangle.";
+static D705: &str = "The alpha field defines the alpha (1-transparency) base value for mode operations.";
+static D706: &str = "The angle array values increase from 0.";
+static D707: &str = "The appearance field holds an Appearance node that is used for the geometry.";
+static D708: &str = "The attack field is the duration of time (in seconds) to reduce the gain by 10dB.";
+static D709: &str = "The body1 and body2 fields indicate the two RigidBody nodes connected by this joint.";
+static D710: &str = "The body1 and body2 fields specify two top-level nodes that should be evaluated in the physics model as a single set of interactions with respect to each other.";
+static D711: &str = "The bounce field value is used.";
+static D712: &str = "The castShadow field defines whether this Shape casts shadows as produced by lighting nodes.";
+static D713: &str = "The ccw field indicates counterclockwise ordering of vertex-coordinates orientation.";
+static D714: &str = "The children field lists all HAnimJoint nodes making up this pose.";
+static D715: &str = "The children field monitors one or more USE nodes that contain a valid url field.";
+static D716: &str = "The children field specifies audio-graph sound sources providing input signals for this node, making up a section of the audio graph.";
+static D717: &str = "The children field specifies audio-graph sound sources providing input signals for this node.";
+static D718: &str = "The children form a closed loop with first point of first child repeated as last point of last child, and the last point of a segment repeated as first point of the consecutive one.";
+static D719: &str = "The collidable field holds a reference to a single nested item of a collidable scene graph.";
+static D720: &str = "The collider field associates a collision collection with this rigid body collection allowing seamless updates and integration without the need to use the X3D event model.";
+static D721: &str = "The collider field specifies a CollisionCollection node that holds a collidables field of nodes and spaces that are to be included in collision-detection computations.";
+static D722: &str = "The color field contains Color|ColorRGBA nodes as a series of color values to be used at the given colorKey points in time.";
+static D723: &str = "The color field defines an array of 3-tuple RGB colors.";
+static D724: &str = "The color field defines an array of 4-tuple RGBA colors.";
+static D725: &str = "The color field defines the RGB base values for mode operations.";
+static D726: &str = "The color space of the reconstructed color values, either SRGB_REC709_DISPLAY or LIN_REC709_DISPLAY Hint: for details see https://github.";
+static D727: &str = "The content of the LayoutGroup is clipped by the specified viewport.";
+static D728: &str = "The convex field is a hint to renderers whether all polygons in a shape are convex (true), or possibly concave (false).";
+static D729: &str = "The crossSection array defines a silhouette outline of the outer Extrusion surface.";
+static D730: &str = "The curve field is an array of floating-point numbers describing the distortion to apply.";
+static D731: &str = "The detune field, measured in cents, modulates the speed at which the the audio stream is rendered.";
+static D732: &str = "The emitter field specifies the type of emitter geometry and properties that the particles are given for their initial positions.";
+static D733: &str = "The family field provides an identifying alias for the font in the associated file, if that file only contains a single font family (possibly with multiple styles).";
+static D734: &str = "The fontStyle field can contain a FontStyle or ScreenFontStyle node defining size, family, and style for presented text.";
+static D735: &str = "The frequency of oscillation in hertz.";
+static D736: &str = "The gain field is a factor that represents the amount of linear amplification to apply to the output of the node.";
+static D737: &str = "The gain value only affects analysis, not output signal.";
+static D738: &str = "The geometry field is used to connect the body modelled by the physics engine implementation to the real geometry of the scene through the use of collidable nodes.";
+static D739: &str = "The geometry node provides geometry used as the emitting surface.";
+static D740: &str = "The geometry1 and geometry2 fields specify collision-related information about body1 and body2.";
+static D741: &str = "The global field controls potential external scoping effects of lights found within an Inline scene.";
+static D742: &str = "The interauralDistance field is.";
+static D743: &str = "The joints field contains a list of USE references for all HAnimJoint node instances found within the preceding skeleton hierarchy.";
+static D744: &str = "The joints field is used to register all joints between bodies contained in this collection.";
+static D745: &str = "The justify field determines horizontal and vertical alignment of text layout, relative to the origin of the object coordinate system.";
+static D746: &str = "The language field indicates to the X3D player which shading language is used.";
+static D747: &str = "The layers list defines a list of Layer nodes that contain the constituent parts of the scene.";
+static D748: &str = "The layout field contains an X3DLayoutNode node that provides the information required to locate and size the layout region of the LayoutGroup node relative to its parent’s layout region, and also to scale the contents of the LayoutGroup.";
+static D749: &str = "The load field has no effect, Anchor operation is only triggered by user selection.";
+static D750: &str = "The mapping label identifies which texture coordinates and transformations are used to compute texture effects from corresponding geometry on a given material.";
+static D751: &str = "The massDensityModel field is used to describe the geometry type and dimensions used to calculate the mass density in the physics model.";
+static D752: &str = "The mean vector for the Gaussian splat is provided by the positions of the mesh primitive.";
+static D753: &str = "The metadata provided by this node is contained in the Boolean values of the value field.";
+static D754: &str = "The metadata provided by this node is contained in the double-precision floating point numbers of the value field.";
+static D755: &str = "The metadata provided by this node is contained in the integer numbers of the value field.";
+static D756: &str = "The metadata provided by this node is contained in the metadata nodes of the value field.";
+static D757: &str = "The metadata provided by this node is contained in the single-precision floating point numbers of the value field.";
+static D758: &str = "The metadata provided by this node is contained in the strings of the value field.";
+static D759: &str = "The navigationInfo field defines a dedicated NavigationInfo node for this X3DViewpointNode.";
+static D760: &str = "The objectType field specifies a set of labels used in the picking process.";
+static D761: &str = "The offsetUnits field values are used to interprete the offset values.";
+static D762: &str = "The opacity of a Gaussian splat is defined by the opacities field.";
+static D763: &str = "The order list defines the order in which layers are rendered.";
+static D764: &str = "The orientation array is a list of axis-angle 4-tuple values applied at each spine-aligned cross-section plane.";
+static D765: &str = "The outputOnly children field exposes a portion of the scene graph for the currently loaded set of nodes.";
+static D766: &str = "The outputs field is a set of output nodes receiving the split channels, and making up a section of the audio graph.";
+static D767: &str = "The oversample field is specifies what type of oversampling (if any) should be used when applying the shaping curve.";
+static D768: &str = "The periodicWave field is an optional PeriodicWave node providing a regular or arbitrary periodic waveform.";
+static D769: &str = "The pickable field determines whether pick traversal is performed on this node or its children.";
+static D770: &str = "The proxy node is used as a substitute for Collision children during collision detection, simplifying collision-intersection computations.";
+static D771: &str = "The scaleMode field specifies how the scale of the parent is modified.";
+static D772: &str = "The segments field contains a list of USE references for all HAnimSegment node instances found within the preceding skeleton hierarchy.";
+static D773: &str = "The shape field provides a geometry proxy for specifying which geometry best represents the collidable object.";
+static D774: &str = "The sizeUnits field values are used to interprete the offset values.";
+static D775: &str = "The smooth field provides a hint to the browser whether smooth rendering is preferred for a retrieved polygonal mesh.";
+static D776: &str = "The sortOrder field determines the order provided for picked output events.";
+static D777: &str = "The spine array defines a center-line sequence of 3D points that define a piecewise-linear curve forming a series of connected vertices.";
+static D778: &str = "The summary string array contains a set of keyword/value pairs, with each keyword and its subsequent value contained in separate strings.";
+static D779: &str = "The surfaceNormals field contains a 3D texture with at least three component values.";
+static D780: &str = "The system will normally calculate the friction direction vector that is perpendicular to the contact normal. This setting indicates that the user-supplied value in this contact should be used.";
+static D781: &str = "The transferFunction field holds a single texture representation in either two or three dimensions that maps the voxel data values to a specific colour output.";
+static D782: &str = "The two values in the size field define the width and height of the layout rectangle.";
+static D783: &str = "The type field specifies shape of waveform to play, which can be one of several provided values or else 'custom' to indicate that real and imaginary coefficient arrays define a custom waveform.";
+static D784: &str = "The url field typically defines a relative address to a file name that can be used for storing one or more rendered textures, and can also provide a destination for output of successive image files as a video file or video stream.";
+static D785: &str = "The value attribute is a strictly typed data array providing relevant metadata information.";
+static D786: &str = "The value field provides a list of X3DMetadataObject nodes whose meaning is determined by the name field.";
+static D787: &str = "The values in the scales field correspond to the spread of the Gaussian along its local principal axes.";
+static D788: &str = "The values of the offset field are used to translate the location of this rectangle after the initial alignment.";
+static D789: &str = "The viewport field is a single Viewport node that constrains layer output to a sub-region of the render surface.";
+static D790: &str = "The weigh factor has typical range [0,1] and defines the scale factor applied to displacement values before adding them to neutral vertex positions.";
+static D791: &str = "The weightTransferFunction1 and weightTransferFunction2 fields specify two-dimensional textures that are used to determine the weight values when the weight function is set to \"TABLE\".";
+static D792: &str = "Threshold for gradient magnitude for voxel inolusion in isosurface.";
+static D793: &str = "Threshold value used for pixel rendering either transparent or opaque, used when alphaMode=\"MASK\".";
+static D794: &str = "Threshold value used when type=MIN (LMIP) or type=MAX (MIP).";
+static D795: &str = "Time continuously sends the absolute time (value 0.";
+static D796: &str = "Time event generated when sensor is touched by pointing device, and then deselected by the user.";
+static D797: &str = "Time event generated when targetObject enters the box region for sensor.";
+static D798: &str = "Time event generated when targetObject exits the box region for sensor.";
+static D799: &str = "Time event generated when touched.";
+static D800: &str = "Time event generated when user's camera enters the box.";
+static D801: &str = "Time event generated when user's camera enters visibility region for sensor.";
+static D802: &str = "Time event generated when user's camera exits the box.";
+static D803: &str = "Time event generated when user's camera exits visibility region for sensor.";
+static D804: &str = "Time in seconds of maximum load duration prior to declaring failure.";
+static D805: &str = "Time of collision between camera (avatar) and geometry.";
+static D806: &str = "Time of successful load complete, not sent on failure.";
+static D807: &str = "TimeSensor continuously generates events as time passes.";
+static D808: &str = "TimeTrigger converts boolean true events to time events.";
+static D809: &str = "ToneMappedVolumeStyle specifies that volumetric data is rendered with Gooch shading model of two-toned warm/cool coloring.";
+static D810: &str = "Total mass of the segment, 0 if not available, defined in mass base units (default is kilograms).";
+static D811: &str = "TouchSensor tracks location and state of the pointing device, detecting when a user points at or selects (activates) geometry.";
+static D812: &str = "Transform is a Grouping node that can contain most nodes.";
+static D813: &str = "TransformSensor generates output events when its targetObject enters, exits, and moves within a region in space (defined by a box).";
+static D814: &str = "Transition instantly by jumping, otherwise smoothly adjust offsets in place when changing to this Viewpoint.";
+static D815: &str = "Translation offset from origin of local coordinate system, applied prior to rotation or scaling.";
+static D816: &str = "Translation offset from origin of local coordinate system.";
+static D817: &str = "Transmission frequency in Hz.";
+static D818: &str = "TransmitterPdu is a networked Protocol Data Unit (PDU) information node that provides detailed information about a radio transmitter modeled in a simulation.";
+static D819: &str = "TriangleFanSet is a geometry node containing a Coordinate|CoordinateDouble node, and can also contain Color|ColorRGBA, Normal and TextureCoordinate nodes.";
+static D820: &str = "TriangleSet is a geometry node containing a Coordinate|CoordinateDouble node, and can also contain Color|ColorRGBA, Normal and TextureCoordinate nodes.";
+static D821: &str = "TriangleSet2D is a geometry node that defines a set of filled 2D triangles in X-Y plane.";
+static D822: &str = "TriangleStripSet is a geometry node containing a Coordinate|CoordinateDouble node, and can also contain Color|ColorRGBA, Normal and TextureCoordinate nodes.";
+static D823: &str = "TwoSidedMaterial specifies surface rendering properties for associated geometry, for outer (front) and inner (back) sides of polygons.";
+static D824: &str = "Unique name attribute must be defined so that HAnimDisplacer node can be identified at run time for animation purposes.";
+static D825: &str = "Unique name attribute must be defined so that HAnimJoint node can be identified at run time for animation purposes.";
+static D826: &str = "Unique name attribute must be defined so that HAnimMotion node can be identified at run time for animation purposes.";
+static D827: &str = "Unique name attribute must be defined so that HAnimPose node can be identified at run time for animation purposes.";
+static D828: &str = "Unique name attribute must be defined so that HAnimSegment node can be identified at run time for animation purposes.";
+static D829: &str = "Unique name attribute must be defined so that HAnimSite node can be identified at run time for animation purposes.";
+static D830: &str = "Unique name attribute must be defined so that each HAnimHumanoid node in a scene can be identified at run time for animation purposes.";
+static D831: &str = "UniversalJoint is like a BallJoint that constrains an extra degree of rotational freedom.";
+static D832: &str = "UnlitMaterial specifies surface rendering properties for associated geometry that is unaffected by scene lighting.";
+static D833: &str = "Upper limit for maximum joint rotation in radians.";
+static D834: &str = "Use 1 - O_blend.";
+static D835: &str = "Use 1 - O_v.";
+static D836: &str = "Use O_blend.";
+static D837: &str = "Use O_v.";
+static D838: &str = "Use reflection vector, transformed to camera space, as input texture coordinates.";
+static D839: &str = "Use table lookup value.";
+static D840: &str = "Use vertex coordinates transformed to camera space.";
+static D841: &str = "Use vertex coordinates.";
+static D842: &str = "Use vertex normal, transformed to camera space, as input texture coordinates.";
+static D843: &str = "Use vertex position, transformed to camera space, as input texture coordinates.";
+static D844: &str = "Use weightConstant1.";
+static D845: &str = "User-specified dash pattern.";
+static D846: &str = "Vector assigning relative weight value to each control point.";
+static D847: &str = "Velocity of the entity relative to the rotating Earth in either world or entity coordinates, depending on the dead reckoning algorithm used.";
+static D848: &str = "Vertical equally spaced parallel lines.";
+static D849: &str = "Vertical exaggeration of displayed data produced from the height array.";
+static D850: &str = "Viewer range from geographic-coordinates center triggers quadtree loading/unloading.";
+static D851: &str = "Viewpoint distance-measurement offset from origin of local coordinate system, used for LOD node distance calculations.";
+static D852: &str = "Viewpoint is automatically adjusted to view all visible geometry.";
+static D853: &str = "Viewpoint provides a specific location and direction where the user may view the scene.";
+static D854: &str = "ViewpointGroup can contain Viewpoint, OrthoViewpoint, GeoViewpoint and other ViewpointGroup nodes for better user-navigation support with a shared description on the viewpoint list.";
+static D855: &str = "ViewpointGroup contains Viewpoint, OrthoViewpoint, GeoViewpoint and other ViewpointGroup nodes that each have containerField='children' default value.";
+static D856: &str = "Viewport is a Grouping node that can contain most nodes.";
+static D857: &str = "VisibilitySensor detects when user can see a specific object or region as they navigate the world.";
+static D858: &str = "VolumeData displays a simple non-segmented voxel dataset with a single RenderStyle node.";
+static D859: &str = "VolumeEmitter emits particles from a random position confined within the given closed geometry volume.";
+static D860: &str = "VolumePickSensor tests picking intersections using the pickingGeometry against the pickTarget geometry volume.";
+static D861: &str = "WaveShaper node represents a nonlinear distorter that applies a wave-shaping distortion curve to the signal.";
+static D862: &str = "Weight deformation values for the corresponding values in the skinCoordIndex field.";
+static D863: &str = "When applying ambientIntensity for this material node, the contained texture provides Physically Based Rendering (PBR) modulation for each pixel.";
+static D864: &str = "When applying baseColor for this material node, the contained texture provides Physically Based Rendering (PBR) modulation for each pixel.";
+static D865: &str = "When applying diffuseColor for this material node, the contained texture provides Physically Based Rendering (PBR) modulation for each pixel.";
+static D866: &str = "When applying emissiveColor for this material node, the contained texture provides Physically Based Rendering (PBR) modulation for each pixel.";
+static D867: &str = "When applying metallic for this material node, the contained texture provides Physically Based Rendering (PBR) modulation for each pixel.";
+static D868: &str = "When applying normalScale for this material node, the contained texture modulates the texture across the surface.";
+static D869: &str = "When applying occlusionStrength for this material node, the contained texture provides Physically Based Rendering (PBR) modulation for each pixel.";
+static D870: &str = "When applying shininess for this material node, the contained texture provides Physically Based Rendering (PBR) modulation for each pixel.";
+static D871: &str = "When applying specularColor for this material node, the contained texture provides Physically Based Rendering (PBR) modulation for each pixel.";
+static D872: &str = "When did we shoot a weapon (Fire PDU)? Warning: it is an error to define this transient outputOnly field in an X3D file, instead only use it a source for ROUTE events.";
+static D873: &str = "When pointing device selects geometry, send event containing 3D point on surface of underlying geometry, as measured in reference frame for TouchSensor's local coordinate system.";
+static D874: &str = "When pointing device selects geometry, send event containing surface normal vector at the hitPoint.";
+static D875: &str = "When pointing device selects geometry, send event containing texture coordinates of surface at the hitPoint.";
+static D876: &str = "When resumeTime becomes <= time now, isPaused becomes false and AudioClip becomes active.";
+static D877: &str = "When resumeTime becomes <= time now, isPaused becomes false and MovieTexture becomes active.";
+static D878: &str = "When resumeTime becomes <= time now, isPaused becomes false and TimeSensor becomes inactive.";
+static D879: &str = "When stopTime becomes <= time now, isActive becomes false and TimeSensor becomes inactive.";
+static D880: &str = "When time now >= pauseTime, isPaused becomes true and AudioClip becomes paused.";
+static D881: &str = "When time now >= pauseTime, isPaused becomes true and MovieTexture becomes paused.";
+static D882: &str = "When time now >= pauseTime, isPaused becomes true and TimeSensor becomes paused.";
+static D883: &str = "When time now >= startTime, isActive becomes true and TimeSensor becomes active.";
+static D884: &str = "When were we collided with? Warning: it is an error to define this transient outputOnly field in an X3D file, instead only use it a source for ROUTE events.";
+static D885: &str = "When were we detonated?.";
+static D886: &str = "Whether Color node color values are applied to each point vertex (true) or per polyline (false).";
+static D887: &str = "Whether Color node color values are applied to each point vertex (true) or per quadrilateral (false).";
+static D888: &str = "Whether Color|ColorRGBA values are applied to each point vertex (true) or to each polygon face (false).";
+static D889: &str = "Whether Normal node vector values are applied to each point vertex (true) or per quadrilateral (false).";
+static D890: &str = "Whether Normal node vector values are applied to each point vertex (true) or to each polygon face (false).";
+static D891: &str = "Whether RTP headers are prepended to DIS PDUs.";
+static D892: &str = "Whether beginning cap is drawn (similar to Cylinder top cap).";
+static D893: &str = "Whether end cap is drawn (similar to Cylinder bottom cap).";
+static D894: &str = "Whether incoming DIS packets have an RTP header prepended.";
+static D895: &str = "Whether networkMode='local' (ignore network but still respond to local events).";
+static D896: &str = "Whether networkMode='master' (output to network as master entity at writeInterval).";
+static D897: &str = "Whether networkMode='remote' (listen to network as copy of remote entity).";
+static D898: &str = "Whether only a single updated image file or multiple image files can be saved.";
+static D899: &str = "Whether opposite surface sides are closed (seamless) across u dimension.";
+static D900: &str = "Whether or not LineProperties are applied to associated geometry.";
+static D901: &str = "Whether or not associated geometry is filled.";
+static D902: &str = "Whether or not associated geometry is hatched.";
+static D903: &str = "Whether or not renderable content within this node is visually displayed.";
+static D904: &str = "Whether or not the curve is closed (i.";
+static D905: &str = "Whether rendering calculates and applies shading effects to visual output.";
+static D906: &str = "Whether rendering calculates and applies shadows to visual output (using global illumination model).";
+static D907: &str = "Whether text direction is horizontal (true) or vertical (false).";
+static D908: &str = "Whether text direction is left-to-right (true) or right-to-left (false).";
+static D909: &str = "Whether text direction is top-to-bottom (true) or bottom-to-top (false).";
+static D910: &str = "Whether this entity is ignoring the network, sending DIS packets to the network, or receiving DIS packets from the network.";
+static D911: &str = "Whether to display bounding box for associated geometry, aligned with world coordinates.";
+static D912: &str = "Whether to draw bottom (inside faces are never drawn).";
+static D913: &str = "Whether to draw bottom (other inside faces are not drawn).";
+static D914: &str = "Whether to draw sides (inside faces are never drawn).";
+static D915: &str = "Whether to draw sides (other inside faces are not drawn).";
+static D916: &str = "Whether to draw top (inside faces are never drawn).";
+static D917: &str = "Whether to perform every range-based transition, regardless of browser optimizations that might otherwise occur.";
+static D918: &str = "Whether to repeat texture along R axis from front to back.";
+static D919: &str = "Whether to repeat texture along S axis horizontally from left to right.";
+static D920: &str = "Whether to repeat texture along T axis vertically from top to bottom.";
+static D921: &str = "Whether to rotate coordinates of nodes using this GeoOrigin so that local-up direction aligns with VRML Y axis rotateYUp false means local up-direction is relative to planet surface rotateYUp true allows proper operation of NavigationInfo modes FLY, WALK.";
+static D922: &str = "Whether to spatialize sound playback relative to viewer.";
+static D923: &str = "Whether to transition instantly by jumping, or else smoothly animate to this Viewpoint.";
+static D924: &str = "WindPhysicsModel applies a wind effect to the particles.";
+static D925: &str = "World coordinates for antenna location.";
+static D926: &str = "World coordinates for detonationLocation.";
+static D927: &str = "WorldInfo contains a title and simple persistent metadata information about an X3D scene. This node is strictly for documentation purposes and has no effect on the visual appearance or behaviour of the world.";
+static D928: &str = "X3D version of \"allpass\" in Web Audio API.";
+static D929: &str = "X3D version of \"bandpass\" in Web Audio API.";
+static D930: &str = "X3D version of \"clamped-max\" in Web Audio API.";
+static D931: &str = "X3D version of \"custom\" in Web Audio API.";
+static D932: &str = "X3D version of \"discrete\" in Web Audio API.";
+static D933: &str = "X3D version of \"explicit\" in Web Audio API.";
+static D934: &str = "X3D version of \"exponential\" in Web Audio API.";
+static D935: &str = "X3D version of \"highpass\" in Web Audio API.";
+static D936: &str = "X3D version of \"highshelf\" in Web Audio API.";
+static D937: &str = "X3D version of \"inverse\" in Web Audio API.";
+static D938: &str = "X3D version of \"linear\" in Web Audio API.";
+static D939: &str = "X3D version of \"lowpass\" in Web Audio API.";
+static D940: &str = "X3D version of \"lowshelf\" in Web Audio API.";
+static D941: &str = "X3D version of \"max\" in Web Audio API.";
+static D942: &str = "X3D version of \"notch\" in Web Audio API.";
+static D943: &str = "X3D version of \"peaking\" in Web Audio API.";
+static D944: &str = "X3D version of \"sawtooth\" in Web Audio API.";
+static D945: &str = "X3D version of \"sine\" in Web Audio API.";
+static D946: &str = "X3D version of \"speakers\" in Web Audio API.";
+static D947: &str = "X3D version of \"square\" in Web Audio API.";
+static D948: &str = "X3D version of \"triangle\" in Web Audio API.";
+static D949: &str = "Zero or more contained TextureCoordinate or TextureCoordinateGenerator nodes that specify texture coordinates for the different texture channels, used for texture mapping onto corresponding geometry.";
+static D950: &str = "Zero or more contained TextureTransform nodes, for each of the different texture channels, that define 2D transformation applied to texture coordinates.";
+static D951: &str = "Zero or more contained programmable shader nodes (ComposedShader, PackagedShader, ProgramShader) that specify, in order of preference, author-programmed rendering characteristics.";
+static D952: &str = "[maxChannelCount.";
+static D953: &str = "action key press gives following values: HOME=000 END=1001 PGUP=1002 PGDN=1003 UP=1004 DOWN=1005 LEFT=1006 RIGHT=1007 F1.";
+static D954: &str = "action key release gives following values: HOME=000 END=1001 PGUP=1002 PGDN=1003 UP=1004 DOWN=1005 LEFT=1006 RIGHT=1007 F1.";
+static D955: &str = "activate forces the shader to activate the contained objects.";
+static D956: &str = "activeLayer field specifies the layer in which navigation takes place.";
+static D957: &str = "addedEntities array contains any new entities added during the last frame.";
+static D958: &str = "all forceOutput fields computed.";
+static D959: &str = "altKey generates true event when pressed, false event when released.";
+static D960: &str = "amount of the silhouette enhancement to use.";
+static D961: &str = "anchorPoint is joint center, specified in world coordinates.";
+static D962: &str = "angularDampingFactor automatically damps a portion of body motion over time.";
+static D963: &str = "angularVelocity sets constant velocity value to object every frame, and reports updates by physics model.";
+static D964: &str = "anisotropicDegree defines minimum degree of anisotropy to account for in texture filtering (1=no effect for symmetric filtering, otherwise provide higher value).";
+static D965: &str = "any match of objectType values is acceptable.";
+static D966: &str = "any single object that can satisfy picking conditions.";
+static D967: &str = "aspectRatio is the ratio of width and height that is projected, reported as output event when contained image is loaded.";
+static D968: &str = "attenuation array values [a, b, c] are set to default values if undefined.";
+static D969: &str = "autoCalc controls whether user manually provides individual angle rotations each frame (false) or if angle values are automatically calculated by motor implementations (true).";
+static D970: &str = "autoDamp enables/disables angularDampingFactor and linearDampingFactor.";
+static D971: &str = "autoDisable toggles operation of disableAngularSpeed, disableLinearSpeed, disableTime.";
+static D972: &str = "autoRefresh defines interval in seconds before automatic reload of current url asset is performed.";
+static D973: &str = "autoRefreshTimeLimit defines maximum duration that automatic refresh activity can occur.";
+static D974: &str = "avatarSize triplet values define three separate parameters: (a) collisionDistance between user and geometry, i.";
+static D975: &str = "axis defines vector of joint connection between body1 and body2.";
+static D976: &str = "axis is normalized vector specifying direction of motion.";
+static D977: &str = "axis1 defines axis vector of joint connection to body1.";
+static D978: &str = "axis1Angle (radians) is rotation angle for corresponding motor axis when in user-calculated mode.";
+static D979: &str = "axis1Torque is rotational torque applied by corresponding motor axis when in user-calculated mode.";
+static D980: &str = "axis2 defines axis vector of joint connection to body2.";
+static D981: &str = "axis2Angle (radians) is rotation angle for corresponding motor axis when in user-calculated mode.";
+static D982: &str = "axis2Torque is rotational torque applied by corresponding motor axis when in user-calculated mode.";
+static D983: &str = "axis3Angle (radians) is rotation angle for corresponding motor axis when in user-calculated mode.";
+static D984: &str = "axis3Torque is rotational torque applied by corresponding motor axis when in user-calculated mode.";
+static D985: &str = "axisOfRotation direction is relative to local coordinate system.";
+static D986: &str = "axisRotation determines local sensor coordinate system by rotating the local coordinate system.";
+static D987: &str = "body1AnchorPoint describes anchorPoint position relative to local coordinate reference frame.";
+static D988: &str = "body1Axis describes report the current location of the anchor point relative to the corresponding body.";
+static D989: &str = "body2AnchorPoint describes anchorPoint position relative to local coordinate reference frame.";
+static D990: &str = "bold and italic type.";
+static D991: &str = "boldface type.";
+static D992: &str = "boolean values for each channel indicating whether enabled.";
+static D993: &str = "borderColor defines border pixel color.";
+static D994: &str = "borderWidth number of pixels for texture border.";
+static D995: &str = "bounce indicates bounciness (0 = no bounce at all, 1 = maximum bounce).";
+static D996: &str = "boundaryModeR describes handling of texture-coordinate boundaries.";
+static D997: &str = "boundaryModeS describes handling of texture-coordinate boundaries.";
+static D998: &str = "boundaryModeT describes handling of texture-coordinate boundaries.";
+static D999: &str = "boundaryOpacity k_gs is the factored amount of the gradient enhancement to use.";
+static D1000: &str = "browser can offer any type for user to choose.";
+static D1001: &str = "browser-specified default compression mode.";
+static D1002: &str = "browser-specified default magnification mode.";
+static D1003: &str = "browser-specified default minification mode.";
+static D1004: &str = "buffer is a memory-resident audio asset that can contain one or more channels.";
+static D1005: &str = "bufferDuration is duration in seconds to use from buffer field.";
+static D1006: &str = "castShadow defines whether this GaussianSplats node casts shadows as produced by lighting nodes.";
+static D1007: &str = "castShadow defines whether this Shape casts shadows as produced by lighting nodes.";
+static D1008: &str = "ccw defines clockwise/counterclockwise ordering of vertex coordinates, which in turn defines front/back orientation of polygon normals according to Right-Hand Rule (RHR).";
+static D1009: &str = "center point above tip of chin.";
+static D1010: &str = "center point in 2D (s,t) texture coordinates for rotation and scaling.";
+static D1011: &str = "center specifies center point of proximity box within which ViewpointGroup is usable and displayed on viewpoint list.";
+static D1012: &str = "centerOfMass defines local center of mass for physics calculations.";
+static D1013: &str = "centerOfRotation specifies center point about which to rotate user's eyepoint when in EXAMINE or LOOKAT mode.";
+static D1014: &str = "channelCount reports number of channels provided by input nodes.";
+static D1015: &str = "channelCountMode determines how individual channels are counted when up-mixing and down-mixing connections to any inputs.";
+static D1016: &str = "channelInterpretation determines how individual channels are treated when up-mixing and down-mixing connections to any inputs.";
+static D1017: &str = "channelSelection is single channel of interest from those provided by input nodes.";
+static D1018: &str = "choose mipmap that most closely matches size of pixel being textured, use weighted average of four texture elements closest to center of pixel.";
+static D1019: &str = "circle radius, of which the arc is a portion.";
+static D1020: &str = "circle radius.";
+static D1021: &str = "clamps rotation_changed events within range of min/max values Hint: if minAngle > maxAngle, rotation is not clamped.";
+static D1022: &str = "clipBoundary is specified in fractions of the normal render surface in the sequence left/right/bottom/top.";
+static D1023: &str = "collection of 2D texture sources.";
+static D1024: &str = "color of light, applied to colors of objects.";
+static D1025: &str = "color space of the reconstructed color values.";
+static D1026: &str = "color used to highlight edges.";
+static D1027: &str = "colorIndex values define the order in which Color|ColorRGBA values are applied to polygons (or vertices), interspersed by -1 if colorlPerVertex=true.";
+static D1028: &str = "commencePose is an input boolean event that triggers the animation of Joint values to achieve the pose.";
+static D1029: &str = "coneInnerAngle is centered along direction and defines the inner conical volume, inside of which no source gain reduction occurs.";
+static D1030: &str = "coneOuterAngle is centered along direction and defines an outer conical volume, within which the sound gain decreases from full gain to coneOuterGain.";
+static D1031: &str = "coneOuterGain is minimum gain value found outside coneOuterAngle.";
+static D1032: &str = "confirm whether there has been a recent network update.";
+static D1033: &str = "consistent keystroke navigation for both geospatial and Cartesian modes.";
+static D1034: &str = "constantForceMix modifies damping calculations by violating normal constraints while applying small, constant forces in those calculations.";
+static D1035: &str = "contactNormal is unit vector describing normal between two colliding bodies.";
+static D1036: &str = "contactSurfaceThickness defines how far bodies may interpenetrate after a collision, allowing simulation of softer bodies that deform somewhat during collision.";
+static D1037: &str = "controlKey generates true event when pressed, false event when released.";
+static D1038: &str = "controlPoint defines a set of control points of dimension uDimension by vDimension, and defines a mesh where the points do not have uniform spacing.";
+static D1039: &str = "controlPoint specifies the end points of each segment of the piecewise linear curve.";
+static D1040: &str = "coolColor is used for surfaces facing away from the light direction.";
+static D1041: &str = "coordIndex indices are applied to contained Coordinate values in order to define randomly generated initial geometry of the particles.";
+static D1042: &str = "coordIndex indices provide the order in which coordinates are applied to construct each polygon face.";
+static D1043: &str = "coordIndex indices provide the order in which coordinates are applied to construct each polyline.";
+static D1044: &str = "creaseAngle defines angle (in radians) for determining whether adjacent polygons are drawn with sharp edges or smooth shading.";
+static D1045: &str = "creaseAngle defines angle (in radians) where adjacent polygons are drawn with sharp edges or smooth shading.";
+static D1046: &str = "cycleInterval is loop duration in seconds.";
+static D1047: &str = "cycleTime sends a time event at initial starting time and at beginning of each new cycle.";
+static D1048: &str = "cycleTime sends a time outputOnly at startTime, and also at the beginning of each new cycle (useful for synchronization with other time-based objects).";
+static D1049: &str = "default font family for a fixed-pitch font such as Courier.";
+static D1050: &str = "default font family for sans-serif font such as Helvetica.";
+static D1051: &str = "default font family for serif font such as Times-Roman.";
+static D1052: &str = "default plain type.";
+static D1053: &str = "define order of surface by polynomials of degree = order-1.";
+static D1054: &str = "define scattering model for implementations using global illumination (NONE or Henyey-Greenstein phase function).";
+static D1055: &str = "defines cross-section of the surface traced about the trajectoryCurve axis.";
+static D1056: &str = "defines whether the intersection test (i.";
+static D1057: &str = "delayTime is duration of delay applied (in seconds).";
+static D1058: &str = "depth contains a set of 3D coordinate (triplet) point values.";
+static D1059: &str = "depth indicates how deep the current intersection is along normal vector.";
+static D1060: &str = "describes the center-line path using a NurbsCurve node, oriented so that it is defined counterclockwise when looking down the −Y axis, thus defining a concept of inside and outside.";
+static D1061: &str = "designates both Encoding Class and Encoding Type.";
+static D1062: &str = "desiredAngularVelocity1 is goal rotation rate for hinge connection to body1.";
+static D1063: &str = "desiredAngularVelocity2 is goal rotation rate for hinge connection to body2.";
+static D1064: &str = "determines whether previous offset values are remembered/accumulated.";
+static D1065: &str = "diffuse coefficient of sound reflection indicates how much of the incident sound energy is reflected back in multiple directions.";
+static D1066: &str = "diffuseCoefficients field provides a 3 x 9 array of float values providing spherical harmonic coefficients for low-frequency characteristics of the environment map to produce an irradiance map corresponding to glTF irradianceCoefficients field.";
+static D1067: &str = "diffuseTexture defines explicit precomputed X3DEnvironmentTextureNode (ComposedCubeMapTexture, GeneratedCubeMapTexture, ImageCubeMapTexture) nodes as the image source for the EnvironmentLight.";
+static D1068: &str = "direction in which wind is travelling in the form of a normalized, unit vector.";
+static D1069: &str = "direction of sound axis, relative to local coordinate system.";
+static D1070: &str = "disableAngularSpeed defines lower-limit tolerance value when body is considered at rest and not part of rigid body calculations, reducing numeric instabilities.";
+static D1071: &str = "disableLinearSpeed defines lower-limit tolerance value when body is considered at rest and not part of rigid body calculation, reducing numeric instabilitiess.";
+static D1072: &str = "disableTime defines interval when body becomes at rest and not part of rigid body calculations, reducing numeric instabilities.";
+static D1073: &str = "disables all navigation interfaces.";
+static D1074: &str = "displacements are a set of SFVec3f values added to neutral/resting position of each of the corresponding HAnimSegment vertices (or HAnimJoint/HAnimHumanoid vertices) referenced by coordIndex field.";
+static D1075: &str = "displayed determines whether this ViewpointGroup is displayed in the current viewpoint list.";
+static D1076: &str = "distanceModel determines which algorithm to use for sound attenuation, corresponding to distance between an audio source and a listener, as it moves away from the listener.";
+static D1077: &str = "dopplerEnabled enables/disables whether real-time Doppler effects (due to relation motion between sources and listeners) are computed by browser between virtual sound sources and active listening locations, then applied to received frequency at active listening locations.";
+static D1078: &str = "duration is the time interval for filter response in seconds.";
+static D1079: &str = "each node is available for picking.";
+static D1080: &str = "elapsedTime is computed elapsed time since the Motion object was activated and running, counting all traversed frames (as if frameIndex equaled 1) and multiplied by frameDuration, cumulative in seconds.";
+static D1081: &str = "enableHRTF enables/disables Head Related Transfer Function (HRTF) auralization, if available.";
+static D1082: &str = "enabledAxes indicates which motor axes are active.";
+static D1083: &str = "endFrame indicates final index of animated frame.";
+static D1084: &str = "errorCorrection describes how quickly intersection errors due to floating-point inaccuracies are resolved (0=no correction, 1=all corrected in single step).";
+static D1085: &str = "event sent when node becomes active/inactive.";
+static D1086: &str = "event true sent when node becomes active, event false sent when unbound by another node.";
+static D1087: &str = "every object that satisfies picking conditions for this pick sensor is returned, in sorted order.";
+static D1088: &str = "every object that satisfies picking conditions for this pick sensor is returned.";
+static D1089: &str = "every objectType value in X3DPickSensorNode and X3DPickableObject shall match.";
+static D1090: &str = "exponential blending as a function of distance.";
+static D1091: &str = "fanCount array provides number of vertices in each fan.";
+static D1092: &str = "farDistance defines maximum clipping plane distance allowed for object display.";
+static D1093: &str = "fastest method available, use mipmaps if possible.";
+static D1094: &str = "fastest method available.";
+static D1095: &str = "fftSize represents size of Fast Fourier Transform (FFT) used to determine frequency domain.";
+static D1096: &str = "finiteRotationAxis specifies vector around which the object rotates.";
+static D1097: &str = "fixed indicates whether body is able to move.";
+static D1098: &str = "force field indicates strength and direction of the propelling force on the particles (for example, default is Earth's gravity).";
+static D1099: &str = "forceID determines the team membership of the issuing entity, and whether FRIENDLY OPPOSING or NEUTRAL or OTHER.";
+static D1100: &str = "forceOutput controls which output fields are generated for the next frame.";
+static D1101: &str = "forces defines linear force values applied to the object every frame.";
+static D1102: &str = "fraction_changed continuously sends value in range [0,1] showing time progress in the current cycle.";
+static D1103: &str = "fragment shader.";
+static D1104: &str = "frameCount is computed at run time and indicates the total number of frames present in the animation, equaling the number of sets of channel data rows present in the values array.";
+static D1105: &str = "frameDuration specifies the duration of each frame in seconds.";
+static D1106: &str = "frameIncrement field controls whether playback direction is forwards or backwards, and also whether frames are skipped (for example, subsampled replay).";
+static D1107: &str = "frameIndex indicates index of current frame.";
+static D1108: &str = "free navigation, avatar remains on ground, collision detection.";
+static D1109: &str = "free navigation, collision detection.";
+static D1110: &str = "frequency at which the BiquadFilterNode operates, in Hz.";
+static D1111: &str = "frequencyBinCount is half of fftSize and generally equates to number of data values available for the visualization.";
+static D1112: &str = "frictionCoefficients used for computing surface drag.";
+static D1113: &str = "frictionDirection controls friction vector.";
+static D1114: &str = "function operators COMPLEMENT or ALPHAREPLICATE can be applied after the mode blending operation.";
+static D1115: &str = "geometry field is used for rendering each particle.";
+static D1116: &str = "glabella is between the eyebrows and above the nose.";
+static D1117: &str = "global field affects the scope of lighting effects produced by the EnvironmentLight node, and has no effect on the computation of environment textures.";
+static D1118: &str = "gravity indicates direction and strength of local gravity vector for this collection of bodies (units m/sec^2).";
+static D1119: &str = "greatest amount of compression.";
+static D1120: &str = "gustiness specifies how much wind speed varies from the average speed.";
+static D1121: &str = "hatchStyle selects a hatch pattern from ISO/IEC 9973 International Register of Graphical Items.";
+static D1122: &str = "highest quality method available.";
+static D1123: &str = "hint for surface tessellation.";
+static D1124: &str = "how \"clear\" an object is: 1.";
+static D1125: &str = "how \"clear\" the background is, allows underlying page to show through: 1.";
+static D1126: &str = "how much ambient omnidirectional light is reflected from all light sources.";
+static D1127: &str = "how much direct, angle-dependent light is reflected from all light sources.";
+static D1128: &str = "how much glowing light is emitted from this object.";
+static D1129: &str = "if TRUE only a single image is captured, otherwise continuous updates are captured.";
+static D1130: &str = "ignore network but still respond to events in local scene.";
+static D1131: &str = "image describes raw data for this 3D texture: number of components to the image [0,4], width, height and depth of the texture, followed by (width x height x depth) pixel values.";
+static D1132: &str = "image height in pixels.";
+static D1133: &str = "imaginary coefficients for defining a waveform.";
+static D1134: &str = "immediate transition.";
+static D1135: &str = "index list specifies triangles by connecting Coordinate vertices for each individual strip, separated by -1 sentinel values.";
+static D1136: &str = "index list specifies triangles by connecting Coordinate vertices, each individual fan separated by -1 sentinel value.";
+static D1137: &str = "index list specifies triangles by connecting Coordinate vertices.";
+static D1138: &str = "index values provide order in which coordinates are applied.";
+static D1139: &str = "indicates that a generated texture contains a depth buffer for the image, instead of a color buffer.";
+static D1140: &str = "indicates the maximum number of independent frame files (or movie frames) that can be saved for a single series of image captures.";
+static D1141: &str = "indicates time intervals between render captures when the update field is \"ALWAYS\".";
+static D1142: &str = "indicates whether this GaussianSplats node is a target for pointer events, if FALSE then it is ignored during pointer picking.";
+static D1143: &str = "inertia matrix defines a 3x2 inertia tensor matrix.";
+static D1144: &str = "inputFalse only passes a false value, which occurs when set_boolean is false.";
+static D1145: &str = "inputNegate is an output event that provides an opposite value by negating set_boolean input.";
+static D1146: &str = "inputTrue only passes a true value, which occurs when set_boolean input is true.";
+static D1147: &str = "integerKey is value for output when triggered.";
+static D1148: &str = "interpolated coordinate in the geographic coordinate system specified by geoSystem Hint: X3D for Advanced Modeling (X3D4AM) slideset https://x3dgraphics.";
+static D1149: &str = "intersectionType specifies precision of the collision computation.";
+static D1150: &str = "isActive indicates when the intersecting object is picked by the picking geometry.";
+static D1151: &str = "isActive true/false events are sent as viewer enters/exits Proximity box.";
+static D1152: &str = "isActive true/false events are sent when TimeSensor starts/stops running.";
+static D1153: &str = "isActive true/false events are sent when follower-node computation starts/stops.";
+static D1154: &str = "isActive true/false events are sent when playback starts/stops.";
+static D1155: &str = "isActive true/false events are sent when pose animation starts/stops.";
+static D1156: &str = "isActive true/false events are sent when sensing starts/stops.";
+static D1157: &str = "isActive true/false events are sent when triggering the sensor.";
+static D1158: &str = "isPaused true/false events are sent when AudioClip is paused/resumed.";
+static D1159: &str = "isPaused true/false events are sent when MovieTexture is paused/resumed.";
+static D1160: &str = "isPaused true/false events are sent when TimeSensor is paused/resumed.";
+static D1161: &str = "isSelected indicates this shader instance is selected for use by browser Warning: it is an error to define this transient outputOnly field in an X3D file, instead only use it a source for ROUTE events.";
+static D1162: &str = "isValid indicates whether current shader objects can be run as a shader program.";
+static D1163: &str = "italic type.";
+static D1164: &str = "iterations controls number of iterations performed over collectioned joints and bodies during each evaluation.";
+static D1165: &str = "joints field lists names of joints that raw motion data is to be applied to.";
+static D1166: &str = "knee field contains a decibel value representing range above threshold where the curve smoothly transitions to compressed portion.";
+static D1167: &str = "knot vector, where size = number of control points + order of curve.";
+static D1168: &str = "least amount of compression.";
+static D1169: &str = "line is drawn along current velocity vector of particle.";
+static D1170: &str = "linear blending as a function of distance.";
+static D1171: &str = "linearDampingFactor automatically damps a portion of body motion over time.";
+static D1172: &str = "linearVelocity sets constant velocity value to object every frame, and reports updates by physics model.";
+static D1173: &str = "linetype selects a line pattern, with solid default if defined value isn't supported.";
+static D1174: &str = "linewidthScaleFactor is a scale factor multiplied by browser-dependent nominal linewidth, mapped to nearest available line width.";
+static D1175: &str = "list of number of channels for transformation, followed by transformation type of each channel of data.";
+static D1176: &str = "listen to network and read PDU packets at readInterval, act as remotely linked copy of entity.";
+static D1177: &str = "load=true means load immediately, load=false means defer loading or else unload a previously loaded asset.";
+static D1178: &str = "loopEnd field is optional playhead position where looping ends if loop=true.";
+static D1179: &str = "loopStart field is optional playhead position where looping begins if loop=true.";
+static D1180: &str = "magnificationFilter indicates texture filter when image is smaller than screen space representation.";
+static D1181: &str = "mapping field provides a mechanism for automatically creating an X3D model when a new entity arrives over the network.";
+static D1182: &str = "mass of the body in kilograms.";
+static D1183: &str = "matrix is a generalized, unfiltered 4x4 transformation matrix to modify texture (opposite effect appears on geometry).";
+static D1184: &str = "maxAngle is maximum rotation angle for hinge.";
+static D1185: &str = "maxAngle1 is maximum rotation angle for hinge.";
+static D1186: &str = "maxDecibels represents maximum power value in scaling range for FFT analysis data.";
+static D1187: &str = "maxDelayTime is duration of maximum amount of delay (in seconds) that can be applied.";
+static D1188: &str = "maxDistance is the maximum distance where sound is renderable between source and listener, after which no reduction in sound volume occurs.";
+static D1189: &str = "maxSeparation is maximum separation distance between the two bodies.";
+static D1190: &str = "maxTorque1 is maximum rotational torque applied by corresponding motor axis to achieve desiredAngularVelocity1.";
+static D1191: &str = "maxTorque2 is maximum rotational torque applied by corresponding motor axis to achieve desiredAngularVelocity2.";
+static D1192: &str = "maximum distance necessary for texture display, -1 if unconstrained.";
+static D1193: &str = "mediaDeviceID field provides a unique identifier for the active device that corresponds to deviceId functionality defined in W3C Web Audio API.";
+static D1194: &str = "metallic is a PBR parameter.";
+static D1195: &str = "minAngle is minimum rotation angle for hinge.";
+static D1196: &str = "minAngle1 is minimum rotation angle for hinge.";
+static D1197: &str = "minBounceSpeed m/s needed to bounce.";
+static D1198: &str = "minDecibels represents minimum power value in scaling range for FFT analysis data.";
+static D1199: &str = "minPosition and maxPosition clamp translations to a range of values measured from origin of Z=0 plane default maxPosition < minPosition means no clamping.";
+static D1200: &str = "minSeparation is minimum separation distance between the two bodies.";
+static D1201: &str = "minificationFilter indicates texture filter when image is larger than screen space representation.";
+static D1202: &str = "minimum angle (in radians) away from view-direction vector for surface normal before applying enhancement.";
+static D1203: &str = "minimum distance necessary for texture display, -1 if unconstrained.";
+static D1204: &str = "mode field indicates the type of blending operation, both for color and for alpha channel.";
+static D1205: &str = "moderate amount of compressions.";
+static D1206: &str = "motor1Angle provides calculated angle of rotation (radians) for this motor joint from last frame.";
+static D1207: &str = "motor1AngleRate provides calculated anglular rotation rate (radians/second) for this motor joint from last frame.";
+static D1208: &str = "motor1Axis defines axis vector of corresponding motor axis.";
+static D1209: &str = "motor2Angle provides calculated angle of rotation (radians) for this motor joint from last frame.";
+static D1210: &str = "motor2AngleRate provides calculated anglular rotation rate (radians/second) for this motor joint from last frame.";
+static D1211: &str = "motor2Axis defines axis vector of corresponding motor axis.";
+static D1212: &str = "motor3Angle provides calculated angle of rotation (radians) for this motor joint from last frame.";
+static D1213: &str = "motor3AngleRate provides calculated anglular rotation rate (radians/second) for this motor joint from last frame.";
+static D1214: &str = "motor3Axis defines axis vector of corresponding motor axis.";
+static D1215: &str = "munitionApplicationID, unique for application at that site.";
+static D1216: &str = "munitionEntityID is unique ID for entity firing munition within that application.";
+static D1217: &str = "nVidia Cg shading language.";
+static D1218: &str = "name of the prototype node being instanced.";
+static D1219: &str = "navigate to particular object.";
+static D1220: &str = "nearDistance defines minimum clipping plane distance necessary for object display.";
+static D1221: &str = "no forceOutput fields computed.";
+static D1222: &str = "no further texture updates are rendered.";
+static D1223: &str = "no node is available for picking.";
+static D1224: &str = "no scattering.";
+static D1225: &str = "normalIndex values define the order in which normal vectors are applied to polygons (or vertices), interspersed by -1 if normalPerVertex=true.";
+static D1226: &str = "normalScale controls the degree to which normalTexture RGB values apply XYZ-normal bump mapping to pixels in the parent material.";
+static D1227: &str = "normalize controls whether or not the impulse response from the buffer is scaled by an equal-power normalization when the buffer field is set.";
+static D1228: &str = "normalizeVelocity field specifies whether the velocity vectors are normalized to produce smooth speed transitions, or transformed into tangency vectors.";
+static D1229: &str = "notch just above the tragus of the ear.";
+static D1230: &str = "numComponents specifies how many consecutive floating-point values should be grouped together per vertex.";
+static D1231: &str = "number of bits of digital voice audio or digital data being sent in the Signal PDU.";
+static D1232: &str = "number of color components for the rendered texture.";
+static D1233: &str = "numberOfChannels is number of audio channels found in this buffer source.";
+static D1234: &str = "occlusionStrength indicates areas of indirect lighting, typically called ambient occlusion.";
+static D1235: &str = "one and only one objectType value can match.";
+static D1236: &str = "opacityFactor k_ge is the power function to control the slope of the opacity curve to highlight the set of data.";
+static D1237: &str = "or -1, maxCorrectionSpeed.";
+static D1238: &str = "or -1.";
+static D1239: &str = "order defines the number of internal filters (larger means smoother response, longer delay).";
+static D1240: &str = "orientation sets body direction in world space, then reports physics updates.";
+static D1241: &str = "origin defines the relative position for observing the surrounding scene to create an environment texture.";
+static D1242: &str = "origin of the text local coordinate system, in units of the coordinate system in which the Text node is embedded.";
+static D1243: &str = "orthogonalColor is used for surface normals that are orthogonal (perpendicular) to viewer's current location.";
+static D1244: &str = "osseocartilaginous junction of the nasal dorsum.";
+static D1245: &str = "pair of triangles creating quad geometry is rendered at particle position facing direction traveled.";
+static D1246: &str = "pairs of 2D (s,t) texture coordinates, either in range [0,1] or higher if repeating.";
+static D1247: &str = "parallelColor is used for surface normals that are orthogonal to viewer's current location.";
+static D1248: &str = "parameter array contains scale and translation (x y z) values for Perlin NOISE mode, parameter[0] contains index of refraction for SPHERE-REFLECT mode, parameter[0] contains index of refraction and parameter[1 to 3] contains the eye point in local coordinates for SPHERE-REFLECT-LOCAL mode.";
+static D1249: &str = "parameter field defines the algorithm used to compute texture coordinates.";
+static D1250: &str = "particleSize describes width and height dimensions for each particle in length base units (default is meters).";
+static D1251: &str = "pickTarget specifies the list of nodes against which picking operations are performed.";
+static D1252: &str = "pickable determines whether pick traversal is performed for this layer.";
+static D1253: &str = "pickingGeometry specifies the exact geometry coordinates that are used to perform the intersection testing of the picking operation.";
+static D1254: &str = "playbackRate field is speed at which to render the audio stream, and forms a compound field together with detune field Hint: negative values play in reverse.";
+static D1255: &str = "point contains a set of 3D coordinate (triplet) point values.";
+static D1256: &str = "point contains a set of actual 3D geographic coordinates, provided in geoSystem format can split strings if desired: \"x1 y1 z1 x2 y2 z2\" or \"x1 y1 z1\", \"x2 y2 z2\".";
+static D1257: &str = "point geometry is rendered at particle position.";
+static D1258: &str = "pointSize field specifies the size of text in points.";
+static D1259: &str = "pointSizeMaxValue is maximum allowed scaling factor on nominal browser point scaling.";
+static D1260: &str = "pointSizeMinValue is minimum allowed scaling factor on nominal browser point scaling.";
+static D1261: &str = "position (x, y, z in meters) of exact location of collision.";
+static D1262: &str = "position (x, y, z in meters) relative to local coordinate system.";
+static D1263: &str = "position relative to local georeferenced coordinate system, in proper format.";
+static D1264: &str = "position sets body location in world space, then reports physics updates.";
+static D1265: &str = "power function to control sharpness of the silhouette.";
+static D1266: &str = "preferAccuracy provides hint for performance preference: higher accuracy or faster computational speed.";
+static D1267: &str = "provides a TRUE event when the data output process becomes active, and a FALSE event when the data output process is stopped.";
+static D1268: &str = "quad geometry is rendered at particle position facing direction traveled.";
+static D1269: &str = "quad geometry is rendered at particle position facing screen.";
+static D1270: &str = "quadtree geometry loaded when viewer is within range.";
+static D1271: &str = "qualityFactor is Quality Factor (Q) of the respective filter algorithm.";
+static D1272: &str = "ratio field represents amount of input change, in dB, needed for 1 dB change in output.";
+static D1273: &str = "real coefficients for defining a waveform.";
+static D1274: &str = "receivedPower indicates radio frequency (RF) power received, in units of decibel-milliwatts (dBm), after applying any propagation loss and antenna gain.";
+static D1275: &str = "receiverState indicates if receiver is currently idle or busy via one of these enumerated values: 0 = off, 1 = on but not receiving, or 2 = on and receiving.";
+static D1276: &str = "reduction field provides amount of gain reduction in dB currently applied by compressor to signal.";
+static D1277: &str = "referenceDistance for reducing volume as source moves further from the listener.";
+static D1278: &str = "release field represents amount of time (in seconds) to increase gain by 10dB.";
+static D1279: &str = "removedEntities output array provides EspduTransform references to any entities removed during last frame, either due to a timeout or from an explicit RemoveEntityPDU action.";
+static D1280: &str = "render texture once at end of frame.";
+static D1281: &str = "resetAllJoints is an input boolean event that zeroes all Joint objects in the skeleton field to their default values, matching the default binding pose (i.";
+static D1282: &str = "retainedOpacity k_gc is the amount of initial opacity to mix into the output.";
+static D1283: &str = "return closest object by distance that satisfies conditions of this pick sensor.";
+static D1284: &str = "rolloffFactor indicates how quickly volume is reduced as source moves further from listener.";
+static D1285: &str = "rotation angle of texture about center (opposite effect appears on geometry).";
+static D1286: &str = "rotation field represents the overall rotation of the IBL environment.";
+static D1287: &str = "rotation_changed events equal sum of relative bearing changes plus offset value about Y-axis in local coordinate system.";
+static D1288: &str = "rotation_changed events equal sum of relative bearing changes plus offset value.";
+static D1289: &str = "roughness is a PBR parameter.";
+static D1290: &str = "rowser-specific transition.";
+static D1291: &str = "sampleRate field is sample-frames per second.";
+static D1292: &str = "sampleRate gives either (1) sample rate in samples per second if Encoding Class is encoded audio, or (2) data rate in bits per second for data transmissions.";
+static D1293: &str = "scale for surface tessellation in children NurbsSurface nodes.";
+static D1294: &str = "scale is a list of 2D-scale parameters applied at each spine-aligned cross-section plane.";
+static D1295: &str = "scaling of non-silhouette regions.";
+static D1296: &str = "send PDU packets to network at writeInterval, act as master entity.";
+static D1297: &str = "separateBackColor determines whether separate Material values are used for back faces.";
+static D1298: &str = "separation indicates final separation distance between the two bodies.";
+static D1299: &str = "separationRate indicates change in separation distance over time between the two bodies.";
+static D1300: &str = "set of unit-length normal vectors, corresponding to indexed polygons or vertices.";
+static D1301: &str = "set of x-y-z-w orthogonal vector values for a surface, applied either per-vertex or per-face to a mesh.";
+static D1302: &str = "set_bind true makes this node active, set_bind false makes this node inactive.";
+static D1303: &str = "set_boolean is the input value to be filtered.";
+static D1304: &str = "set_contacts input field for Contact nodes provides per-frame information about contacts between bodies.";
+static D1305: &str = "set_destination resets destination value of this node.";
+static D1306: &str = "set_fraction selects input fraction for computation of corresponding easeInEaseOut output value, modifiedFraction_changed.";
+static D1307: &str = "set_fraction selects input key for corresponding keyValue output.";
+static D1308: &str = "set_fraction selects input key for corresponding use of keyValue, keyVelocity values for output computation.";
+static D1309: &str = "set_startTime is an input event that commences the animation of Joint objects in the parent Humanoid object.";
+static D1310: &str = "set_triggerTime provides input time event, typical event sent is TouchSensor touchTime.";
+static D1311: &str = "set_value resets current value of this node.";
+static D1312: &str = "setting fraction in range [0,1] provides an input event that allows gradual change of each joint in the pose, where 0 indicates no change and 1 indicates fully changed.";
+static D1313: &str = "setting fraction in range [0,1] selects input key for corresponding keyValue output, computing a 3D position on the curve.";
+static D1314: &str = "shadowIntensity field defines how much light is obscured by shapes that cast shadows, ranging from 0 (light not obscured, no visible shadows) to 1 (light completely obscured, full-intensity shadows).";
+static D1315: &str = "shadows field indicates whether or not this light casts a shadow behind illuminated X3DShapeNode geometry.";
+static D1316: &str = "shiftKey generates true event when pressed, false event when released.";
+static D1317: &str = "similar to CAMERASPACEREFLECTIONVECTOR with optional index of refraction.";
+static D1318: &str = "similar to diffuseColor.";
+static D1319: &str = "sites field contains a list of USE references for all HAnimSite node instances found within the preceding skeleton hierarchy.";
+static D1320: &str = "size indicates the resolution of the generated images in number of pixels per side.";
+static D1321: &str = "size of Proximity box around center location, oriented within local transformation frame, within which ViewpointGroup is usable and displayed on viewpoint list.";
+static D1322: &str = "size of Proximity box around center location, oriented within local transformation frame.";
+static D1323: &str = "size of transformation-traccking box around center location, oriented within local transformation frame.";
+static D1324: &str = "size of visibility box around center location, oriented within local transformation frame.";
+static D1325: &str = "size x y z in meters.";
+static D1326: &str = "sliderForce value is used to apply a force (specified in force base units) along the axis of the slider in equal and opposite directions to the two bodies.";
+static D1327: &str = "slipCoefficients used for computing surface drag.";
+static D1328: &str = "slipFactors used for computing surface drag.";
+static D1329: &str = "smoothingTimeConstant represents averaging constant during last analysis frame.";
+static D1330: &str = "softnessConstantForceMix value applies a constant force value to make colliding surfaces appear to be somewhat soft.";
+static D1331: &str = "softnessErrorCorrection indicates fraction of collision error fixed in a set of evaluations (0 = no error correction, 1 = all errors corrected in single step).";
+static D1332: &str = "sound refraction coefficient of a medium, which determines change in propagation direction of sound wave when obliquely crossing boundary between two mediums where its speed is different.";
+static D1333: &str = "sound source for the Sound node, either an AudioClip node or a MovieTexture node.";
+static D1334: &str = "source field determines whether each image source is treated as DIFFUSE, SPECULAR or a multiplicative FACTOR.";
+static D1335: &str = "specifies 2D textures used to determine weight values when weight function is set to TABLE.";
+static D1336: &str = "specifies the sound absorption coefficient of a surface, meaning the ratio of sound intensity not reflected by a surface.";
+static D1337: &str = "specifies type of geometry used to represent individual particles.";
+static D1338: &str = "specular coefficient of sound reflection striking a plane surface, directly reflected back into space, where angle of reflection equals angle of incidence.";
+static D1339: &str = "specular highlights are brightness reflections (example: shiny spots on an apple).";
+static D1340: &str = "specularTexture defines explicit precomputed X3DEnvironmentTextureNode (ComposedCubeMapTexture, GeneratedCubeMapTexture, ImageCubeMapTexture) nodes as the image source for the EnvironmentLight.";
+static D1341: &str = "speedFactor is a multiplier to modify the original elevation-based speed that is set automatically by the browser.";
+static D1342: &str = "spherical harmonics data.";
+static D1343: &str = "startFrame indicates initial index of animated frame.";
+static D1344: &str = "stop1Bounce is velocity factor for bounce back once stop point is reached.";
+static D1345: &str = "stop1ConstantForceMix value applies a constant force value to make colliding surfaces appear to be somewhat soft.";
+static D1346: &str = "stop1ErrorCorrection is fraction of error correction performed during time step once stop point is reached.";
+static D1347: &str = "stop2Bounce is velocity factor for bounce back once stop point is reached.";
+static D1348: &str = "stop2ErrorCorrection is fraction of error correction performed during time step once stop point is reached.";
+static D1349: &str = "stop3Bounce is velocity factor for bounce back once stop point is reached.";
+static D1350: &str = "stop3ErrorCorrection is fraction of error correction performed during time step once stop point is reached.";
+static D1351: &str = "stopBounce is velocity factor for bounce back once stop point is reached.";
+static D1352: &str = "stopErrorCorrection is fraction of error correction performed during time step once stop point is reached.";
+static D1353: &str = "stripCount array provides number of vertices in each strip.";
+static D1354: &str = "surfaceSpeed defines speed vectors for computing surface drag, if contact surfaces move independently of bodies.";
+static D1355: &str = "suspensionErrorCorrection describes how quickly the system resolves intersection errors due to floating-point inaccuracies.";
+static D1356: &str = "suspensionForce describes how quickly the system resolves intersection errors due to floating-point inaccuracies.";
+static D1357: &str = "tailTime is duration of time that a node continues to provide output signal after the input signal becomes silent.";
+static D1358: &str = "targetObject is the movable geometry represented by any valid X3DGroupingNode or X3DShapeNode which may enter or exit the box.";
+static D1359: &str = "tau is the exponential-decay time constant for filter response in seconds.";
+static D1360: &str = "texture coordinates of the provided texture(s) in the Appearance node, over time.";
+static D1361: &str = "texture element nearest to center of pixel being textured, use average of two nearest mipmaps.";
+static D1362: &str = "texture element nearest to center of pixel being textured, use nearest mipmap.";
+static D1363: &str = "texture element nearest to center of pixel being textured.";
+static D1364: &str = "texture element nearest to the center of pixel being textured.";
+static D1365: &str = "texture to be rendered every frame.";
+static D1366: &str = "textureCompression indicates compression algorithm selection mode.";
+static D1367: &str = "texturePriority defines relative priority for this texture when allocating texture memory, an important rendering resource in graphics-card hardware.";
+static D1368: &str = "the coord field is used for HAnimSegment objects that have deformable meshes and shall contain coordinates referenced from the IndexedFaceSet for the parent HAnimSegment object.";
+static D1369: &str = "the displacers field stores HAnimDisplacer objects for a particular HAnimJoint object.";
+static D1370: &str = "the displacers field stores HAnimDisplacer objects for a particular HAnimSegment object.";
+static D1371: &str = "threshold field represents decibel value above which compression starts taking effect.";
+static D1372: &str = "title of this world, placed in window title.";
+static D1373: &str = "torques defines rotational force values applied to the object every frame.";
+static D1374: &str = "trackPoint_changed events give intersection point of bearing with sensor's virtual geometry.";
+static D1375: &str = "transition may proceed directly through intervening objects.";
+static D1376: &str = "transitionTime defines the expected duration of viewpoint transition in seconds.";
+static D1377: &str = "translation_changed events equal sum of relative translation change plus offset value.";
+static D1378: &str = "transparency applied to texture images, enabling an X3D scene to overlay an HTML page or desktop.";
+static D1379: &str = "tri-linear mipmap filtering.";
+static D1380: &str = "triggerTime is output time event, sent when input event set_boolean is true.";
+static D1381: &str = "triggerTrue outputs a true value whenever a triggerTime event is received.";
+static D1382: &str = "triggerValue provides integer event output matching integerKey when true set_boolean received.";
+static D1383: &str = "triplets of 3D (s,t,r) texture coordinates, either in range [0,1] or higher if repeating.";
+static D1384: &str = "turbulence field specifies how much the wind acts directly in line with the direction, and how much variation is applied in directions other than the wind direction.";
+static D1385: &str = "type indicates whether this ShaderProgram is a vertex or fragment (pixel) shader.";
+static D1386: &str = "type selects which BiquadFilter algorithm is used.";
+static D1387: &str = "upVector describes camera orientation by defining which direction is up.";
+static D1388: &str = "update controls regeneration of the texture.";
+static D1389: &str = "url for scene providing geometry for the root tile.";
+static D1390: &str = "url points to a shader source-code file that may contain a number of shaders and combined effects.";
+static D1391: &str = "useFiniteRotation enables/disables higher-resolution, higher-cost computational method for calculating rotations.";
+static D1392: &str = "useGeometry indicates whether collision-detection code checks down to level of geometry, or only make approximations using geometry bounds.";
+static D1393: &str = "useGlobalGravity indicates whether this particular body is influenced by parent RigidBodyCollection's gravity setting.";
+static D1394: &str = "value specifies an arbitrary collection of floating-point values that will be passed to the shader as per-vertex information.";
+static D1395: &str = "value specifies an arbitrary collection of matrix values that will be passed to the shader as per-vertex information.";
+static D1396: &str = "values field contains all transformation values, ordered first by frame, then by joint, and then by transformation Sets of floats in the values array matching the order listed in joints and channels fields.";
+static D1397: &str = "vertex shader.";
+static D1398: &str = "vertexCount describes how many vertices are used in each individual polyline segment from the Coordinate point values.";
+static D1399: &str = "view an individual object by rotating view about center.";
+static D1400: &str = "warmColor is used for surfaces facing towards the light.";
+static D1401: &str = "weightConstant1 is used when weightFunction1=CONSTANT.";
+static D1402: &str = "weightConstant2 is used when weightFunction2=CONSTANT.";
+static D1403: &str = "weighted average of four texture elements closest to center of pixel being textured.";
 
 /// Node type name and its description.
 pub static NODES: &[(&str, &str)] = &[
@@ -1493,8 +1490,8 @@ pub static NODES: &[(&str, &str)] = &[
     ("FontLibrary", D246),
     ("FontStyle", D247),
     ("ForcePhysicsModel", D249),
-    ("Gain", D700),
-    ("GaussianSplats", D701),
+    ("Gain", D697),
+    ("GaussianSplats", D698),
     ("GeneratedCubeMapTexture", D250),
     ("GeoCoordinate", D251),
     ("GeoElevationGrid", D252),
@@ -1509,7 +1506,7 @@ pub static NODES: &[(&str, &str)] = &[
     ("GeoViewpoint", D260),
     ("Group", D269),
     ("HAnimDisplacer", D271),
-    ("HAnimHumanoid", D702),
+    ("HAnimHumanoid", D699),
     ("HAnimJoint", D273),
     ("HAnimMotion", D45),
     ("HAnimPose", D274),
@@ -1545,12 +1542,12 @@ pub static NODES: &[(&str, &str)] = &[
     ("Material", D395),
     ("Matrix3VertexAttribute", D397),
     ("Matrix4VertexAttribute", D398),
-    ("MetadataBoolean", D756),
-    ("MetadataDouble", D757),
-    ("MetadataFloat", D760),
-    ("MetadataInteger", D758),
-    ("MetadataSet", D759),
-    ("MetadataString", D761),
+    ("MetadataBoolean", D753),
+    ("MetadataDouble", D754),
+    ("MetadataFloat", D757),
+    ("MetadataInteger", D755),
+    ("MetadataSet", D756),
+    ("MetadataString", D758),
     ("MicrophoneSource", D405),
     ("MotorJoint", D411),
     ("MovieTexture", D412),
@@ -1625,8 +1622,8 @@ pub static NODES: &[(&str, &str)] = &[
     ("SilhouetteEnhancementVolumeStyle", D635),
     ("SingleAxisHingeJoint", D648),
     ("SliderJoint", D650),
-    ("Sound", D703),
-    ("SpatialSound", D704),
+    ("Sound", D700),
+    ("SpatialSound", D701),
     ("Sphere", D662),
     ("SphereSensor", D664),
     ("SplinePositionInterpolator", D665),
@@ -1640,91 +1637,91 @@ pub static NODES: &[(&str, &str)] = &[
     ("StringSensor", D673),
     ("SurfaceEmitter", D675),
     ("Switch", D676),
-    ("Tangent", D682),
-    ("TexCoordChaser2D", D683),
-    ("TexCoordDamper2D", D684),
-    ("Text", D687),
-    ("TextureBackground", D689),
-    ("TextureCoordinate", D690),
-    ("TextureCoordinate3D", D691),
-    ("TextureCoordinate4D", D692),
-    ("TextureCoordinateGenerator", D693),
-    ("TextureProjector", D694),
-    ("TextureProjectorParallel", D695),
-    ("TextureProperties", D696),
-    ("TextureTransform", D697),
-    ("TextureTransform3D", D698),
-    ("TextureTransformMatrix3D", D699),
-    ("TimeSensor", D810),
-    ("TimeTrigger", D811),
-    ("ToneMappedVolumeStyle", D812),
-    ("TouchSensor", D814),
-    ("Transform", D815),
-    ("TransformSensor", D816),
-    ("TransmitterPdu", D821),
-    ("TriangleFanSet", D822),
-    ("TriangleSet", D823),
-    ("TriangleSet2D", D824),
-    ("TriangleStripSet", D825),
-    ("TwoSidedMaterial", D826),
-    ("UniversalJoint", D834),
-    ("UnlitMaterial", D835),
-    ("Viewpoint", D856),
-    ("ViewpointGroup", D857),
-    ("Viewport", D859),
-    ("VisibilitySensor", D860),
-    ("VolumeData", D861),
-    ("VolumeEmitter", D862),
-    ("VolumePickSensor", D863),
-    ("WaveShaper", D864),
-    ("WindPhysicsModel", D927),
-    ("WorldInfo", D930),
+    ("Tangent", D679),
+    ("TexCoordChaser2D", D680),
+    ("TexCoordDamper2D", D681),
+    ("Text", D684),
+    ("TextureBackground", D686),
+    ("TextureCoordinate", D687),
+    ("TextureCoordinate3D", D688),
+    ("TextureCoordinate4D", D689),
+    ("TextureCoordinateGenerator", D690),
+    ("TextureProjector", D691),
+    ("TextureProjectorParallel", D692),
+    ("TextureProperties", D693),
+    ("TextureTransform", D694),
+    ("TextureTransform3D", D695),
+    ("TextureTransformMatrix3D", D696),
+    ("TimeSensor", D807),
+    ("TimeTrigger", D808),
+    ("ToneMappedVolumeStyle", D809),
+    ("TouchSensor", D811),
+    ("Transform", D812),
+    ("TransformSensor", D813),
+    ("TransmitterPdu", D818),
+    ("TriangleFanSet", D819),
+    ("TriangleSet", D820),
+    ("TriangleSet2D", D821),
+    ("TriangleStripSet", D822),
+    ("TwoSidedMaterial", D823),
+    ("UniversalJoint", D831),
+    ("UnlitMaterial", D832),
+    ("Viewpoint", D853),
+    ("ViewpointGroup", D854),
+    ("Viewport", D856),
+    ("VisibilitySensor", D857),
+    ("VolumeData", D858),
+    ("VolumeEmitter", D859),
+    ("VolumePickSensor", D860),
+    ("WaveShaper", D861),
+    ("WindPhysicsModel", D924),
+    ("WorldInfo", D927),
 ];
 
 /// Node type name, field name and the field's description.
 pub static FIELDS: &[(&str, &str, &str)] = &[
-    ("AcousticProperties", "absorption", D1339),
+    ("AcousticProperties", "absorption", D1336),
     ("AcousticProperties", "description", D81),
-    ("AcousticProperties", "diffuse", D1068),
+    ("AcousticProperties", "diffuse", D1065),
     ("AcousticProperties", "enabled", D219),
     ("AcousticProperties", "metadata", D322),
-    ("AcousticProperties", "refraction", D1335),
-    ("AcousticProperties", "specular", D1341),
-    ("Analyser", "channelCount", D1017),
-    ("Analyser", "channelCountMode", D1018),
-    ("Analyser", "channelInterpretation", D1019),
-    ("Analyser", "children", D720),
+    ("AcousticProperties", "refraction", D1332),
+    ("AcousticProperties", "specular", D1338),
+    ("Analyser", "channelCount", D1014),
+    ("Analyser", "channelCountMode", D1015),
+    ("Analyser", "channelInterpretation", D1016),
+    ("Analyser", "children", D717),
     ("Analyser", "description", D81),
     ("Analyser", "elapsedTime", D171),
     ("Analyser", "enabled", D219),
-    ("Analyser", "fftSize", D1098),
-    ("Analyser", "frequencyBinCount", D1114),
-    ("Analyser", "gain", D740),
-    ("Analyser", "isActive", D1157),
-    ("Analyser", "isPaused", D1161),
-    ("Analyser", "maxDecibels", D1189),
+    ("Analyser", "fftSize", D1095),
+    ("Analyser", "frequencyBinCount", D1111),
+    ("Analyser", "gain", D737),
+    ("Analyser", "isActive", D1154),
+    ("Analyser", "isPaused", D1158),
+    ("Analyser", "maxDecibels", D1186),
     ("Analyser", "metadata", D322),
-    ("Analyser", "minDecibels", D1201),
-    ("Analyser", "pauseTime", D883),
-    ("Analyser", "resumeTime", D879),
-    ("Analyser", "smoothingTimeConstant", D1332),
+    ("Analyser", "minDecibels", D1198),
+    ("Analyser", "pauseTime", D880),
+    ("Analyser", "resumeTime", D876),
+    ("Analyser", "smoothingTimeConstant", D1329),
     ("Analyser", "startTime", D33),
     ("Analyser", "stopTime", D33),
-    ("Analyser", "tailTime", D1360),
-    ("Anchor", "autoRefresh", D705),
-    ("Anchor", "autoRefreshTimeLimit", D706),
+    ("Analyser", "tailTime", D1357),
+    ("Anchor", "autoRefresh", D702),
+    ("Anchor", "autoRefreshTimeLimit", D703),
     ("Anchor", "bboxCenter", D97),
-    ("Anchor", "bboxDisplay", D914),
+    ("Anchor", "bboxDisplay", D911),
     ("Anchor", "bboxSize", D98),
     ("Anchor", "children", D270),
     ("Anchor", "description", D81),
-    ("Anchor", "load", D752),
+    ("Anchor", "load", D749),
     ("Anchor", "metadata", D322),
     ("Anchor", "parameter", D299),
     ("Anchor", "url", D39),
-    ("Anchor", "visible", D906),
+    ("Anchor", "visible", D903),
     ("Appearance", "acousticProperties", D489),
-    ("Appearance", "alphaCutoff", D796),
+    ("Appearance", "alphaCutoff", D793),
     ("Appearance", "alphaMode", D572),
     ("Appearance", "backMaterial", D473),
     ("Appearance", "fillProperties", D468),
@@ -1732,188 +1729,188 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("Appearance", "material", D474),
     ("Appearance", "metadata", D322),
     ("Appearance", "pointProperties", D478),
-    ("Appearance", "shaders", D954),
+    ("Appearance", "shaders", D951),
     ("Appearance", "texture", D493),
     ("Appearance", "textureTransform", D482),
     ("Arc2D", "endAngle", D61),
     ("Arc2D", "metadata", D322),
-    ("Arc2D", "radius", D1022),
+    ("Arc2D", "radius", D1019),
     ("Arc2D", "startAngle", D61),
     ("ArcClose2D", "closureType", D192),
     ("ArcClose2D", "endAngle", D61),
     ("ArcClose2D", "metadata", D322),
-    ("ArcClose2D", "radius", D1022),
+    ("ArcClose2D", "radius", D1019),
     ("ArcClose2D", "solid", D630),
     ("ArcClose2D", "startAngle", D61),
-    ("AudioClip", "autoRefresh", D975),
-    ("AudioClip", "autoRefreshTimeLimit", D976),
+    ("AudioClip", "autoRefresh", D972),
+    ("AudioClip", "autoRefreshTimeLimit", D973),
     ("AudioClip", "description", D81),
-    ("AudioClip", "duration_changed", D1241),
+    ("AudioClip", "duration_changed", D1238),
     ("AudioClip", "elapsedTime", D171),
     ("AudioClip", "enabled", D219),
-    ("AudioClip", "gain", D739),
-    ("AudioClip", "isActive", D1157),
-    ("AudioClip", "isPaused", D1161),
-    ("AudioClip", "load", D1180),
+    ("AudioClip", "gain", D736),
+    ("AudioClip", "isActive", D1154),
+    ("AudioClip", "isPaused", D1158),
+    ("AudioClip", "load", D1177),
     ("AudioClip", "loop", D587),
     ("AudioClip", "metadata", D322),
-    ("AudioClip", "pauseTime", D883),
+    ("AudioClip", "pauseTime", D880),
     ("AudioClip", "pitch", D421),
-    ("AudioClip", "resumeTime", D879),
+    ("AudioClip", "resumeTime", D876),
     ("AudioClip", "startTime", D33),
     ("AudioClip", "stopTime", D33),
     ("AudioClip", "url", D390),
-    ("AudioDestination", "channelCount", D1017),
-    ("AudioDestination", "channelCountMode", D1018),
-    ("AudioDestination", "channelInterpretation", D1019),
-    ("AudioDestination", "children", D720),
+    ("AudioDestination", "channelCount", D1014),
+    ("AudioDestination", "channelCountMode", D1015),
+    ("AudioDestination", "channelInterpretation", D1016),
+    ("AudioDestination", "children", D717),
     ("AudioDestination", "description", D81),
     ("AudioDestination", "enabled", D219),
-    ("AudioDestination", "gain", D739),
-    ("AudioDestination", "isActive", D1157),
-    ("AudioDestination", "maxChannelCount", D955),
-    ("AudioDestination", "mediaDeviceID", D1196),
+    ("AudioDestination", "gain", D736),
+    ("AudioDestination", "isActive", D1154),
+    ("AudioDestination", "maxChannelCount", D952),
+    ("AudioDestination", "mediaDeviceID", D1193),
     ("AudioDestination", "metadata", D322),
     ("Background", "backUrl", D304),
-    ("Background", "bindTime", D1088),
+    ("Background", "bindTime", D1085),
     ("Background", "bottomUrl", D304),
     ("Background", "frontUrl", D304),
-    ("Background", "groundAngle", D709),
+    ("Background", "groundAngle", D706),
     ("Background", "groundColor", D128),
-    ("Background", "isBound", D1089),
+    ("Background", "isBound", D1086),
     ("Background", "leftUrl", D304),
     ("Background", "metadata", D322),
     ("Background", "rightUrl", D304),
     ("Background", "set_bind", D335),
-    ("Background", "skyAngle", D709),
+    ("Background", "skyAngle", D706),
     ("Background", "skyColor", D130),
     ("Background", "topUrl", D304),
-    ("Background", "transparency", D1128),
-    ("BallJoint", "anchorPoint", D964),
-    ("BallJoint", "body1", D712),
-    ("BallJoint", "body1AnchorPoint", D990),
-    ("BallJoint", "body2", D712),
-    ("BallJoint", "body2AnchorPoint", D992),
-    ("BallJoint", "forceOutput", D1103),
+    ("Background", "transparency", D1125),
+    ("BallJoint", "anchorPoint", D961),
+    ("BallJoint", "body1", D709),
+    ("BallJoint", "body1AnchorPoint", D987),
+    ("BallJoint", "body2", D709),
+    ("BallJoint", "body2AnchorPoint", D989),
+    ("BallJoint", "forceOutput", D1100),
     ("BallJoint", "metadata", D322),
-    ("Billboard", "axisOfRotation", D988),
+    ("Billboard", "axisOfRotation", D985),
     ("Billboard", "bboxCenter", D97),
-    ("Billboard", "bboxDisplay", D914),
+    ("Billboard", "bboxDisplay", D911),
     ("Billboard", "bboxSize", D98),
     ("Billboard", "children", D270),
     ("Billboard", "metadata", D322),
-    ("Billboard", "visible", D906),
-    ("BiquadFilter", "channelCount", D1017),
-    ("BiquadFilter", "channelCountMode", D1018),
-    ("BiquadFilter", "channelInterpretation", D1019),
-    ("BiquadFilter", "children", D720),
+    ("Billboard", "visible", D903),
+    ("BiquadFilter", "channelCount", D1014),
+    ("BiquadFilter", "channelCountMode", D1015),
+    ("BiquadFilter", "channelInterpretation", D1016),
+    ("BiquadFilter", "children", D717),
     ("BiquadFilter", "description", D81),
-    ("BiquadFilter", "detune", D734),
+    ("BiquadFilter", "detune", D731),
     ("BiquadFilter", "elapsedTime", D171),
     ("BiquadFilter", "enabled", D219),
-    ("BiquadFilter", "frequency", D1113),
-    ("BiquadFilter", "gain", D739),
-    ("BiquadFilter", "isActive", D1157),
-    ("BiquadFilter", "isPaused", D1161),
+    ("BiquadFilter", "frequency", D1110),
+    ("BiquadFilter", "gain", D736),
+    ("BiquadFilter", "isActive", D1154),
+    ("BiquadFilter", "isPaused", D1158),
     ("BiquadFilter", "metadata", D322),
-    ("BiquadFilter", "pauseTime", D883),
-    ("BiquadFilter", "qualityFactor", D1274),
-    ("BiquadFilter", "resumeTime", D879),
+    ("BiquadFilter", "pauseTime", D880),
+    ("BiquadFilter", "qualityFactor", D1271),
+    ("BiquadFilter", "resumeTime", D876),
     ("BiquadFilter", "startTime", D33),
     ("BiquadFilter", "stopTime", D33),
-    ("BiquadFilter", "tailTime", D1360),
-    ("BiquadFilter", "type", D1389),
+    ("BiquadFilter", "tailTime", D1357),
+    ("BiquadFilter", "type", D1386),
     ("BlendedVolumeStyle", "enabled", D219),
     ("BlendedVolumeStyle", "metadata", D322),
     ("BlendedVolumeStyle", "renderStyle", D483),
     ("BlendedVolumeStyle", "voxels", D487),
-    ("BlendedVolumeStyle", "weightConstant1", D1404),
-    ("BlendedVolumeStyle", "weightConstant2", D1405),
-    ("BlendedVolumeStyle", "weightFunction1", D1338),
-    ("BlendedVolumeStyle", "weightFunction2", D1338),
-    ("BlendedVolumeStyle", "weightTransferFunction1", D794),
-    ("BlendedVolumeStyle", "weightTransferFunction2", D794),
-    ("BooleanFilter", "inputFalse", D1147),
-    ("BooleanFilter", "inputNegate", D1148),
-    ("BooleanFilter", "inputTrue", D1149),
+    ("BlendedVolumeStyle", "weightConstant1", D1401),
+    ("BlendedVolumeStyle", "weightConstant2", D1402),
+    ("BlendedVolumeStyle", "weightFunction1", D1335),
+    ("BlendedVolumeStyle", "weightFunction2", D1335),
+    ("BlendedVolumeStyle", "weightTransferFunction1", D791),
+    ("BlendedVolumeStyle", "weightTransferFunction2", D791),
+    ("BooleanFilter", "inputFalse", D1144),
+    ("BooleanFilter", "inputNegate", D1145),
+    ("BooleanFilter", "inputTrue", D1146),
     ("BooleanFilter", "metadata", D322),
-    ("BooleanFilter", "set_boolean", D1306),
+    ("BooleanFilter", "set_boolean", D1303),
     ("BooleanSequencer", "key", D194),
     ("BooleanSequencer", "keyValue", D522),
     ("BooleanSequencer", "metadata", D322),
     ("BooleanSequencer", "next", D614),
     ("BooleanSequencer", "previous", D616),
-    ("BooleanSequencer", "set_fraction", D1310),
+    ("BooleanSequencer", "set_fraction", D1307),
     ("BooleanSequencer", "value_changed", D645),
     ("BooleanToggle", "metadata", D322),
     ("BooleanToggle", "set_boolean", D295),
     ("BooleanToggle", "toggle", D532),
     ("BooleanTrigger", "metadata", D322),
-    ("BooleanTrigger", "set_triggerTime", D1313),
-    ("BooleanTrigger", "triggerTrue", D1384),
-    ("BoundaryEnhancementVolumeStyle", "boundaryOpacity", D1002),
+    ("BooleanTrigger", "set_triggerTime", D1310),
+    ("BooleanTrigger", "triggerTrue", D1381),
+    ("BoundaryEnhancementVolumeStyle", "boundaryOpacity", D999),
     ("BoundaryEnhancementVolumeStyle", "enabled", D219),
     ("BoundaryEnhancementVolumeStyle", "metadata", D322),
-    ("BoundaryEnhancementVolumeStyle", "opacityFactor", D1239),
-    ("BoundaryEnhancementVolumeStyle", "retainedOpacity", D1285),
+    ("BoundaryEnhancementVolumeStyle", "opacityFactor", D1236),
+    ("BoundaryEnhancementVolumeStyle", "retainedOpacity", D1282),
     ("BoundedPhysicsModel", "enabled", D219),
     ("BoundedPhysicsModel", "geometry", D491),
     ("BoundedPhysicsModel", "metadata", D322),
     ("Box", "metadata", D322),
-    ("Box", "size", D1328),
+    ("Box", "size", D1325),
     ("Box", "solid", D630),
-    ("BufferAudioSource", "autoRefresh", D975),
-    ("BufferAudioSource", "autoRefreshTimeLimit", D976),
-    ("BufferAudioSource", "buffer", D1007),
-    ("BufferAudioSource", "bufferDuration", D1008),
-    ("BufferAudioSource", "channelCount", D1017),
-    ("BufferAudioSource", "channelCountMode", D1018),
-    ("BufferAudioSource", "channelInterpretation", D1019),
+    ("BufferAudioSource", "autoRefresh", D972),
+    ("BufferAudioSource", "autoRefreshTimeLimit", D973),
+    ("BufferAudioSource", "buffer", D1004),
+    ("BufferAudioSource", "bufferDuration", D1005),
+    ("BufferAudioSource", "channelCount", D1014),
+    ("BufferAudioSource", "channelCountMode", D1015),
+    ("BufferAudioSource", "channelInterpretation", D1016),
     ("BufferAudioSource", "description", D81),
-    ("BufferAudioSource", "detune", D734),
+    ("BufferAudioSource", "detune", D731),
     ("BufferAudioSource", "elapsedTime", D171),
     ("BufferAudioSource", "enabled", D219),
-    ("BufferAudioSource", "gain", D739),
-    ("BufferAudioSource", "isActive", D1157),
-    ("BufferAudioSource", "isPaused", D1161),
-    ("BufferAudioSource", "load", D1180),
+    ("BufferAudioSource", "gain", D736),
+    ("BufferAudioSource", "isActive", D1154),
+    ("BufferAudioSource", "isPaused", D1158),
+    ("BufferAudioSource", "load", D1177),
     ("BufferAudioSource", "loop", D587),
-    ("BufferAudioSource", "loopEnd", D1181),
-    ("BufferAudioSource", "loopStart", D1182),
+    ("BufferAudioSource", "loopEnd", D1178),
+    ("BufferAudioSource", "loopStart", D1179),
     ("BufferAudioSource", "metadata", D322),
-    ("BufferAudioSource", "numberOfChannels", D1236),
-    ("BufferAudioSource", "pauseTime", D883),
-    ("BufferAudioSource", "playbackRate", D1257),
-    ("BufferAudioSource", "resumeTime", D879),
-    ("BufferAudioSource", "sampleRate", D1294),
+    ("BufferAudioSource", "numberOfChannels", D1233),
+    ("BufferAudioSource", "pauseTime", D880),
+    ("BufferAudioSource", "playbackRate", D1254),
+    ("BufferAudioSource", "resumeTime", D876),
+    ("BufferAudioSource", "sampleRate", D1291),
     ("BufferAudioSource", "startTime", D33),
     ("BufferAudioSource", "stopTime", D33),
     ("BufferAudioSource", "url", D391),
     ("CADAssembly", "bboxCenter", D97),
-    ("CADAssembly", "bboxDisplay", D914),
+    ("CADAssembly", "bboxDisplay", D911),
     ("CADAssembly", "bboxSize", D98),
     ("CADAssembly", "children", D270),
     ("CADAssembly", "metadata", D322),
     ("CADAssembly", "name", D462),
-    ("CADAssembly", "visible", D906),
+    ("CADAssembly", "visible", D903),
     ("CADFace", "bboxCenter", D97),
-    ("CADFace", "bboxDisplay", D914),
+    ("CADFace", "bboxDisplay", D911),
     ("CADFace", "bboxSize", D98),
     ("CADFace", "metadata", D322),
     ("CADFace", "name", D462),
     ("CADFace", "shape", D150),
-    ("CADFace", "visible", D906),
+    ("CADFace", "visible", D903),
     ("CADLayer", "bboxCenter", D97),
-    ("CADLayer", "bboxDisplay", D914),
+    ("CADLayer", "bboxDisplay", D911),
     ("CADLayer", "bboxSize", D98),
     ("CADLayer", "children", D270),
     ("CADLayer", "metadata", D322),
     ("CADLayer", "name", D462),
-    ("CADLayer", "visible", D906),
+    ("CADLayer", "visible", D903),
     ("CADPart", "bboxCenter", D97),
-    ("CADPart", "bboxDisplay", D914),
+    ("CADPart", "bboxDisplay", D911),
     ("CADPart", "bboxSize", D98),
-    ("CADPart", "center", D818),
+    ("CADPart", "center", D815),
     ("CADPart", "children", D270),
     ("CADPart", "metadata", D322),
     ("CADPart", "name", D462),
@@ -1921,128 +1918,128 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("CADPart", "scale", D433),
     ("CADPart", "scaleOrientation", D567),
     ("CADPart", "translation", D548),
-    ("CADPart", "visible", D906),
+    ("CADPart", "visible", D903),
     ("CartoonVolumeStyle", "colorSteps", D443),
     ("CartoonVolumeStyle", "enabled", D219),
     ("CartoonVolumeStyle", "metadata", D322),
-    ("CartoonVolumeStyle", "orthogonalColor", D1246),
-    ("CartoonVolumeStyle", "parallelColor", D1250),
-    ("CartoonVolumeStyle", "surfaceNormals", D782),
-    ("ChannelMerger", "channelCount", D1017),
-    ("ChannelMerger", "channelCountMode", D1018),
-    ("ChannelMerger", "channelInterpretation", D1019),
-    ("ChannelMerger", "children", D720),
+    ("CartoonVolumeStyle", "orthogonalColor", D1243),
+    ("CartoonVolumeStyle", "parallelColor", D1247),
+    ("CartoonVolumeStyle", "surfaceNormals", D779),
+    ("ChannelMerger", "channelCount", D1014),
+    ("ChannelMerger", "channelCountMode", D1015),
+    ("ChannelMerger", "channelInterpretation", D1016),
+    ("ChannelMerger", "children", D717),
     ("ChannelMerger", "description", D81),
     ("ChannelMerger", "enabled", D219),
-    ("ChannelMerger", "gain", D739),
+    ("ChannelMerger", "gain", D736),
     ("ChannelMerger", "metadata", D322),
-    ("ChannelSelector", "channelCount", D1017),
-    ("ChannelSelector", "channelCountMode", D1018),
-    ("ChannelSelector", "channelInterpretation", D1019),
-    ("ChannelSelector", "channelSelection", D1020),
-    ("ChannelSelector", "children", D720),
+    ("ChannelSelector", "channelCount", D1014),
+    ("ChannelSelector", "channelCountMode", D1015),
+    ("ChannelSelector", "channelInterpretation", D1016),
+    ("ChannelSelector", "channelSelection", D1017),
+    ("ChannelSelector", "children", D717),
     ("ChannelSelector", "description", D81),
     ("ChannelSelector", "enabled", D219),
-    ("ChannelSelector", "gain", D739),
+    ("ChannelSelector", "gain", D736),
     ("ChannelSelector", "metadata", D322),
-    ("ChannelSplitter", "channelCount", D1017),
-    ("ChannelSplitter", "channelCountMode", D1018),
-    ("ChannelSplitter", "channelInterpretation", D1019),
-    ("ChannelSplitter", "children", D719),
+    ("ChannelSplitter", "channelCount", D1014),
+    ("ChannelSplitter", "channelCountMode", D1015),
+    ("ChannelSplitter", "channelInterpretation", D1016),
+    ("ChannelSplitter", "children", D716),
     ("ChannelSplitter", "description", D81),
     ("ChannelSplitter", "enabled", D219),
-    ("ChannelSplitter", "gain", D739),
+    ("ChannelSplitter", "gain", D736),
     ("ChannelSplitter", "metadata", D322),
-    ("ChannelSplitter", "outputs", D769),
+    ("ChannelSplitter", "outputs", D766),
     ("Circle2D", "metadata", D322),
-    ("Circle2D", "radius", D1023),
+    ("Circle2D", "radius", D1020),
     ("ClipPlane", "enabled", D219),
     ("ClipPlane", "metadata", D322),
     ("ClipPlane", "plane", D291),
     ("CollidableOffset", "bboxCenter", D97),
-    ("CollidableOffset", "bboxDisplay", D914),
+    ("CollidableOffset", "bboxDisplay", D911),
     ("CollidableOffset", "bboxSize", D98),
-    ("CollidableOffset", "collidable", D722),
+    ("CollidableOffset", "collidable", D719),
     ("CollidableOffset", "enabled", D219),
     ("CollidableOffset", "metadata", D322),
     ("CollidableOffset", "rotation", D494),
     ("CollidableOffset", "translation", D548),
-    ("CollidableOffset", "visible", D906),
+    ("CollidableOffset", "visible", D903),
     ("CollidableShape", "bboxCenter", D97),
-    ("CollidableShape", "bboxDisplay", D914),
+    ("CollidableShape", "bboxDisplay", D911),
     ("CollidableShape", "bboxSize", D98),
     ("CollidableShape", "enabled", D219),
     ("CollidableShape", "metadata", D322),
     ("CollidableShape", "rotation", D494),
-    ("CollidableShape", "shape", D776),
+    ("CollidableShape", "shape", D773),
     ("CollidableShape", "translation", D548),
-    ("CollidableShape", "visible", D906),
+    ("CollidableShape", "visible", D903),
     ("Collision", "bboxCenter", D97),
-    ("Collision", "bboxDisplay", D914),
+    ("Collision", "bboxDisplay", D911),
     ("Collision", "bboxSize", D98),
     ("Collision", "children", D270),
-    ("Collision", "collideTime", D808),
+    ("Collision", "collideTime", D805),
     ("Collision", "description", D80),
     ("Collision", "enabled", D217),
-    ("Collision", "isActive", D1160),
+    ("Collision", "isActive", D1157),
     ("Collision", "metadata", D322),
-    ("Collision", "proxy", D773),
-    ("Collision", "visible", D906),
+    ("Collision", "proxy", D770),
+    ("Collision", "visible", D903),
     ("CollisionCollection", "appliedParameters", D185),
     ("CollisionCollection", "bboxCenter", D97),
-    ("CollisionCollection", "bboxDisplay", D914),
+    ("CollisionCollection", "bboxDisplay", D911),
     ("CollisionCollection", "bboxSize", D98),
-    ("CollisionCollection", "bounce", D998),
+    ("CollisionCollection", "bounce", D995),
     ("CollisionCollection", "collidables", D124),
     ("CollisionCollection", "description", D80),
     ("CollisionCollection", "enabled", D219),
-    ("CollisionCollection", "frictionCoefficients", D1115),
+    ("CollisionCollection", "frictionCoefficients", D1112),
     ("CollisionCollection", "metadata", D322),
-    ("CollisionCollection", "minBounceSpeed", D1200),
-    ("CollisionCollection", "slipFactors", D1331),
-    ("CollisionCollection", "softnessConstantForceMix", D1333),
-    ("CollisionCollection", "softnessErrorCorrection", D1334),
-    ("CollisionCollection", "surfaceSpeed", D1357),
-    ("CollisionCollection", "visible", D906),
-    ("CollisionSensor", "collider", D724),
+    ("CollisionCollection", "minBounceSpeed", D1197),
+    ("CollisionCollection", "slipFactors", D1328),
+    ("CollisionCollection", "softnessConstantForceMix", D1330),
+    ("CollisionCollection", "softnessErrorCorrection", D1331),
+    ("CollisionCollection", "surfaceSpeed", D1354),
+    ("CollisionCollection", "visible", D903),
+    ("CollisionSensor", "collider", D721),
     ("CollisionSensor", "description", D80),
     ("CollisionSensor", "enabled", D219),
-    ("CollisionSensor", "isActive", D1159),
+    ("CollisionSensor", "isActive", D1156),
     ("CollisionSensor", "metadata", D322),
     ("CollisionSpace", "bboxCenter", D97),
-    ("CollisionSpace", "bboxDisplay", D914),
+    ("CollisionSpace", "bboxDisplay", D911),
     ("CollisionSpace", "bboxSize", D98),
     ("CollisionSpace", "collidables", D118),
     ("CollisionSpace", "enabled", D219),
     ("CollisionSpace", "metadata", D322),
-    ("CollisionSpace", "useGeometry", D1395),
-    ("CollisionSpace", "visible", D906),
-    ("Color", "color", D726),
+    ("CollisionSpace", "useGeometry", D1392),
+    ("CollisionSpace", "visible", D903),
+    ("Color", "color", D723),
     ("Color", "metadata", D322),
-    ("ColorChaser", "duration", D1081),
+    ("ColorChaser", "duration", D1078),
     ("ColorChaser", "initialDestination", D324),
     ("ColorChaser", "initialValue", D328),
-    ("ColorChaser", "isActive", D1156),
+    ("ColorChaser", "isActive", D1153),
     ("ColorChaser", "metadata", D322),
-    ("ColorChaser", "set_destination", D1308),
-    ("ColorChaser", "set_value", D1314),
+    ("ColorChaser", "set_destination", D1305),
+    ("ColorChaser", "set_value", D1311),
     ("ColorChaser", "value_changed", D142),
     ("ColorDamper", "initialDestination", D324),
     ("ColorDamper", "initialValue", D328),
-    ("ColorDamper", "isActive", D1156),
+    ("ColorDamper", "isActive", D1153),
     ("ColorDamper", "metadata", D322),
-    ("ColorDamper", "order", D1242),
-    ("ColorDamper", "set_destination", D1308),
-    ("ColorDamper", "set_value", D1314),
-    ("ColorDamper", "tau", D1362),
-    ("ColorDamper", "tolerance", D1241),
+    ("ColorDamper", "order", D1239),
+    ("ColorDamper", "set_destination", D1305),
+    ("ColorDamper", "set_value", D1311),
+    ("ColorDamper", "tau", D1359),
+    ("ColorDamper", "tolerance", D1238),
     ("ColorDamper", "value_changed", D142),
     ("ColorInterpolator", "key", D194),
     ("ColorInterpolator", "keyValue", D520),
     ("ColorInterpolator", "metadata", D322),
-    ("ColorInterpolator", "set_fraction", D1310),
+    ("ColorInterpolator", "set_fraction", D1307),
     ("ColorInterpolator", "value_changed", D376),
-    ("ColorRGBA", "color", D727),
+    ("ColorRGBA", "color", D724),
     ("ColorRGBA", "metadata", D322),
     ("ComposedCubeMapTexture", "backTexture", D525),
     ("ComposedCubeMapTexture", "bottomTexture", D527),
@@ -2053,28 +2050,28 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("ComposedCubeMapTexture", "rightTexture", D525),
     ("ComposedCubeMapTexture", "textureProperties", D481),
     ("ComposedCubeMapTexture", "topTexture", D525),
-    ("ComposedShader", "activate", D958),
+    ("ComposedShader", "activate", D955),
     ("ComposedShader", "field", D308),
-    ("ComposedShader", "isSelected", D1164),
-    ("ComposedShader", "isValid", D1165),
-    ("ComposedShader", "language", D749),
+    ("ComposedShader", "isSelected", D1161),
+    ("ComposedShader", "isValid", D1162),
+    ("ComposedShader", "language", D746),
     ("ComposedShader", "metadata", D322),
     ("ComposedShader", "parts", D138),
     ("ComposedTexture3D", "description", D81),
     ("ComposedTexture3D", "metadata", D322),
-    ("ComposedTexture3D", "repeatR", D921),
-    ("ComposedTexture3D", "repeatS", D922),
-    ("ComposedTexture3D", "repeatT", D923),
-    ("ComposedTexture3D", "texture", D1026),
+    ("ComposedTexture3D", "repeatR", D918),
+    ("ComposedTexture3D", "repeatS", D919),
+    ("ComposedTexture3D", "repeatT", D920),
+    ("ComposedTexture3D", "texture", D1023),
     ("ComposedTexture3D", "textureProperties", D481),
     ("ComposedVolumeStyle", "enabled", D219),
     ("ComposedVolumeStyle", "metadata", D322),
     ("ComposedVolumeStyle", "renderStyle", D379),
-    ("Cone", "bottom", D916),
+    ("Cone", "bottom", D913),
     ("Cone", "bottomRadius", D649),
     ("Cone", "height", D649),
     ("Cone", "metadata", D322),
-    ("Cone", "side", D918),
+    ("Cone", "side", D915),
     ("Cone", "solid", D630),
     ("ConeEmitter", "angle", D143),
     ("ConeEmitter", "direction", D325),
@@ -2086,212 +2083,212 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("ConeEmitter", "surfaceArea", D529),
     ("ConeEmitter", "variation", D420),
     ("Contact", "appliedParameters", D185),
-    ("Contact", "body1", D713),
-    ("Contact", "body2", D713),
-    ("Contact", "bounce", D998),
-    ("Contact", "contactNormal", D1038),
-    ("Contact", "depth", D1062),
-    ("Contact", "frictionCoefficients", D1115),
-    ("Contact", "frictionDirection", D1116),
-    ("Contact", "geometry1", D743),
-    ("Contact", "geometry2", D743),
+    ("Contact", "body1", D710),
+    ("Contact", "body2", D710),
+    ("Contact", "bounce", D995),
+    ("Contact", "contactNormal", D1035),
+    ("Contact", "depth", D1059),
+    ("Contact", "frictionCoefficients", D1112),
+    ("Contact", "frictionDirection", D1113),
+    ("Contact", "geometry1", D740),
+    ("Contact", "geometry2", D740),
     ("Contact", "metadata", D322),
-    ("Contact", "minBounceSpeed", D1200),
-    ("Contact", "position", D1264),
-    ("Contact", "slipCoefficients", D1330),
-    ("Contact", "softnessConstantForceMix", D1333),
-    ("Contact", "softnessErrorCorrection", D1334),
-    ("Contact", "surfaceSpeed", D1357),
-    ("Contour2D", "children", D721),
+    ("Contact", "minBounceSpeed", D1197),
+    ("Contact", "position", D1261),
+    ("Contact", "slipCoefficients", D1327),
+    ("Contact", "softnessConstantForceMix", D1330),
+    ("Contact", "softnessErrorCorrection", D1331),
+    ("Contact", "surfaceSpeed", D1354),
+    ("Contour2D", "children", D718),
     ("Contour2D", "metadata", D322),
-    ("ContourPolyline2D", "controlPoint", D1042),
+    ("ContourPolyline2D", "controlPoint", D1039),
     ("ContourPolyline2D", "metadata", D322),
-    ("Convolver", "buffer", D1007),
-    ("Convolver", "channelCount", D1017),
-    ("Convolver", "channelCountMode", D1018),
-    ("Convolver", "channelInterpretation", D1019),
-    ("Convolver", "children", D720),
+    ("Convolver", "buffer", D1004),
+    ("Convolver", "channelCount", D1014),
+    ("Convolver", "channelCountMode", D1015),
+    ("Convolver", "channelInterpretation", D1016),
+    ("Convolver", "children", D717),
     ("Convolver", "description", D81),
     ("Convolver", "elapsedTime", D171),
     ("Convolver", "enabled", D219),
-    ("Convolver", "gain", D739),
-    ("Convolver", "isActive", D1157),
-    ("Convolver", "isPaused", D1161),
+    ("Convolver", "gain", D736),
+    ("Convolver", "isActive", D1154),
+    ("Convolver", "isPaused", D1158),
     ("Convolver", "metadata", D322),
-    ("Convolver", "normalize", D1230),
-    ("Convolver", "pauseTime", D883),
-    ("Convolver", "resumeTime", D879),
+    ("Convolver", "normalize", D1227),
+    ("Convolver", "pauseTime", D880),
+    ("Convolver", "resumeTime", D876),
     ("Convolver", "startTime", D33),
     ("Convolver", "stopTime", D33),
-    ("Convolver", "tailTime", D1360),
+    ("Convolver", "tailTime", D1357),
     ("Coordinate", "metadata", D322),
-    ("Coordinate", "point", D1258),
-    ("CoordinateChaser", "duration", D1081),
+    ("Coordinate", "point", D1255),
+    ("CoordinateChaser", "duration", D1078),
     ("CoordinateChaser", "initialDestination", D324),
     ("CoordinateChaser", "initialValue", D328),
-    ("CoordinateChaser", "isActive", D1156),
+    ("CoordinateChaser", "isActive", D1153),
     ("CoordinateChaser", "metadata", D322),
-    ("CoordinateChaser", "set_destination", D1308),
-    ("CoordinateChaser", "set_value", D1314),
+    ("CoordinateChaser", "set_destination", D1305),
+    ("CoordinateChaser", "set_value", D1311),
     ("CoordinateChaser", "value_changed", D142),
     ("CoordinateDamper", "initialDestination", D324),
     ("CoordinateDamper", "initialValue", D328),
-    ("CoordinateDamper", "isActive", D1156),
+    ("CoordinateDamper", "isActive", D1153),
     ("CoordinateDamper", "metadata", D322),
-    ("CoordinateDamper", "order", D1242),
-    ("CoordinateDamper", "set_destination", D1308),
-    ("CoordinateDamper", "set_value", D1314),
-    ("CoordinateDamper", "tau", D1362),
-    ("CoordinateDamper", "tolerance", D1241),
+    ("CoordinateDamper", "order", D1239),
+    ("CoordinateDamper", "set_destination", D1305),
+    ("CoordinateDamper", "set_value", D1311),
+    ("CoordinateDamper", "tau", D1359),
+    ("CoordinateDamper", "tolerance", D1238),
     ("CoordinateDamper", "value_changed", D142),
     ("CoordinateDouble", "metadata", D322),
-    ("CoordinateDouble", "point", D1258),
+    ("CoordinateDouble", "point", D1255),
     ("CoordinateInterpolator", "key", D194),
     ("CoordinateInterpolator", "keyValue", D520),
     ("CoordinateInterpolator", "metadata", D322),
-    ("CoordinateInterpolator", "set_fraction", D1310),
+    ("CoordinateInterpolator", "set_fraction", D1307),
     ("CoordinateInterpolator", "value_changed", D376),
     ("CoordinateInterpolator2D", "key", D194),
     ("CoordinateInterpolator2D", "keyValue", D520),
     ("CoordinateInterpolator2D", "metadata", D322),
-    ("CoordinateInterpolator2D", "set_fraction", D1310),
+    ("CoordinateInterpolator2D", "set_fraction", D1307),
     ("CoordinateInterpolator2D", "value_changed", D376),
-    ("Cylinder", "bottom", D915),
+    ("Cylinder", "bottom", D912),
     ("Cylinder", "height", D649),
     ("Cylinder", "metadata", D322),
     ("Cylinder", "radius", D649),
-    ("Cylinder", "side", D917),
+    ("Cylinder", "side", D914),
     ("Cylinder", "solid", D630),
-    ("Cylinder", "top", D919),
-    ("CylinderSensor", "autoOffset", D1067),
-    ("CylinderSensor", "axisRotation", D989),
+    ("Cylinder", "top", D916),
+    ("CylinderSensor", "autoOffset", D1064),
+    ("CylinderSensor", "axisRotation", D986),
     ("CylinderSensor", "description", D82),
     ("CylinderSensor", "diskAngle", D281),
     ("CylinderSensor", "enabled", D219),
     ("CylinderSensor", "isActive", D612),
     ("CylinderSensor", "isOver", D286),
-    ("CylinderSensor", "maxAngle", D1024),
+    ("CylinderSensor", "maxAngle", D1021),
     ("CylinderSensor", "metadata", D322),
-    ("CylinderSensor", "minAngle", D1024),
+    ("CylinderSensor", "minAngle", D1021),
     ("CylinderSensor", "offset", D621),
-    ("CylinderSensor", "rotation_changed", D1290),
-    ("CylinderSensor", "trackPoint_changed", D1377),
-    ("DISEntityManager", "addedEntities", D960),
+    ("CylinderSensor", "rotation_changed", D1287),
+    ("CylinderSensor", "trackPoint_changed", D1374),
+    ("DISEntityManager", "addedEntities", D957),
     ("DISEntityManager", "address", D416),
     ("DISEntityManager", "applicationID", D211),
-    ("DISEntityManager", "children", D1184),
+    ("DISEntityManager", "children", D1181),
     ("DISEntityManager", "metadata", D322),
     ("DISEntityManager", "port", D418),
-    ("DISEntityManager", "removedEntities", D1282),
+    ("DISEntityManager", "removedEntities", D1279),
     ("DISEntityManager", "siteID", D640),
-    ("DISEntityTypeMapping", "autoRefresh", D975),
-    ("DISEntityTypeMapping", "autoRefreshTimeLimit", D976),
+    ("DISEntityTypeMapping", "autoRefresh", D972),
+    ("DISEntityTypeMapping", "autoRefreshTimeLimit", D973),
     ("DISEntityTypeMapping", "category", D343),
     ("DISEntityTypeMapping", "country", D341),
     ("DISEntityTypeMapping", "description", D81),
     ("DISEntityTypeMapping", "domain", D342),
     ("DISEntityTypeMapping", "extra", D50),
     ("DISEntityTypeMapping", "kind", D347),
-    ("DISEntityTypeMapping", "load", D1180),
+    ("DISEntityTypeMapping", "load", D1177),
     ("DISEntityTypeMapping", "metadata", D322),
     ("DISEntityTypeMapping", "specific", D654),
     ("DISEntityTypeMapping", "subcategory", D344),
     ("DISEntityTypeMapping", "url", D385),
-    ("Delay", "channelCount", D1017),
-    ("Delay", "channelCountMode", D1018),
-    ("Delay", "channelInterpretation", D1019),
-    ("Delay", "children", D720),
-    ("Delay", "delayTime", D1060),
+    ("Delay", "channelCount", D1014),
+    ("Delay", "channelCountMode", D1015),
+    ("Delay", "channelInterpretation", D1016),
+    ("Delay", "children", D717),
+    ("Delay", "delayTime", D1057),
     ("Delay", "description", D81),
     ("Delay", "elapsedTime", D171),
     ("Delay", "enabled", D219),
-    ("Delay", "gain", D739),
-    ("Delay", "isActive", D1157),
-    ("Delay", "isPaused", D1161),
-    ("Delay", "maxDelayTime", D1190),
+    ("Delay", "gain", D736),
+    ("Delay", "isActive", D1154),
+    ("Delay", "isPaused", D1158),
+    ("Delay", "maxDelayTime", D1187),
     ("Delay", "metadata", D322),
-    ("Delay", "pauseTime", D883),
-    ("Delay", "resumeTime", D879),
+    ("Delay", "pauseTime", D880),
+    ("Delay", "resumeTime", D876),
     ("Delay", "startTime", D33),
     ("Delay", "stopTime", D33),
-    ("Delay", "tailTime", D1360),
+    ("Delay", "tailTime", D1357),
     ("DirectionalLight", "ambientIntensity", D100),
-    ("DirectionalLight", "color", D1027),
+    ("DirectionalLight", "color", D1024),
     ("DirectionalLight", "direction", D498),
     ("DirectionalLight", "global", D266),
     ("DirectionalLight", "intensity", D101),
     ("DirectionalLight", "metadata", D322),
     ("DirectionalLight", "on", D222),
-    ("DirectionalLight", "shadowIntensity", D1317),
-    ("DirectionalLight", "shadows", D1318),
+    ("DirectionalLight", "shadowIntensity", D1314),
+    ("DirectionalLight", "shadows", D1315),
     ("Disk2D", "innerRadius", D333),
     ("Disk2D", "metadata", D322),
     ("Disk2D", "outerRadius", D507),
     ("Disk2D", "solid", D630),
-    ("DoubleAxisHingeJoint", "anchorPoint", D964),
-    ("DoubleAxisHingeJoint", "axis1", D980),
-    ("DoubleAxisHingeJoint", "axis2", D983),
-    ("DoubleAxisHingeJoint", "body1", D712),
-    ("DoubleAxisHingeJoint", "body1AnchorPoint", D990),
-    ("DoubleAxisHingeJoint", "body1Axis", D991),
-    ("DoubleAxisHingeJoint", "body2", D712),
-    ("DoubleAxisHingeJoint", "body2AnchorPoint", D992),
-    ("DoubleAxisHingeJoint", "body2Axis", D991),
-    ("DoubleAxisHingeJoint", "desiredAngularVelocity1", D1065),
-    ("DoubleAxisHingeJoint", "desiredAngularVelocity2", D1066),
-    ("DoubleAxisHingeJoint", "forceOutput", D1103),
-    ("DoubleAxisHingeJoint", "maxAngle1", D1188),
-    ("DoubleAxisHingeJoint", "maxTorque1", D1193),
-    ("DoubleAxisHingeJoint", "maxTorque2", D1194),
+    ("DoubleAxisHingeJoint", "anchorPoint", D961),
+    ("DoubleAxisHingeJoint", "axis1", D977),
+    ("DoubleAxisHingeJoint", "axis2", D980),
+    ("DoubleAxisHingeJoint", "body1", D709),
+    ("DoubleAxisHingeJoint", "body1AnchorPoint", D987),
+    ("DoubleAxisHingeJoint", "body1Axis", D988),
+    ("DoubleAxisHingeJoint", "body2", D709),
+    ("DoubleAxisHingeJoint", "body2AnchorPoint", D989),
+    ("DoubleAxisHingeJoint", "body2Axis", D988),
+    ("DoubleAxisHingeJoint", "desiredAngularVelocity1", D1062),
+    ("DoubleAxisHingeJoint", "desiredAngularVelocity2", D1063),
+    ("DoubleAxisHingeJoint", "forceOutput", D1100),
+    ("DoubleAxisHingeJoint", "maxAngle1", D1185),
+    ("DoubleAxisHingeJoint", "maxTorque1", D1190),
+    ("DoubleAxisHingeJoint", "maxTorque2", D1191),
     ("DoubleAxisHingeJoint", "metadata", D322),
-    ("DoubleAxisHingeJoint", "minAngle1", D1199),
-    ("DoubleAxisHingeJoint", "stop1Bounce", D1347),
-    ("DoubleAxisHingeJoint", "stop1ConstantForceMix", D1348),
-    ("DoubleAxisHingeJoint", "stop1ErrorCorrection", D1349),
-    ("DoubleAxisHingeJoint", "suspensionErrorCorrection", D1358),
-    ("DoubleAxisHingeJoint", "suspensionForce", D1359),
-    ("DynamicsCompressor", "attack", D711),
-    ("DynamicsCompressor", "channelCount", D1017),
-    ("DynamicsCompressor", "channelCountMode", D1018),
-    ("DynamicsCompressor", "channelInterpretation", D1019),
-    ("DynamicsCompressor", "children", D720),
+    ("DoubleAxisHingeJoint", "minAngle1", D1196),
+    ("DoubleAxisHingeJoint", "stop1Bounce", D1344),
+    ("DoubleAxisHingeJoint", "stop1ConstantForceMix", D1345),
+    ("DoubleAxisHingeJoint", "stop1ErrorCorrection", D1346),
+    ("DoubleAxisHingeJoint", "suspensionErrorCorrection", D1355),
+    ("DoubleAxisHingeJoint", "suspensionForce", D1356),
+    ("DynamicsCompressor", "attack", D708),
+    ("DynamicsCompressor", "channelCount", D1014),
+    ("DynamicsCompressor", "channelCountMode", D1015),
+    ("DynamicsCompressor", "channelInterpretation", D1016),
+    ("DynamicsCompressor", "children", D717),
     ("DynamicsCompressor", "description", D81),
     ("DynamicsCompressor", "elapsedTime", D171),
     ("DynamicsCompressor", "enabled", D219),
-    ("DynamicsCompressor", "gain", D739),
-    ("DynamicsCompressor", "isActive", D1157),
-    ("DynamicsCompressor", "isPaused", D1161),
-    ("DynamicsCompressor", "knee", D1169),
+    ("DynamicsCompressor", "gain", D736),
+    ("DynamicsCompressor", "isActive", D1154),
+    ("DynamicsCompressor", "isPaused", D1158),
+    ("DynamicsCompressor", "knee", D1166),
     ("DynamicsCompressor", "metadata", D322),
-    ("DynamicsCompressor", "pauseTime", D883),
-    ("DynamicsCompressor", "ratio", D1275),
-    ("DynamicsCompressor", "reduction", D1279),
-    ("DynamicsCompressor", "release", D1281),
-    ("DynamicsCompressor", "resumeTime", D879),
+    ("DynamicsCompressor", "pauseTime", D880),
+    ("DynamicsCompressor", "ratio", D1272),
+    ("DynamicsCompressor", "reduction", D1276),
+    ("DynamicsCompressor", "release", D1278),
+    ("DynamicsCompressor", "resumeTime", D876),
     ("DynamicsCompressor", "startTime", D33),
     ("DynamicsCompressor", "stopTime", D33),
-    ("DynamicsCompressor", "tailTime", D1360),
-    ("DynamicsCompressor", "threshold", D1374),
+    ("DynamicsCompressor", "tailTime", D1357),
+    ("DynamicsCompressor", "threshold", D1371),
     ("EaseInEaseOut", "easeInEaseOut", D73),
     ("EaseInEaseOut", "key", D195),
     ("EaseInEaseOut", "metadata", D322),
     ("EaseInEaseOut", "modifiedFraction_changed", D352),
-    ("EaseInEaseOut", "set_fraction", D1309),
-    ("EdgeEnhancementVolumeStyle", "edgeColor", D1029),
+    ("EaseInEaseOut", "set_fraction", D1306),
+    ("EdgeEnhancementVolumeStyle", "edgeColor", D1026),
     ("EdgeEnhancementVolumeStyle", "enabled", D219),
-    ("EdgeEnhancementVolumeStyle", "gradientThreshold", D1205),
+    ("EdgeEnhancementVolumeStyle", "gradientThreshold", D1202),
     ("EdgeEnhancementVolumeStyle", "metadata", D322),
-    ("EdgeEnhancementVolumeStyle", "surfaceNormals", D782),
+    ("EdgeEnhancementVolumeStyle", "surfaceNormals", D779),
     ("ElevationGrid", "attrib", D469),
-    ("ElevationGrid", "ccw", D1011),
+    ("ElevationGrid", "ccw", D1008),
     ("ElevationGrid", "color", D465),
-    ("ElevationGrid", "colorPerVertex", D890),
-    ("ElevationGrid", "creaseAngle", D1047),
+    ("ElevationGrid", "colorPerVertex", D887),
+    ("ElevationGrid", "creaseAngle", D1044),
     ("ElevationGrid", "fogCoord", D470),
     ("ElevationGrid", "height", D268),
     ("ElevationGrid", "metadata", D322),
     ("ElevationGrid", "normal", D475),
-    ("ElevationGrid", "normalPerVertex", D892),
+    ("ElevationGrid", "normalPerVertex", D889),
     ("ElevationGrid", "set_height", D268),
     ("ElevationGrid", "solid", D630),
     ("ElevationGrid", "texCoord", D480),
@@ -2300,18 +2297,18 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("ElevationGrid", "zDimension", D445),
     ("ElevationGrid", "zSpacing", D404),
     ("EnvironmentLight", "ambientIntensity", D100),
-    ("EnvironmentLight", "color", D1027),
-    ("EnvironmentLight", "diffuseCoefficients", D1069),
-    ("EnvironmentLight", "diffuseTexture", D1070),
-    ("EnvironmentLight", "global", D1120),
+    ("EnvironmentLight", "color", D1024),
+    ("EnvironmentLight", "diffuseCoefficients", D1066),
+    ("EnvironmentLight", "diffuseTexture", D1067),
+    ("EnvironmentLight", "global", D1117),
     ("EnvironmentLight", "intensity", D101),
     ("EnvironmentLight", "metadata", D322),
     ("EnvironmentLight", "on", D222),
-    ("EnvironmentLight", "origin", D1244),
-    ("EnvironmentLight", "rotation", D1289),
-    ("EnvironmentLight", "shadowIntensity", D1317),
-    ("EnvironmentLight", "shadows", D1318),
-    ("EnvironmentLight", "specularTexture", D1343),
+    ("EnvironmentLight", "origin", D1241),
+    ("EnvironmentLight", "rotation", D1286),
+    ("EnvironmentLight", "shadowIntensity", D1314),
+    ("EnvironmentLight", "shadows", D1315),
+    ("EnvironmentLight", "specularTexture", D1340),
     ("EspduTransform", "address", D417),
     ("EspduTransform", "applicationID", D637),
     ("EspduTransform", "articulationParameterArray", D323),
@@ -2329,16 +2326,16 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("EspduTransform", "articulationParameterValue6_changed", D265),
     ("EspduTransform", "articulationParameterValue7_changed", D265),
     ("EspduTransform", "bboxCenter", D97),
-    ("EspduTransform", "bboxDisplay", D914),
+    ("EspduTransform", "bboxDisplay", D911),
     ("EspduTransform", "bboxSize", D98),
-    ("EspduTransform", "center", D819),
+    ("EspduTransform", "center", D816),
     ("EspduTransform", "children", D270),
-    ("EspduTransform", "collideTime", D887),
+    ("EspduTransform", "collideTime", D884),
     ("EspduTransform", "collisionType", D339),
     ("EspduTransform", "deadReckoning", D184),
     ("EspduTransform", "description", D80),
-    ("EspduTransform", "detonateTime", D888),
-    ("EspduTransform", "detonationLocation", D929),
+    ("EspduTransform", "detonateTime", D885),
+    ("EspduTransform", "detonationLocation", D926),
     ("EspduTransform", "detonationRelativeLocation", D584),
     ("EspduTransform", "detonationResult", D340),
     ("EspduTransform", "enabled", D221),
@@ -2356,37 +2353,37 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("EspduTransform", "eventSiteID", D640),
     ("EspduTransform", "fired1", D278),
     ("EspduTransform", "fired2", D279),
-    ("EspduTransform", "firedTime", D875),
+    ("EspduTransform", "firedTime", D872),
     ("EspduTransform", "firingRange", D577),
     ("EspduTransform", "firingRate", D578),
-    ("EspduTransform", "forceID", D1102),
+    ("EspduTransform", "forceID", D1099),
     ("EspduTransform", "fuse", D345),
     ("EspduTransform", "geoCoords", D262),
     ("EspduTransform", "geoSystem", D290),
     ("EspduTransform", "isActive", D280),
     ("EspduTransform", "isCollided", D276),
     ("EspduTransform", "isDetonated", D277),
-    ("EspduTransform", "isNetworkReader", D900),
-    ("EspduTransform", "isNetworkWriter", D899),
-    ("EspduTransform", "isRtpHeaderHeard", D897),
-    ("EspduTransform", "isStandAlone", D898),
+    ("EspduTransform", "isNetworkReader", D897),
+    ("EspduTransform", "isNetworkWriter", D896),
+    ("EspduTransform", "isRtpHeaderHeard", D894),
+    ("EspduTransform", "isStandAlone", D895),
     ("EspduTransform", "linearAcceleration", D34),
-    ("EspduTransform", "linearVelocity", D850),
+    ("EspduTransform", "linearVelocity", D847),
     ("EspduTransform", "marking", D402),
     ("EspduTransform", "metadata", D322),
     ("EspduTransform", "multicastRelayHost", D238),
     ("EspduTransform", "multicastRelayPort", D239),
-    ("EspduTransform", "munitionApplicationID", D1218),
+    ("EspduTransform", "munitionApplicationID", D1215),
     ("EspduTransform", "munitionEndPoint", D241),
-    ("EspduTransform", "munitionEntityID", D1219),
+    ("EspduTransform", "munitionEntityID", D1216),
     ("EspduTransform", "munitionQuantity", D576),
     ("EspduTransform", "munitionSiteID", D422),
     ("EspduTransform", "munitionStartPoint", D327),
-    ("EspduTransform", "networkMode", D913),
+    ("EspduTransform", "networkMode", D910),
     ("EspduTransform", "port", D426),
     ("EspduTransform", "readInterval", D609),
     ("EspduTransform", "rotation", D495),
-    ("EspduTransform", "rtpHeaderExpected", D894),
+    ("EspduTransform", "rtpHeaderExpected", D891),
     ("EspduTransform", "scale", D433),
     ("EspduTransform", "scaleOrientation", D567),
     ("EspduTransform", "set_articulationParameterValue0", D629),
@@ -2400,7 +2397,7 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("EspduTransform", "siteID", D640),
     ("EspduTransform", "timestamp", D178),
     ("EspduTransform", "translation", D550),
-    ("EspduTransform", "visible", D906),
+    ("EspduTransform", "visible", D903),
     ("EspduTransform", "warhead", D346),
     ("EspduTransform", "writeInterval", D610),
     ("ExplosionEmitter", "mass", D86),
@@ -2410,30 +2407,30 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("ExplosionEmitter", "speed", D326),
     ("ExplosionEmitter", "surfaceArea", D529),
     ("ExplosionEmitter", "variation", D420),
-    ("Extrusion", "beginCap", D895),
-    ("Extrusion", "ccw", D716),
-    ("Extrusion", "convex", D731),
-    ("Extrusion", "creaseAngle", D1048),
-    ("Extrusion", "crossSection", D732),
-    ("Extrusion", "endCap", D896),
+    ("Extrusion", "beginCap", D892),
+    ("Extrusion", "ccw", D713),
+    ("Extrusion", "convex", D728),
+    ("Extrusion", "creaseAngle", D1045),
+    ("Extrusion", "crossSection", D729),
+    ("Extrusion", "endCap", D893),
     ("Extrusion", "metadata", D322),
-    ("Extrusion", "orientation", D767),
-    ("Extrusion", "scale", D1297),
-    ("Extrusion", "set_crossSection", D732),
-    ("Extrusion", "set_orientation", D767),
-    ("Extrusion", "set_scale", D1297),
-    ("Extrusion", "set_spine", D780),
+    ("Extrusion", "orientation", D764),
+    ("Extrusion", "scale", D1294),
+    ("Extrusion", "set_crossSection", D729),
+    ("Extrusion", "set_orientation", D764),
+    ("Extrusion", "set_scale", D1294),
+    ("Extrusion", "set_spine", D777),
     ("Extrusion", "solid", D630),
-    ("Extrusion", "spine", D780),
-    ("FillProperties", "filled", D904),
+    ("Extrusion", "spine", D777),
+    ("FillProperties", "filled", D901),
     ("FillProperties", "hatchColor", D129),
-    ("FillProperties", "hatchStyle", D1124),
-    ("FillProperties", "hatched", D905),
+    ("FillProperties", "hatchStyle", D1121),
+    ("FillProperties", "hatched", D902),
     ("FillProperties", "metadata", D322),
     ("FloatVertexAttribute", "metadata", D322),
     ("FloatVertexAttribute", "name", D589),
-    ("FloatVertexAttribute", "numComponents", D1233),
-    ("FloatVertexAttribute", "value", D1397),
+    ("FloatVertexAttribute", "numComponents", D1230),
+    ("FloatVertexAttribute", "value", D1394),
     ("Fog", "bindTime", D228),
     ("Fog", "color", D243),
     ("Fog", "fogType", D655),
@@ -2441,160 +2438,160 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("Fog", "metadata", D322),
     ("Fog", "set_bind", D580),
     ("Fog", "visibilityRange", D205),
-    ("FogCoordinate", "depth", D1061),
+    ("FogCoordinate", "depth", D1058),
     ("FogCoordinate", "metadata", D322),
-    ("FontLibrary", "autoRefresh", D705),
-    ("FontLibrary", "autoRefreshTimeLimit", D706),
+    ("FontLibrary", "autoRefresh", D702),
+    ("FontLibrary", "autoRefreshTimeLimit", D703),
     ("FontLibrary", "description", D81),
-    ("FontLibrary", "family", D736),
-    ("FontLibrary", "load", D752),
+    ("FontLibrary", "family", D733),
+    ("FontLibrary", "load", D749),
     ("FontLibrary", "metadata", D322),
     ("FontLibrary", "url", D39),
     ("FontStyle", "family", D74),
-    ("FontStyle", "horizontal", D910),
-    ("FontStyle", "justify", D748),
+    ("FontStyle", "horizontal", D907),
+    ("FontStyle", "justify", D745),
     ("FontStyle", "language", D359),
-    ("FontStyle", "leftToRight", D911),
+    ("FontStyle", "leftToRight", D908),
     ("FontStyle", "metadata", D322),
     ("FontStyle", "size", D430),
     ("FontStyle", "spacing", D40),
     ("FontStyle", "style", D534),
-    ("FontStyle", "topToBottom", D912),
+    ("FontStyle", "topToBottom", D909),
     ("ForcePhysicsModel", "enabled", D219),
-    ("ForcePhysicsModel", "force", D1101),
+    ("ForcePhysicsModel", "force", D1098),
     ("ForcePhysicsModel", "metadata", D322),
-    ("Gain", "channelCount", D1017),
-    ("Gain", "channelCountMode", D1018),
-    ("Gain", "channelInterpretation", D1019),
-    ("Gain", "children", D720),
+    ("Gain", "channelCount", D1014),
+    ("Gain", "channelCountMode", D1015),
+    ("Gain", "channelInterpretation", D1016),
+    ("Gain", "children", D717),
     ("Gain", "description", D81),
     ("Gain", "elapsedTime", D171),
     ("Gain", "enabled", D219),
-    ("Gain", "gain", D739),
-    ("Gain", "isActive", D1157),
-    ("Gain", "isPaused", D1161),
+    ("Gain", "gain", D736),
+    ("Gain", "isActive", D1154),
+    ("Gain", "isPaused", D1158),
     ("Gain", "metadata", D322),
-    ("Gain", "pauseTime", D883),
-    ("Gain", "resumeTime", D879),
+    ("Gain", "pauseTime", D880),
+    ("Gain", "resumeTime", D876),
     ("Gain", "startTime", D33),
     ("Gain", "stopTime", D33),
-    ("Gain", "tailTime", D1360),
+    ("Gain", "tailTime", D1357),
     ("GaussianSplats", "bboxCenter", D97),
-    ("GaussianSplats", "bboxDisplay", D914),
+    ("GaussianSplats", "bboxDisplay", D911),
     ("GaussianSplats", "bboxSize", D98),
-    ("GaussianSplats", "castShadow", D1009),
-    ("GaussianSplats", "colorSpace", D729),
+    ("GaussianSplats", "castShadow", D1006),
+    ("GaussianSplats", "colorSpace", D726),
     ("GaussianSplats", "metadata", D322),
-    ("GaussianSplats", "opacities", D765),
-    ("GaussianSplats", "pointerEvents", D1145),
-    ("GaussianSplats", "positions", D755),
-    ("GaussianSplats", "scales", D790),
-    ("GaussianSplats", "sphericalHarmonicsDegree0Coef0", D1345),
-    ("GaussianSplats", "sphericalHarmonicsDegree1Coef0", D1345),
-    ("GaussianSplats", "sphericalHarmonicsDegree1Coef1", D1345),
-    ("GaussianSplats", "sphericalHarmonicsDegree1Coef2", D1345),
-    ("GaussianSplats", "sphericalHarmonicsDegree2Coef0", D1345),
-    ("GaussianSplats", "sphericalHarmonicsDegree2Coef1", D1345),
-    ("GaussianSplats", "sphericalHarmonicsDegree2Coef2", D1345),
-    ("GaussianSplats", "sphericalHarmonicsDegree2Coef3", D1345),
-    ("GaussianSplats", "sphericalHarmonicsDegree2Coef4", D1345),
-    ("GaussianSplats", "sphericalHarmonicsDegree3Coef0", D1345),
-    ("GaussianSplats", "sphericalHarmonicsDegree3Coef1", D1345),
-    ("GaussianSplats", "sphericalHarmonicsDegree3Coef2", D1345),
-    ("GaussianSplats", "sphericalHarmonicsDegree3Coef3", D1345),
-    ("GaussianSplats", "sphericalHarmonicsDegree3Coef4", D1345),
-    ("GaussianSplats", "sphericalHarmonicsDegree3Coef5", D1345),
-    ("GaussianSplats", "sphericalHarmonicsDegree3Coef6", D1345),
-    ("GaussianSplats", "visible", D906),
+    ("GaussianSplats", "opacities", D762),
+    ("GaussianSplats", "pointerEvents", D1142),
+    ("GaussianSplats", "positions", D752),
+    ("GaussianSplats", "scales", D787),
+    ("GaussianSplats", "sphericalHarmonicsDegree0Coef0", D1342),
+    ("GaussianSplats", "sphericalHarmonicsDegree1Coef0", D1342),
+    ("GaussianSplats", "sphericalHarmonicsDegree1Coef1", D1342),
+    ("GaussianSplats", "sphericalHarmonicsDegree1Coef2", D1342),
+    ("GaussianSplats", "sphericalHarmonicsDegree2Coef0", D1342),
+    ("GaussianSplats", "sphericalHarmonicsDegree2Coef1", D1342),
+    ("GaussianSplats", "sphericalHarmonicsDegree2Coef2", D1342),
+    ("GaussianSplats", "sphericalHarmonicsDegree2Coef3", D1342),
+    ("GaussianSplats", "sphericalHarmonicsDegree2Coef4", D1342),
+    ("GaussianSplats", "sphericalHarmonicsDegree3Coef0", D1342),
+    ("GaussianSplats", "sphericalHarmonicsDegree3Coef1", D1342),
+    ("GaussianSplats", "sphericalHarmonicsDegree3Coef2", D1342),
+    ("GaussianSplats", "sphericalHarmonicsDegree3Coef3", D1342),
+    ("GaussianSplats", "sphericalHarmonicsDegree3Coef4", D1342),
+    ("GaussianSplats", "sphericalHarmonicsDegree3Coef5", D1342),
+    ("GaussianSplats", "sphericalHarmonicsDegree3Coef6", D1342),
+    ("GaussianSplats", "visible", D903),
     ("GeneratedCubeMapTexture", "description", D81),
     ("GeneratedCubeMapTexture", "metadata", D322),
-    ("GeneratedCubeMapTexture", "size", D1323),
+    ("GeneratedCubeMapTexture", "size", D1320),
     ("GeneratedCubeMapTexture", "textureProperties", D481),
-    ("GeneratedCubeMapTexture", "update", D1391),
+    ("GeneratedCubeMapTexture", "update", D1388),
     ("GeoCoordinate", "geoOrigin", D471),
     ("GeoCoordinate", "geoSystem", D290),
     ("GeoCoordinate", "metadata", D322),
-    ("GeoCoordinate", "point", D1259),
-    ("GeoElevationGrid", "ccw", D1011),
+    ("GeoCoordinate", "point", D1256),
+    ("GeoElevationGrid", "ccw", D1008),
     ("GeoElevationGrid", "color", D465),
-    ("GeoElevationGrid", "colorPerVertex", D890),
-    ("GeoElevationGrid", "creaseAngle", D1047),
+    ("GeoElevationGrid", "colorPerVertex", D887),
+    ("GeoElevationGrid", "creaseAngle", D1044),
     ("GeoElevationGrid", "geoGridOrigin", D261),
     ("GeoElevationGrid", "geoOrigin", D471),
     ("GeoElevationGrid", "geoSystem", D290),
     ("GeoElevationGrid", "height", D154),
     ("GeoElevationGrid", "metadata", D322),
     ("GeoElevationGrid", "normal", D475),
-    ("GeoElevationGrid", "normalPerVertex", D892),
+    ("GeoElevationGrid", "normalPerVertex", D889),
     ("GeoElevationGrid", "set_height", D154),
     ("GeoElevationGrid", "solid", D630),
     ("GeoElevationGrid", "texCoord", D480),
     ("GeoElevationGrid", "xDimension", D446),
     ("GeoElevationGrid", "xSpacing", D203),
-    ("GeoElevationGrid", "yScale", D852),
+    ("GeoElevationGrid", "yScale", D849),
     ("GeoElevationGrid", "zDimension", D447),
     ("GeoElevationGrid", "zSpacing", D204),
     ("GeoLOD", "bboxCenter", D97),
-    ("GeoLOD", "bboxDisplay", D914),
+    ("GeoLOD", "bboxDisplay", D911),
     ("GeoLOD", "bboxSize", D98),
-    ("GeoLOD", "center", D853),
-    ("GeoLOD", "child1Url", D1273),
-    ("GeoLOD", "child2Url", D1273),
-    ("GeoLOD", "child3Url", D1273),
-    ("GeoLOD", "child4Url", D1273),
-    ("GeoLOD", "children", D768),
+    ("GeoLOD", "center", D850),
+    ("GeoLOD", "child1Url", D1270),
+    ("GeoLOD", "child2Url", D1270),
+    ("GeoLOD", "child3Url", D1270),
+    ("GeoLOD", "child4Url", D1270),
+    ("GeoLOD", "children", D765),
     ("GeoLOD", "geoOrigin", D471),
     ("GeoLOD", "geoSystem", D290),
     ("GeoLOD", "level_changed", D517),
     ("GeoLOD", "metadata", D322),
-    ("GeoLOD", "range", D853),
+    ("GeoLOD", "range", D850),
     ("GeoLOD", "rootNode", D264),
-    ("GeoLOD", "rootUrl", D1392),
-    ("GeoLOD", "visible", D906),
+    ("GeoLOD", "rootUrl", D1389),
+    ("GeoLOD", "visible", D903),
     ("GeoLocation", "bboxCenter", D97),
-    ("GeoLocation", "bboxDisplay", D914),
+    ("GeoLocation", "bboxDisplay", D911),
     ("GeoLocation", "bboxSize", D98),
     ("GeoLocation", "children", D270),
     ("GeoLocation", "geoCoords", D262),
     ("GeoLocation", "geoOrigin", D471),
     ("GeoLocation", "geoSystem", D290),
     ("GeoLocation", "metadata", D322),
-    ("GeoLocation", "visible", D906),
-    ("GeoMetadata", "autoRefresh", D975),
-    ("GeoMetadata", "autoRefreshTimeLimit", D976),
+    ("GeoLocation", "visible", D903),
+    ("GeoMetadata", "autoRefresh", D972),
+    ("GeoMetadata", "autoRefreshTimeLimit", D973),
     ("GeoMetadata", "data", D176),
     ("GeoMetadata", "description", D81),
-    ("GeoMetadata", "load", D1180),
+    ("GeoMetadata", "load", D1177),
     ("GeoMetadata", "metadata", D322),
-    ("GeoMetadata", "summary", D781),
+    ("GeoMetadata", "summary", D778),
     ("GeoMetadata", "url", D287),
     ("GeoOrigin", "geoCoords", D189),
     ("GeoOrigin", "geoSystem", D290),
     ("GeoOrigin", "metadata", D322),
-    ("GeoOrigin", "rotateYUp", D924),
+    ("GeoOrigin", "rotateYUp", D921),
     ("GeoPositionInterpolator", "geoOrigin", D471),
     ("GeoPositionInterpolator", "geoSystem", D290),
-    ("GeoPositionInterpolator", "geovalue_changed", D1151),
+    ("GeoPositionInterpolator", "geovalue_changed", D1148),
     ("GeoPositionInterpolator", "key", D194),
     ("GeoPositionInterpolator", "keyValue", D520),
     ("GeoPositionInterpolator", "metadata", D322),
-    ("GeoPositionInterpolator", "set_fraction", D1310),
+    ("GeoPositionInterpolator", "set_fraction", D1307),
     ("GeoPositionInterpolator", "value_changed", D376),
     ("GeoProximitySensor", "center", D554),
     ("GeoProximitySensor", "centerOfRotation_changed", D620),
     ("GeoProximitySensor", "description", D80),
     ("GeoProximitySensor", "enabled", D219),
-    ("GeoProximitySensor", "enterTime", D803),
-    ("GeoProximitySensor", "exitTime", D805),
+    ("GeoProximitySensor", "enterTime", D800),
+    ("GeoProximitySensor", "exitTime", D802),
     ("GeoProximitySensor", "geoCenter", D554),
     ("GeoProximitySensor", "geoCoord_changed", D622),
     ("GeoProximitySensor", "geoOrigin", D471),
     ("GeoProximitySensor", "geoSystem", D290),
-    ("GeoProximitySensor", "isActive", D1154),
+    ("GeoProximitySensor", "isActive", D1151),
     ("GeoProximitySensor", "metadata", D322),
     ("GeoProximitySensor", "orientation_changed", D624),
     ("GeoProximitySensor", "position_changed", D626),
-    ("GeoProximitySensor", "size", D1325),
+    ("GeoProximitySensor", "size", D1322),
     ("GeoTouchSensor", "description", D82),
     ("GeoTouchSensor", "enabled", D219),
     ("GeoTouchSensor", "geoOrigin", D471),
@@ -2606,12 +2603,12 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("GeoTouchSensor", "isActive", D612),
     ("GeoTouchSensor", "isOver", D354),
     ("GeoTouchSensor", "metadata", D322),
-    ("GeoTouchSensor", "touchTime", D802),
+    ("GeoTouchSensor", "touchTime", D799),
     ("GeoTransform", "bboxCenter", D97),
-    ("GeoTransform", "bboxDisplay", D914),
+    ("GeoTransform", "bboxDisplay", D911),
     ("GeoTransform", "bboxSize", D98),
     ("GeoTransform", "children", D270),
-    ("GeoTransform", "geoCenter", D818),
+    ("GeoTransform", "geoCenter", D815),
     ("GeoTransform", "geoOrigin", D471),
     ("GeoTransform", "geoSystem", D290),
     ("GeoTransform", "metadata", D322),
@@ -2619,58 +2616,58 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("GeoTransform", "scale", D433),
     ("GeoTransform", "scaleOrientation", D566),
     ("GeoTransform", "translation", D548),
-    ("GeoTransform", "visible", D906),
+    ("GeoTransform", "visible", D903),
     ("GeoViewpoint", "bindTime", D228),
-    ("GeoViewpoint", "centerOfRotation", D1016),
+    ("GeoViewpoint", "centerOfRotation", D1013),
     ("GeoViewpoint", "description", D82),
-    ("GeoViewpoint", "farDistance", D1095),
+    ("GeoViewpoint", "farDistance", D1092),
     ("GeoViewpoint", "fieldOfView", D565),
     ("GeoViewpoint", "geoOrigin", D471),
     ("GeoViewpoint", "geoSystem", D290),
     ("GeoViewpoint", "isBound", D518),
-    ("GeoViewpoint", "jump", D926),
+    ("GeoViewpoint", "jump", D923),
     ("GeoViewpoint", "metadata", D322),
-    ("GeoViewpoint", "navigationInfo", D762),
-    ("GeoViewpoint", "nearDistance", D1223),
+    ("GeoViewpoint", "navigationInfo", D759),
+    ("GeoViewpoint", "nearDistance", D1220),
     ("GeoViewpoint", "orientation", D602),
-    ("GeoViewpoint", "position", D1266),
+    ("GeoViewpoint", "position", D1263),
     ("GeoViewpoint", "retainUserOffsets", D590),
-    ("GeoViewpoint", "set_bind", D1305),
-    ("GeoViewpoint", "speedFactor", D1344),
-    ("GeoViewpoint", "viewAll", D855),
+    ("GeoViewpoint", "set_bind", D1302),
+    ("GeoViewpoint", "speedFactor", D1341),
+    ("GeoViewpoint", "viewAll", D852),
     ("Group", "bboxCenter", D97),
-    ("Group", "bboxDisplay", D914),
+    ("Group", "bboxDisplay", D911),
     ("Group", "bboxSize", D98),
     ("Group", "children", D270),
     ("Group", "metadata", D322),
-    ("Group", "visible", D906),
+    ("Group", "visible", D903),
     ("HAnimDisplacer", "coordIndex", D191),
     ("HAnimDisplacer", "description", D82),
-    ("HAnimDisplacer", "displacements", D1077),
+    ("HAnimDisplacer", "displacements", D1074),
     ("HAnimDisplacer", "metadata", D322),
-    ("HAnimDisplacer", "name", D827),
-    ("HAnimDisplacer", "weight", D793),
+    ("HAnimDisplacer", "name", D824),
+    ("HAnimDisplacer", "weight", D790),
     ("HAnimHumanoid", "bboxCenter", D97),
-    ("HAnimHumanoid", "bboxDisplay", D914),
+    ("HAnimHumanoid", "bboxDisplay", D911),
     ("HAnimHumanoid", "bboxSize", D98),
-    ("HAnimHumanoid", "center", D819),
+    ("HAnimHumanoid", "center", D816),
     ("HAnimHumanoid", "children", D155),
     ("HAnimHumanoid", "description", D82),
     ("HAnimHumanoid", "info", D153),
     ("HAnimHumanoid", "jointBindingPositions", D656),
     ("HAnimHumanoid", "jointBindingRotations", D657),
     ("HAnimHumanoid", "jointBindingScales", D658),
-    ("HAnimHumanoid", "joints", D746),
+    ("HAnimHumanoid", "joints", D743),
     ("HAnimHumanoid", "loa", D370),
     ("HAnimHumanoid", "metadata", D322),
     ("HAnimHumanoid", "motions", D152),
     ("HAnimHumanoid", "motionsEnabled", D68),
-    ("HAnimHumanoid", "name", D833),
+    ("HAnimHumanoid", "name", D830),
     ("HAnimHumanoid", "rotation", D496),
     ("HAnimHumanoid", "scale", D433),
     ("HAnimHumanoid", "scaleOrientation", D567),
-    ("HAnimHumanoid", "segments", D775),
-    ("HAnimHumanoid", "sites", D1322),
+    ("HAnimHumanoid", "segments", D772),
+    ("HAnimHumanoid", "sites", D1319),
     ("HAnimHumanoid", "skeletalConfiguration", D410),
     ("HAnimHumanoid", "skeleton", D382),
     ("HAnimHumanoid", "skin", D380),
@@ -2681,128 +2678,128 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("HAnimHumanoid", "translation", D551),
     ("HAnimHumanoid", "version", D272),
     ("HAnimHumanoid", "viewpoints", D377),
-    ("HAnimHumanoid", "visible", D906),
+    ("HAnimHumanoid", "visible", D903),
     ("HAnimJoint", "bboxCenter", D97),
-    ("HAnimJoint", "bboxDisplay", D914),
+    ("HAnimJoint", "bboxDisplay", D911),
     ("HAnimJoint", "bboxSize", D98),
-    ("HAnimJoint", "center", D819),
+    ("HAnimJoint", "center", D816),
     ("HAnimJoint", "children", D270),
     ("HAnimJoint", "description", D82),
-    ("HAnimJoint", "displacers", D1372),
+    ("HAnimJoint", "displacers", D1369),
     ("HAnimJoint", "limitOrientation", D497),
     ("HAnimJoint", "llimit", D393),
     ("HAnimJoint", "metadata", D322),
-    ("HAnimJoint", "name", D828),
+    ("HAnimJoint", "name", D825),
     ("HAnimJoint", "rotation", D496),
     ("HAnimJoint", "scale", D433),
     ("HAnimJoint", "scaleOrientation", D567),
     ("HAnimJoint", "skinCoordIndex", D160),
-    ("HAnimJoint", "skinCoordWeight", D865),
+    ("HAnimJoint", "skinCoordWeight", D862),
     ("HAnimJoint", "stiffness", D31),
     ("HAnimJoint", "translation", D551),
-    ("HAnimJoint", "ulimit", D836),
-    ("HAnimJoint", "visible", D906),
-    ("HAnimMotion", "channels", D1178),
-    ("HAnimMotion", "channelsEnabled", D995),
-    ("HAnimMotion", "cycleTime", D1050),
+    ("HAnimJoint", "ulimit", D833),
+    ("HAnimJoint", "visible", D903),
+    ("HAnimMotion", "channels", D1175),
+    ("HAnimMotion", "channelsEnabled", D992),
+    ("HAnimMotion", "cycleTime", D1047),
     ("HAnimMotion", "description", D82),
-    ("HAnimMotion", "elapsedTime", D1083),
+    ("HAnimMotion", "elapsedTime", D1080),
     ("HAnimMotion", "enabled", D219),
-    ("HAnimMotion", "endFrame", D1086),
-    ("HAnimMotion", "frameCount", D1107),
-    ("HAnimMotion", "frameDuration", D1108),
-    ("HAnimMotion", "frameIncrement", D1109),
-    ("HAnimMotion", "frameIndex", D1110),
-    ("HAnimMotion", "joints", D1168),
+    ("HAnimMotion", "endFrame", D1083),
+    ("HAnimMotion", "frameCount", D1104),
+    ("HAnimMotion", "frameDuration", D1105),
+    ("HAnimMotion", "frameIncrement", D1106),
+    ("HAnimMotion", "frameIndex", D1107),
+    ("HAnimMotion", "joints", D1165),
     ("HAnimMotion", "loa", D370),
     ("HAnimMotion", "loop", D587),
     ("HAnimMotion", "metadata", D322),
-    ("HAnimMotion", "name", D829),
+    ("HAnimMotion", "name", D826),
     ("HAnimMotion", "next", D615),
     ("HAnimMotion", "previous", D617),
-    ("HAnimMotion", "startFrame", D1346),
-    ("HAnimMotion", "values", D1399),
-    ("HAnimPose", "children", D717),
-    ("HAnimPose", "commencePose", D1031),
+    ("HAnimMotion", "startFrame", D1343),
+    ("HAnimMotion", "values", D1396),
+    ("HAnimPose", "children", D714),
+    ("HAnimPose", "commencePose", D1028),
     ("HAnimPose", "description", D82),
     ("HAnimPose", "enabled", D219),
-    ("HAnimPose", "isActive", D1158),
+    ("HAnimPose", "isActive", D1155),
     ("HAnimPose", "loa", D370),
     ("HAnimPose", "metadata", D322),
-    ("HAnimPose", "name", D830),
-    ("HAnimPose", "resetAllJoints", D1284),
-    ("HAnimPose", "set_fraction", D1315),
-    ("HAnimPose", "set_startTime", D1312),
+    ("HAnimPose", "name", D827),
+    ("HAnimPose", "resetAllJoints", D1281),
+    ("HAnimPose", "set_fraction", D1312),
+    ("HAnimPose", "set_startTime", D1309),
     ("HAnimPose", "transitionDuration", D209),
     ("HAnimSegment", "bboxCenter", D97),
-    ("HAnimSegment", "bboxDisplay", D914),
+    ("HAnimSegment", "bboxDisplay", D911),
     ("HAnimSegment", "bboxSize", D98),
     ("HAnimSegment", "centerOfMass", D392),
     ("HAnimSegment", "children", D270),
-    ("HAnimSegment", "coord", D1371),
+    ("HAnimSegment", "coord", D1368),
     ("HAnimSegment", "description", D82),
-    ("HAnimSegment", "displacers", D1373),
-    ("HAnimSegment", "mass", D813),
+    ("HAnimSegment", "displacers", D1370),
+    ("HAnimSegment", "mass", D810),
     ("HAnimSegment", "metadata", D322),
     ("HAnimSegment", "momentsOfInertia", D29),
-    ("HAnimSegment", "name", D831),
-    ("HAnimSegment", "visible", D906),
+    ("HAnimSegment", "name", D828),
+    ("HAnimSegment", "visible", D903),
     ("HAnimSite", "bboxCenter", D97),
-    ("HAnimSite", "bboxDisplay", D914),
+    ("HAnimSite", "bboxDisplay", D911),
     ("HAnimSite", "bboxSize", D98),
     ("HAnimSite", "center", D186),
     ("HAnimSite", "children", D270),
     ("HAnimSite", "description", D82),
     ("HAnimSite", "metadata", D322),
-    ("HAnimSite", "name", D832),
+    ("HAnimSite", "name", D829),
     ("HAnimSite", "rotation", D496),
     ("HAnimSite", "scale", D433),
     ("HAnimSite", "scaleOrientation", D567),
     ("HAnimSite", "translation", D551),
-    ("HAnimSite", "visible", D906),
-    ("ImageCubeMapTexture", "autoRefresh", D975),
-    ("ImageCubeMapTexture", "autoRefreshTimeLimit", D976),
+    ("HAnimSite", "visible", D903),
+    ("ImageCubeMapTexture", "autoRefresh", D972),
+    ("ImageCubeMapTexture", "autoRefreshTimeLimit", D973),
     ("ImageCubeMapTexture", "description", D81),
-    ("ImageCubeMapTexture", "load", D1180),
+    ("ImageCubeMapTexture", "load", D1177),
     ("ImageCubeMapTexture", "metadata", D322),
     ("ImageCubeMapTexture", "textureProperties", D481),
     ("ImageCubeMapTexture", "url", D387),
-    ("ImageTexture", "autoRefresh", D975),
-    ("ImageTexture", "autoRefreshTimeLimit", D976),
+    ("ImageTexture", "autoRefresh", D972),
+    ("ImageTexture", "autoRefreshTimeLimit", D973),
     ("ImageTexture", "description", D81),
-    ("ImageTexture", "load", D1180),
+    ("ImageTexture", "load", D1177),
     ("ImageTexture", "metadata", D322),
-    ("ImageTexture", "repeatS", D922),
-    ("ImageTexture", "repeatT", D923),
+    ("ImageTexture", "repeatS", D919),
+    ("ImageTexture", "repeatT", D920),
     ("ImageTexture", "textureProperties", D481),
     ("ImageTexture", "url", D387),
-    ("ImageTexture3D", "autoRefresh", D975),
-    ("ImageTexture3D", "autoRefreshTimeLimit", D976),
+    ("ImageTexture3D", "autoRefresh", D972),
+    ("ImageTexture3D", "autoRefreshTimeLimit", D973),
     ("ImageTexture3D", "description", D81),
-    ("ImageTexture3D", "load", D1180),
+    ("ImageTexture3D", "load", D1177),
     ("ImageTexture3D", "metadata", D322),
-    ("ImageTexture3D", "repeatR", D921),
-    ("ImageTexture3D", "repeatS", D922),
-    ("ImageTexture3D", "repeatT", D923),
+    ("ImageTexture3D", "repeatR", D918),
+    ("ImageTexture3D", "repeatS", D919),
+    ("ImageTexture3D", "repeatT", D920),
     ("ImageTexture3D", "textureProperties", D481),
     ("ImageTexture3D", "url", D387),
     ("IndexedFaceSet", "attrib", D469),
-    ("IndexedFaceSet", "ccw", D1011),
+    ("IndexedFaceSet", "ccw", D1008),
     ("IndexedFaceSet", "color", D464),
-    ("IndexedFaceSet", "colorIndex", D1030),
-    ("IndexedFaceSet", "colorPerVertex", D891),
-    ("IndexedFaceSet", "convex", D731),
+    ("IndexedFaceSet", "colorIndex", D1027),
+    ("IndexedFaceSet", "colorPerVertex", D888),
+    ("IndexedFaceSet", "convex", D728),
     ("IndexedFaceSet", "coord", D466),
-    ("IndexedFaceSet", "coordIndex", D1045),
-    ("IndexedFaceSet", "creaseAngle", D1047),
+    ("IndexedFaceSet", "coordIndex", D1042),
+    ("IndexedFaceSet", "creaseAngle", D1044),
     ("IndexedFaceSet", "fogCoord", D470),
     ("IndexedFaceSet", "metadata", D322),
     ("IndexedFaceSet", "normal", D475),
-    ("IndexedFaceSet", "normalIndex", D1228),
-    ("IndexedFaceSet", "normalPerVertex", D893),
-    ("IndexedFaceSet", "set_colorIndex", D1030),
-    ("IndexedFaceSet", "set_coordIndex", D1045),
-    ("IndexedFaceSet", "set_normalIndex", D1228),
+    ("IndexedFaceSet", "normalIndex", D1225),
+    ("IndexedFaceSet", "normalPerVertex", D890),
+    ("IndexedFaceSet", "set_colorIndex", D1027),
+    ("IndexedFaceSet", "set_coordIndex", D1042),
+    ("IndexedFaceSet", "set_normalIndex", D1225),
     ("IndexedFaceSet", "set_texCoordIndex", D381),
     ("IndexedFaceSet", "solid", D630),
     ("IndexedFaceSet", "tangent", D479),
@@ -2810,88 +2807,88 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("IndexedFaceSet", "texCoordIndex", D381),
     ("IndexedLineSet", "attrib", D469),
     ("IndexedLineSet", "color", D464),
-    ("IndexedLineSet", "colorIndex", D1030),
-    ("IndexedLineSet", "colorPerVertex", D889),
+    ("IndexedLineSet", "colorIndex", D1027),
+    ("IndexedLineSet", "colorPerVertex", D886),
     ("IndexedLineSet", "coord", D466),
-    ("IndexedLineSet", "coordIndex", D1045),
+    ("IndexedLineSet", "coordIndex", D1042),
     ("IndexedLineSet", "fogCoord", D470),
     ("IndexedLineSet", "metadata", D322),
     ("IndexedLineSet", "normal", D475),
-    ("IndexedLineSet", "set_colorIndex", D1030),
-    ("IndexedLineSet", "set_coordIndex", D1046),
+    ("IndexedLineSet", "set_colorIndex", D1027),
+    ("IndexedLineSet", "set_coordIndex", D1043),
     ("IndexedQuadSet", "attrib", D469),
-    ("IndexedQuadSet", "ccw", D1011),
+    ("IndexedQuadSet", "ccw", D1008),
     ("IndexedQuadSet", "color", D464),
-    ("IndexedQuadSet", "colorPerVertex", D891),
+    ("IndexedQuadSet", "colorPerVertex", D888),
     ("IndexedQuadSet", "coord", D466),
     ("IndexedQuadSet", "fogCoord", D470),
-    ("IndexedQuadSet", "index", D1141),
+    ("IndexedQuadSet", "index", D1138),
     ("IndexedQuadSet", "metadata", D322),
     ("IndexedQuadSet", "normal", D475),
-    ("IndexedQuadSet", "normalPerVertex", D893),
-    ("IndexedQuadSet", "set_index", D1141),
+    ("IndexedQuadSet", "normalPerVertex", D890),
+    ("IndexedQuadSet", "set_index", D1138),
     ("IndexedQuadSet", "solid", D630),
     ("IndexedQuadSet", "tangent", D479),
     ("IndexedQuadSet", "texCoord", D480),
     ("IndexedTriangleFanSet", "attrib", D469),
-    ("IndexedTriangleFanSet", "ccw", D1011),
+    ("IndexedTriangleFanSet", "ccw", D1008),
     ("IndexedTriangleFanSet", "color", D464),
-    ("IndexedTriangleFanSet", "colorPerVertex", D891),
+    ("IndexedTriangleFanSet", "colorPerVertex", D888),
     ("IndexedTriangleFanSet", "coord", D466),
     ("IndexedTriangleFanSet", "fogCoord", D470),
-    ("IndexedTriangleFanSet", "index", D1139),
+    ("IndexedTriangleFanSet", "index", D1136),
     ("IndexedTriangleFanSet", "metadata", D322),
     ("IndexedTriangleFanSet", "normal", D475),
-    ("IndexedTriangleFanSet", "normalPerVertex", D893),
-    ("IndexedTriangleFanSet", "set_index", D1139),
+    ("IndexedTriangleFanSet", "normalPerVertex", D890),
+    ("IndexedTriangleFanSet", "set_index", D1136),
     ("IndexedTriangleFanSet", "solid", D630),
     ("IndexedTriangleFanSet", "tangent", D479),
     ("IndexedTriangleFanSet", "texCoord", D480),
     ("IndexedTriangleSet", "attrib", D469),
-    ("IndexedTriangleSet", "ccw", D1011),
+    ("IndexedTriangleSet", "ccw", D1008),
     ("IndexedTriangleSet", "color", D464),
-    ("IndexedTriangleSet", "colorPerVertex", D891),
+    ("IndexedTriangleSet", "colorPerVertex", D888),
     ("IndexedTriangleSet", "coord", D466),
     ("IndexedTriangleSet", "fogCoord", D470),
-    ("IndexedTriangleSet", "index", D1140),
+    ("IndexedTriangleSet", "index", D1137),
     ("IndexedTriangleSet", "metadata", D322),
     ("IndexedTriangleSet", "normal", D475),
-    ("IndexedTriangleSet", "normalPerVertex", D893),
-    ("IndexedTriangleSet", "set_index", D1140),
+    ("IndexedTriangleSet", "normalPerVertex", D890),
+    ("IndexedTriangleSet", "set_index", D1137),
     ("IndexedTriangleSet", "solid", D630),
     ("IndexedTriangleSet", "tangent", D479),
     ("IndexedTriangleSet", "texCoord", D480),
     ("IndexedTriangleStripSet", "attrib", D469),
-    ("IndexedTriangleStripSet", "ccw", D1011),
+    ("IndexedTriangleStripSet", "ccw", D1008),
     ("IndexedTriangleStripSet", "color", D464),
-    ("IndexedTriangleStripSet", "colorPerVertex", D891),
+    ("IndexedTriangleStripSet", "colorPerVertex", D888),
     ("IndexedTriangleStripSet", "coord", D466),
     ("IndexedTriangleStripSet", "fogCoord", D470),
-    ("IndexedTriangleStripSet", "index", D1138),
+    ("IndexedTriangleStripSet", "index", D1135),
     ("IndexedTriangleStripSet", "metadata", D322),
     ("IndexedTriangleStripSet", "normal", D475),
-    ("IndexedTriangleStripSet", "normalPerVertex", D893),
-    ("IndexedTriangleStripSet", "set_index", D1138),
+    ("IndexedTriangleStripSet", "normalPerVertex", D890),
+    ("IndexedTriangleStripSet", "set_index", D1135),
     ("IndexedTriangleStripSet", "solid", D630),
     ("IndexedTriangleStripSet", "tangent", D479),
     ("IndexedTriangleStripSet", "texCoord", D480),
-    ("Inline", "autoRefresh", D975),
-    ("Inline", "autoRefreshTimeLimit", D976),
+    ("Inline", "autoRefresh", D972),
+    ("Inline", "autoRefreshTimeLimit", D973),
     ("Inline", "bboxCenter", D97),
-    ("Inline", "bboxDisplay", D914),
+    ("Inline", "bboxDisplay", D911),
     ("Inline", "bboxSize", D98),
     ("Inline", "description", D81),
-    ("Inline", "global", D744),
-    ("Inline", "load", D1180),
+    ("Inline", "global", D741),
+    ("Inline", "load", D1177),
     ("Inline", "metadata", D322),
     ("Inline", "url", D38),
-    ("Inline", "visible", D906),
-    ("InlineGeometry", "autoRefresh", D975),
-    ("InlineGeometry", "autoRefreshTimeLimit", D976),
+    ("Inline", "visible", D903),
+    ("InlineGeometry", "autoRefresh", D972),
+    ("InlineGeometry", "autoRefreshTimeLimit", D973),
     ("InlineGeometry", "description", D81),
-    ("InlineGeometry", "load", D1180),
+    ("InlineGeometry", "load", D1177),
     ("InlineGeometry", "metadata", D322),
-    ("InlineGeometry", "smooth", D778),
+    ("InlineGeometry", "smooth", D775),
     ("InlineGeometry", "solid", D630),
     ("InlineGeometry", "url", D38),
     ("IntegerSequencer", "key", D194),
@@ -2899,94 +2896,94 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("IntegerSequencer", "metadata", D322),
     ("IntegerSequencer", "next", D614),
     ("IntegerSequencer", "previous", D616),
-    ("IntegerSequencer", "set_fraction", D1310),
+    ("IntegerSequencer", "set_fraction", D1307),
     ("IntegerSequencer", "value_changed", D645),
-    ("IntegerTrigger", "integerKey", D1150),
+    ("IntegerTrigger", "integerKey", D1147),
     ("IntegerTrigger", "metadata", D322),
     ("IntegerTrigger", "set_boolean", D297),
-    ("IntegerTrigger", "triggerValue", D1385),
+    ("IntegerTrigger", "triggerValue", D1382),
     ("IsoSurfaceVolumeData", "bboxCenter", D97),
-    ("IsoSurfaceVolumeData", "bboxDisplay", D914),
+    ("IsoSurfaceVolumeData", "bboxDisplay", D911),
     ("IsoSurfaceVolumeData", "bboxSize", D98),
     ("IsoSurfaceVolumeData", "contourStepSize", D293),
     ("IsoSurfaceVolumeData", "dimensions", D36),
     ("IsoSurfaceVolumeData", "gradients", D485),
     ("IsoSurfaceVolumeData", "metadata", D322),
     ("IsoSurfaceVolumeData", "renderStyle", D419),
-    ("IsoSurfaceVolumeData", "surfaceTolerance", D795),
+    ("IsoSurfaceVolumeData", "surfaceTolerance", D792),
     ("IsoSurfaceVolumeData", "surfaceValues", D300),
-    ("IsoSurfaceVolumeData", "visible", D906),
+    ("IsoSurfaceVolumeData", "visible", D903),
     ("IsoSurfaceVolumeData", "voxels", D486),
-    ("KeySensor", "actionKeyPress", D956),
-    ("KeySensor", "actionKeyRelease", D957),
-    ("KeySensor", "altKey", D962),
-    ("KeySensor", "controlKey", D1040),
+    ("KeySensor", "actionKeyPress", D953),
+    ("KeySensor", "actionKeyRelease", D954),
+    ("KeySensor", "altKey", D959),
+    ("KeySensor", "controlKey", D1037),
     ("KeySensor", "description", D80),
     ("KeySensor", "enabled", D219),
     ("KeySensor", "isActive", D612),
     ("KeySensor", "keyPress", D232),
     ("KeySensor", "keyRelease", D233),
     ("KeySensor", "metadata", D322),
-    ("KeySensor", "shiftKey", D1319),
+    ("KeySensor", "shiftKey", D1316),
     ("LOD", "bboxCenter", D97),
-    ("LOD", "bboxDisplay", D914),
+    ("LOD", "bboxDisplay", D911),
     ("LOD", "bboxSize", D98),
-    ("LOD", "center", D854),
+    ("LOD", "center", D851),
     ("LOD", "children", D270),
-    ("LOD", "forceTransitions", D920),
+    ("LOD", "forceTransitions", D917),
     ("LOD", "level_changed", D516),
     ("LOD", "metadata", D322),
     ("LOD", "range", D659),
-    ("LOD", "visible", D906),
+    ("LOD", "visible", D903),
     ("Layer", "children", D429),
     ("Layer", "metadata", D322),
-    ("Layer", "objectType", D763),
-    ("Layer", "pickable", D1255),
-    ("Layer", "viewport", D792),
-    ("Layer", "visible", D906),
-    ("LayerSet", "activeLayer", D959),
-    ("LayerSet", "layers", D750),
+    ("Layer", "objectType", D760),
+    ("Layer", "pickable", D1252),
+    ("Layer", "viewport", D789),
+    ("Layer", "visible", D903),
+    ("LayerSet", "activeLayer", D956),
+    ("LayerSet", "layers", D747),
     ("LayerSet", "metadata", D322),
-    ("LayerSet", "order", D766),
-    ("Layout", "align", D707),
+    ("LayerSet", "order", D763),
+    ("Layout", "align", D704),
     ("Layout", "metadata", D322),
-    ("Layout", "offset", D791),
-    ("Layout", "offsetUnits", D764),
-    ("Layout", "scaleMode", D774),
-    ("Layout", "size", D785),
-    ("Layout", "sizeUnits", D777),
+    ("Layout", "offset", D788),
+    ("Layout", "offsetUnits", D761),
+    ("Layout", "scaleMode", D771),
+    ("Layout", "size", D782),
+    ("Layout", "sizeUnits", D774),
     ("LayoutGroup", "bboxCenter", D97),
-    ("LayoutGroup", "bboxDisplay", D914),
+    ("LayoutGroup", "bboxDisplay", D911),
     ("LayoutGroup", "bboxSize", D98),
     ("LayoutGroup", "children", D270),
-    ("LayoutGroup", "layout", D751),
+    ("LayoutGroup", "layout", D748),
     ("LayoutGroup", "metadata", D322),
-    ("LayoutGroup", "viewport", D730),
-    ("LayoutGroup", "visible", D906),
+    ("LayoutGroup", "viewport", D727),
+    ("LayoutGroup", "visible", D903),
     ("LayoutLayer", "children", D270),
-    ("LayoutLayer", "layout", D751),
+    ("LayoutLayer", "layout", D748),
     ("LayoutLayer", "metadata", D322),
-    ("LayoutLayer", "objectType", D763),
-    ("LayoutLayer", "pickable", D1255),
-    ("LayoutLayer", "viewport", D730),
-    ("LayoutLayer", "visible", D906),
+    ("LayoutLayer", "objectType", D760),
+    ("LayoutLayer", "pickable", D1252),
+    ("LayoutLayer", "viewport", D727),
+    ("LayoutLayer", "visible", D903),
     ("LinePickSensor", "description", D80),
     ("LinePickSensor", "enabled", D219),
-    ("LinePickSensor", "intersectionType", D1152),
-    ("LinePickSensor", "isActive", D1153),
-    ("LinePickSensor", "matchCriterion", D1059),
+    ("LinePickSensor", "intersectionType", D1149),
+    ("LinePickSensor", "isActive", D1150),
+    ("LinePickSensor", "matchCriterion", D1056),
     ("LinePickSensor", "metadata", D322),
-    ("LinePickSensor", "objectType", D763),
-    ("LinePickSensor", "pickTarget", D1254),
+    ("LinePickSensor", "objectType", D760),
+    ("LinePickSensor", "pickTarget", D1251),
     ("LinePickSensor", "pickedGeometry", D515),
     ("LinePickSensor", "pickedNormal", D513),
     ("LinePickSensor", "pickedPoint", D510),
     ("LinePickSensor", "pickedTextureCoordinate", D511),
-    ("LinePickSensor", "pickingGeometry", D1256),
-    ("LinePickSensor", "sortOrder", D779),
-    ("LineProperties", "applied", D903),
-    ("LineProperties", "linetype", D1176),
-    ("LineProperties", "linewidthScaleFactor", D1177),
+    ("LinePickSensor", "pickingGeometry", D1253),
+    ("LinePickSensor", "sortOrder", D776),
+    ("LineProperties", "applied", D900),
+    ("LineProperties", "linetype", D1173),
+    ("LineProperties", "linewidthScaleFactor", D1174),
     ("LineProperties", "metadata", D322),
     ("LineSet", "attrib", D469),
     ("LineSet", "color", D464),
@@ -2994,164 +2991,164 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("LineSet", "fogCoord", D470),
     ("LineSet", "metadata", D322),
     ("LineSet", "normal", D475),
-    ("LineSet", "vertexCount", D1401),
+    ("LineSet", "vertexCount", D1398),
     ("ListenerPointSource", "description", D81),
-    ("ListenerPointSource", "dopplerEnabled", D1080),
+    ("ListenerPointSource", "dopplerEnabled", D1077),
     ("ListenerPointSource", "elapsedTime", D171),
     ("ListenerPointSource", "enabled", D219),
-    ("ListenerPointSource", "gain", D739),
-    ("ListenerPointSource", "interauralDistance", D745),
-    ("ListenerPointSource", "isActive", D1157),
-    ("ListenerPointSource", "isPaused", D1161),
+    ("ListenerPointSource", "gain", D736),
+    ("ListenerPointSource", "interauralDistance", D742),
+    ("ListenerPointSource", "isActive", D1154),
+    ("ListenerPointSource", "isPaused", D1158),
     ("ListenerPointSource", "metadata", D322),
     ("ListenerPointSource", "orientation", D601),
-    ("ListenerPointSource", "pauseTime", D883),
-    ("ListenerPointSource", "position", D1265),
-    ("ListenerPointSource", "resumeTime", D879),
+    ("ListenerPointSource", "pauseTime", D880),
+    ("ListenerPointSource", "position", D1262),
+    ("ListenerPointSource", "resumeTime", D876),
     ("ListenerPointSource", "startTime", D33),
     ("ListenerPointSource", "stopTime", D33),
     ("ListenerPointSource", "trackCurrentView", D301),
-    ("LoadSensor", "children", D718),
+    ("LoadSensor", "children", D715),
     ("LoadSensor", "description", D80),
     ("LoadSensor", "enabled", D219),
-    ("LoadSensor", "isActive", D1159),
+    ("LoadSensor", "isActive", D1156),
     ("LoadSensor", "isLoaded", D439),
-    ("LoadSensor", "loadTime", D809),
+    ("LoadSensor", "loadTime", D806),
     ("LoadSensor", "metadata", D322),
     ("LoadSensor", "progress", D619),
-    ("LoadSensor", "timeOut", D807),
+    ("LoadSensor", "timeOut", D804),
     ("LocalFog", "color", D243),
     ("LocalFog", "enabled", D219),
     ("LocalFog", "fogType", D655),
     ("LocalFog", "metadata", D322),
     ("LocalFog", "visibilityRange", D205),
-    ("Material", "ambientIntensity", D1129),
-    ("Material", "ambientTexture", D866),
-    ("Material", "ambientTextureMapping", D753),
-    ("Material", "diffuseColor", D1130),
-    ("Material", "diffuseTexture", D868),
-    ("Material", "diffuseTextureMapping", D753),
-    ("Material", "emissiveColor", D1131),
-    ("Material", "emissiveTexture", D869),
-    ("Material", "emissiveTextureMapping", D753),
+    ("Material", "ambientIntensity", D1126),
+    ("Material", "ambientTexture", D863),
+    ("Material", "ambientTextureMapping", D750),
+    ("Material", "diffuseColor", D1127),
+    ("Material", "diffuseTexture", D865),
+    ("Material", "diffuseTextureMapping", D750),
+    ("Material", "emissiveColor", D1128),
+    ("Material", "emissiveTexture", D866),
+    ("Material", "emissiveTextureMapping", D750),
     ("Material", "metadata", D322),
-    ("Material", "normalScale", D1229),
-    ("Material", "normalTexture", D871),
-    ("Material", "normalTextureMapping", D753),
-    ("Material", "occlusionStrength", D1237),
-    ("Material", "occlusionTexture", D872),
-    ("Material", "occlusionTextureMapping", D753),
+    ("Material", "normalScale", D1226),
+    ("Material", "normalTexture", D868),
+    ("Material", "normalTextureMapping", D750),
+    ("Material", "occlusionStrength", D1234),
+    ("Material", "occlusionTexture", D869),
+    ("Material", "occlusionTextureMapping", D750),
     ("Material", "shininess", D394),
-    ("Material", "shininessTexture", D873),
-    ("Material", "shininessTextureMapping", D753),
-    ("Material", "specularColor", D1342),
-    ("Material", "specularTexture", D874),
-    ("Material", "specularTextureMapping", D753),
-    ("Material", "transparency", D1127),
+    ("Material", "shininessTexture", D870),
+    ("Material", "shininessTextureMapping", D750),
+    ("Material", "specularColor", D1339),
+    ("Material", "specularTexture", D871),
+    ("Material", "specularTextureMapping", D750),
+    ("Material", "transparency", D1124),
     ("Matrix3VertexAttribute", "metadata", D322),
     ("Matrix3VertexAttribute", "name", D589),
-    ("Matrix3VertexAttribute", "value", D1398),
+    ("Matrix3VertexAttribute", "value", D1395),
     ("Matrix4VertexAttribute", "metadata", D322),
     ("Matrix4VertexAttribute", "name", D589),
-    ("Matrix4VertexAttribute", "value", D1398),
+    ("Matrix4VertexAttribute", "value", D1395),
     ("MetadataBoolean", "metadata", D322),
     ("MetadataBoolean", "name", D197),
     ("MetadataBoolean", "reference", D582),
-    ("MetadataBoolean", "value", D788),
+    ("MetadataBoolean", "value", D785),
     ("MetadataDouble", "metadata", D322),
     ("MetadataDouble", "name", D197),
     ("MetadataDouble", "reference", D582),
-    ("MetadataDouble", "value", D788),
+    ("MetadataDouble", "value", D785),
     ("MetadataFloat", "metadata", D322),
     ("MetadataFloat", "name", D197),
     ("MetadataFloat", "reference", D582),
-    ("MetadataFloat", "value", D788),
+    ("MetadataFloat", "value", D785),
     ("MetadataInteger", "metadata", D322),
     ("MetadataInteger", "name", D197),
     ("MetadataInteger", "reference", D582),
-    ("MetadataInteger", "value", D788),
+    ("MetadataInteger", "value", D785),
     ("MetadataSet", "metadata", D322),
     ("MetadataSet", "name", D197),
     ("MetadataSet", "reference", D582),
-    ("MetadataSet", "value", D789),
+    ("MetadataSet", "value", D786),
     ("MetadataString", "metadata", D322),
     ("MetadataString", "name", D197),
     ("MetadataString", "reference", D582),
-    ("MetadataString", "value", D788),
+    ("MetadataString", "value", D785),
     ("MicrophoneSource", "description", D81),
     ("MicrophoneSource", "elapsedTime", D171),
     ("MicrophoneSource", "enabled", D219),
-    ("MicrophoneSource", "gain", D739),
-    ("MicrophoneSource", "isActive", D1157),
-    ("MicrophoneSource", "isPaused", D1161),
-    ("MicrophoneSource", "mediaDeviceID", D1196),
+    ("MicrophoneSource", "gain", D736),
+    ("MicrophoneSource", "isActive", D1154),
+    ("MicrophoneSource", "isPaused", D1158),
+    ("MicrophoneSource", "mediaDeviceID", D1193),
     ("MicrophoneSource", "metadata", D322),
-    ("MicrophoneSource", "pauseTime", D883),
-    ("MicrophoneSource", "resumeTime", D879),
+    ("MicrophoneSource", "pauseTime", D880),
+    ("MicrophoneSource", "resumeTime", D876),
     ("MicrophoneSource", "startTime", D33),
     ("MicrophoneSource", "stopTime", D33),
-    ("MotorJoint", "autoCalc", D972),
-    ("MotorJoint", "axis1Angle", D981),
-    ("MotorJoint", "axis1Torque", D982),
-    ("MotorJoint", "axis2Angle", D984),
-    ("MotorJoint", "axis2Torque", D985),
-    ("MotorJoint", "axis3Angle", D986),
-    ("MotorJoint", "axis3Torque", D987),
-    ("MotorJoint", "body1", D712),
-    ("MotorJoint", "body2", D712),
-    ("MotorJoint", "enabledAxes", D1085),
-    ("MotorJoint", "forceOutput", D1103),
+    ("MotorJoint", "autoCalc", D969),
+    ("MotorJoint", "axis1Angle", D978),
+    ("MotorJoint", "axis1Torque", D979),
+    ("MotorJoint", "axis2Angle", D981),
+    ("MotorJoint", "axis2Torque", D982),
+    ("MotorJoint", "axis3Angle", D983),
+    ("MotorJoint", "axis3Torque", D984),
+    ("MotorJoint", "body1", D709),
+    ("MotorJoint", "body2", D709),
+    ("MotorJoint", "enabledAxes", D1082),
+    ("MotorJoint", "forceOutput", D1100),
     ("MotorJoint", "metadata", D322),
-    ("MotorJoint", "motor1Angle", D1209),
-    ("MotorJoint", "motor1AngleRate", D1210),
-    ("MotorJoint", "motor1Axis", D1211),
-    ("MotorJoint", "motor2Angle", D1212),
-    ("MotorJoint", "motor2AngleRate", D1213),
-    ("MotorJoint", "motor2Axis", D1214),
-    ("MotorJoint", "motor3Angle", D1215),
-    ("MotorJoint", "motor3AngleRate", D1216),
-    ("MotorJoint", "motor3Axis", D1217),
-    ("MotorJoint", "stop1Bounce", D1347),
-    ("MotorJoint", "stop1ErrorCorrection", D1349),
-    ("MotorJoint", "stop2Bounce", D1350),
-    ("MotorJoint", "stop2ErrorCorrection", D1351),
-    ("MotorJoint", "stop3Bounce", D1352),
-    ("MotorJoint", "stop3ErrorCorrection", D1353),
-    ("MovieTexture", "autoRefresh", D975),
-    ("MovieTexture", "autoRefreshTimeLimit", D976),
+    ("MotorJoint", "motor1Angle", D1206),
+    ("MotorJoint", "motor1AngleRate", D1207),
+    ("MotorJoint", "motor1Axis", D1208),
+    ("MotorJoint", "motor2Angle", D1209),
+    ("MotorJoint", "motor2AngleRate", D1210),
+    ("MotorJoint", "motor2Axis", D1211),
+    ("MotorJoint", "motor3Angle", D1212),
+    ("MotorJoint", "motor3AngleRate", D1213),
+    ("MotorJoint", "motor3Axis", D1214),
+    ("MotorJoint", "stop1Bounce", D1344),
+    ("MotorJoint", "stop1ErrorCorrection", D1346),
+    ("MotorJoint", "stop2Bounce", D1347),
+    ("MotorJoint", "stop2ErrorCorrection", D1348),
+    ("MotorJoint", "stop3Bounce", D1349),
+    ("MotorJoint", "stop3ErrorCorrection", D1350),
+    ("MovieTexture", "autoRefresh", D972),
+    ("MovieTexture", "autoRefreshTimeLimit", D973),
     ("MovieTexture", "description", D81),
-    ("MovieTexture", "duration_changed", D1241),
+    ("MovieTexture", "duration_changed", D1238),
     ("MovieTexture", "elapsedTime", D172),
     ("MovieTexture", "enabled", D219),
-    ("MovieTexture", "gain", D739),
-    ("MovieTexture", "isActive", D1157),
-    ("MovieTexture", "isPaused", D1162),
-    ("MovieTexture", "load", D1180),
+    ("MovieTexture", "gain", D736),
+    ("MovieTexture", "isActive", D1154),
+    ("MovieTexture", "isPaused", D1159),
+    ("MovieTexture", "load", D1177),
     ("MovieTexture", "loop", D587),
     ("MovieTexture", "metadata", D322),
-    ("MovieTexture", "pauseTime", D884),
+    ("MovieTexture", "pauseTime", D881),
     ("MovieTexture", "pitch", D421),
-    ("MovieTexture", "repeatS", D922),
-    ("MovieTexture", "repeatT", D923),
-    ("MovieTexture", "resumeTime", D880),
+    ("MovieTexture", "repeatS", D919),
+    ("MovieTexture", "repeatT", D920),
+    ("MovieTexture", "resumeTime", D877),
     ("MovieTexture", "speed", D237),
     ("MovieTexture", "startTime", D33),
     ("MovieTexture", "stopTime", D33),
     ("MovieTexture", "textureProperties", D481),
     ("MovieTexture", "url", D388),
-    ("MultiTexture", "alpha", D708),
-    ("MultiTexture", "color", D728),
+    ("MultiTexture", "alpha", D705),
+    ("MultiTexture", "color", D725),
     ("MultiTexture", "description", D81),
-    ("MultiTexture", "function", D1117),
+    ("MultiTexture", "function", D1114),
     ("MultiTexture", "metadata", D322),
-    ("MultiTexture", "mode", D1207),
-    ("MultiTexture", "source", D1337),
+    ("MultiTexture", "mode", D1204),
+    ("MultiTexture", "source", D1334),
     ("MultiTexture", "texture", D151),
     ("MultiTextureCoordinate", "metadata", D322),
-    ("MultiTextureCoordinate", "texCoord", D952),
+    ("MultiTextureCoordinate", "texCoord", D949),
     ("MultiTextureTransform", "metadata", D322),
-    ("MultiTextureTransform", "textureTransform", D953),
-    ("NavigationInfo", "avatarSize", D977),
+    ("MultiTextureTransform", "textureTransform", D950),
+    ("NavigationInfo", "avatarSize", D974),
     ("NavigationInfo", "bindTime", D228),
     ("NavigationInfo", "headlight", D216),
     ("NavigationInfo", "isBound", D518),
@@ -3159,72 +3156,72 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("NavigationInfo", "set_bind", D580),
     ("NavigationInfo", "speed", D187),
     ("NavigationInfo", "transitionComplete", D229),
-    ("NavigationInfo", "transitionTime", D1379),
+    ("NavigationInfo", "transitionTime", D1376),
     ("NavigationInfo", "transitionType", D108),
     ("NavigationInfo", "type", D224),
     ("NavigationInfo", "visibilityLimit", D263),
     ("Normal", "metadata", D322),
-    ("Normal", "vector", D1303),
+    ("Normal", "vector", D1300),
     ("NormalInterpolator", "key", D194),
     ("NormalInterpolator", "keyValue", D520),
     ("NormalInterpolator", "metadata", D322),
-    ("NormalInterpolator", "set_fraction", D1310),
+    ("NormalInterpolator", "set_fraction", D1307),
     ("NormalInterpolator", "value_changed", D376),
-    ("NurbsCurve", "closed", D907),
+    ("NurbsCurve", "closed", D904),
     ("NurbsCurve", "controlPoint", D467),
-    ("NurbsCurve", "knot", D1170),
+    ("NurbsCurve", "knot", D1167),
     ("NurbsCurve", "metadata", D322),
-    ("NurbsCurve", "order", D1056),
-    ("NurbsCurve", "tessellation", D1126),
-    ("NurbsCurve", "weight", D849),
-    ("NurbsCurve2D", "closed", D907),
-    ("NurbsCurve2D", "controlPoint", D1041),
-    ("NurbsCurve2D", "knot", D1170),
+    ("NurbsCurve", "order", D1053),
+    ("NurbsCurve", "tessellation", D1123),
+    ("NurbsCurve", "weight", D846),
+    ("NurbsCurve2D", "closed", D904),
+    ("NurbsCurve2D", "controlPoint", D1038),
+    ("NurbsCurve2D", "knot", D1167),
     ("NurbsCurve2D", "metadata", D322),
-    ("NurbsCurve2D", "order", D1056),
-    ("NurbsCurve2D", "tessellation", D1126),
-    ("NurbsCurve2D", "weight", D849),
+    ("NurbsCurve2D", "order", D1053),
+    ("NurbsCurve2D", "tessellation", D1123),
+    ("NurbsCurve2D", "weight", D846),
     ("NurbsOrientationInterpolator", "controlPoint", D467),
-    ("NurbsOrientationInterpolator", "knot", D1170),
+    ("NurbsOrientationInterpolator", "knot", D1167),
     ("NurbsOrientationInterpolator", "metadata", D322),
-    ("NurbsOrientationInterpolator", "order", D1056),
-    ("NurbsOrientationInterpolator", "set_fraction", D1316),
+    ("NurbsOrientationInterpolator", "order", D1053),
+    ("NurbsOrientationInterpolator", "set_fraction", D1313),
     ("NurbsOrientationInterpolator", "value_changed", D141),
     ("NurbsOrientationInterpolator", "weight", D519),
     ("NurbsPatchSurface", "controlPoint", D467),
     ("NurbsPatchSurface", "metadata", D322),
     ("NurbsPatchSurface", "solid", D630),
     ("NurbsPatchSurface", "texCoord", D477),
-    ("NurbsPatchSurface", "uClosed", D902),
+    ("NurbsPatchSurface", "uClosed", D899),
     ("NurbsPatchSurface", "uDimension", D441),
-    ("NurbsPatchSurface", "uKnot", D1170),
-    ("NurbsPatchSurface", "uOrder", D1056),
-    ("NurbsPatchSurface", "uTessellation", D1126),
-    ("NurbsPatchSurface", "vClosed", D902),
+    ("NurbsPatchSurface", "uKnot", D1167),
+    ("NurbsPatchSurface", "uOrder", D1053),
+    ("NurbsPatchSurface", "uTessellation", D1123),
+    ("NurbsPatchSurface", "vClosed", D899),
     ("NurbsPatchSurface", "vDimension", D442),
-    ("NurbsPatchSurface", "vKnot", D1170),
-    ("NurbsPatchSurface", "vOrder", D1056),
-    ("NurbsPatchSurface", "vTessellation", D1126),
-    ("NurbsPatchSurface", "weight", D849),
+    ("NurbsPatchSurface", "vKnot", D1167),
+    ("NurbsPatchSurface", "vOrder", D1053),
+    ("NurbsPatchSurface", "vTessellation", D1123),
+    ("NurbsPatchSurface", "weight", D846),
     ("NurbsPositionInterpolator", "controlPoint", D467),
-    ("NurbsPositionInterpolator", "knot", D1170),
+    ("NurbsPositionInterpolator", "knot", D1167),
     ("NurbsPositionInterpolator", "metadata", D322),
-    ("NurbsPositionInterpolator", "order", D1056),
-    ("NurbsPositionInterpolator", "set_fraction", D1316),
+    ("NurbsPositionInterpolator", "order", D1053),
+    ("NurbsPositionInterpolator", "set_fraction", D1313),
     ("NurbsPositionInterpolator", "value_changed", D141),
     ("NurbsPositionInterpolator", "weight", D521),
     ("NurbsSet", "bboxCenter", D97),
-    ("NurbsSet", "bboxDisplay", D914),
+    ("NurbsSet", "bboxDisplay", D911),
     ("NurbsSet", "bboxSize", D98),
-    ("NurbsSet", "geometry", D721),
+    ("NurbsSet", "geometry", D718),
     ("NurbsSet", "metadata", D322),
-    ("NurbsSet", "tessellationScale", D1296),
-    ("NurbsSet", "visible", D906),
+    ("NurbsSet", "tessellationScale", D1293),
+    ("NurbsSet", "visible", D903),
     ("NurbsSurfaceInterpolator", "controlPoint", D467),
     ("NurbsSurfaceInterpolator", "metadata", D322),
     ("NurbsSurfaceInterpolator", "normal_changed", D141),
     ("NurbsSurfaceInterpolator", "position_changed", D141),
-    ("NurbsSurfaceInterpolator", "set_fraction", D1316),
+    ("NurbsSurfaceInterpolator", "set_fraction", D1313),
     ("NurbsSurfaceInterpolator", "uDimension", D441),
     ("NurbsSurfaceInterpolator", "uKnot", D357),
     ("NurbsSurfaceInterpolator", "uOrder", D188),
@@ -3232,17 +3229,17 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("NurbsSurfaceInterpolator", "vKnot", D357),
     ("NurbsSurfaceInterpolator", "vOrder", D188),
     ("NurbsSurfaceInterpolator", "weight", D521),
-    ("NurbsSweptSurface", "ccw", D1011),
-    ("NurbsSweptSurface", "crossSectionCurve", D1058),
+    ("NurbsSweptSurface", "ccw", D1008),
+    ("NurbsSweptSurface", "crossSectionCurve", D1055),
     ("NurbsSweptSurface", "metadata", D322),
     ("NurbsSweptSurface", "solid", D630),
-    ("NurbsSweptSurface", "trajectoryCurve", D1063),
-    ("NurbsSwungSurface", "ccw", D1011),
+    ("NurbsSweptSurface", "trajectoryCurve", D1060),
+    ("NurbsSwungSurface", "ccw", D1008),
     ("NurbsSwungSurface", "metadata", D322),
     ("NurbsSwungSurface", "profileCurve", D27),
     ("NurbsSwungSurface", "solid", D630),
     ("NurbsSwungSurface", "trajectoryCurve", D26),
-    ("NurbsTextureCoordinate", "controlPoint", D1041),
+    ("NurbsTextureCoordinate", "controlPoint", D1038),
     ("NurbsTextureCoordinate", "metadata", D322),
     ("NurbsTextureCoordinate", "uDimension", D441),
     ("NurbsTextureCoordinate", "uKnot", D357),
@@ -3256,163 +3253,161 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("NurbsTrimmedSurface", "solid", D630),
     ("NurbsTrimmedSurface", "texCoord", D477),
     ("NurbsTrimmedSurface", "trimmingContour", D32),
-    ("NurbsTrimmedSurface", "uClosed", D902),
+    ("NurbsTrimmedSurface", "uClosed", D899),
     ("NurbsTrimmedSurface", "uDimension", D441),
     ("NurbsTrimmedSurface", "uKnot", D357),
     ("NurbsTrimmedSurface", "uOrder", D188),
-    ("NurbsTrimmedSurface", "uTessellation", D1126),
-    ("NurbsTrimmedSurface", "vClosed", D902),
+    ("NurbsTrimmedSurface", "uTessellation", D1123),
+    ("NurbsTrimmedSurface", "vClosed", D899),
     ("NurbsTrimmedSurface", "vDimension", D442),
     ("NurbsTrimmedSurface", "vKnot", D357),
     ("NurbsTrimmedSurface", "vOrder", D188),
-    ("NurbsTrimmedSurface", "vTessellation", D1126),
-    ("NurbsTrimmedSurface", "weight", D849),
+    ("NurbsTrimmedSurface", "vTessellation", D1123),
+    ("NurbsTrimmedSurface", "weight", D846),
     ("OpacityMapVolumeStyle", "enabled", D219),
     ("OpacityMapVolumeStyle", "metadata", D322),
-    ("OpacityMapVolumeStyle", "transferFunction", D784),
-    ("OrientationChaser", "duration", D1081),
+    ("OpacityMapVolumeStyle", "transferFunction", D781),
+    ("OrientationChaser", "duration", D1078),
     ("OrientationChaser", "initialDestination", D324),
     ("OrientationChaser", "initialValue", D328),
-    ("OrientationChaser", "isActive", D1156),
+    ("OrientationChaser", "isActive", D1153),
     ("OrientationChaser", "metadata", D322),
-    ("OrientationChaser", "set_destination", D1308),
-    ("OrientationChaser", "set_value", D1314),
+    ("OrientationChaser", "set_destination", D1305),
+    ("OrientationChaser", "set_value", D1311),
     ("OrientationChaser", "value_changed", D142),
     ("OrientationDamper", "initialDestination", D324),
     ("OrientationDamper", "initialValue", D328),
-    ("OrientationDamper", "isActive", D1156),
+    ("OrientationDamper", "isActive", D1153),
     ("OrientationDamper", "metadata", D322),
-    ("OrientationDamper", "order", D1242),
-    ("OrientationDamper", "set_destination", D1308),
-    ("OrientationDamper", "set_value", D1314),
-    ("OrientationDamper", "tau", D1362),
-    ("OrientationDamper", "tolerance", D1241),
+    ("OrientationDamper", "order", D1239),
+    ("OrientationDamper", "set_destination", D1305),
+    ("OrientationDamper", "set_value", D1311),
+    ("OrientationDamper", "tau", D1359),
+    ("OrientationDamper", "tolerance", D1238),
     ("OrientationDamper", "value_changed", D142),
     ("OrientationInterpolator", "key", D194),
     ("OrientationInterpolator", "keyValue", D520),
     ("OrientationInterpolator", "metadata", D322),
-    ("OrientationInterpolator", "set_fraction", D1310),
+    ("OrientationInterpolator", "set_fraction", D1307),
     ("OrientationInterpolator", "value_changed", D376),
     ("OrthoViewpoint", "bindTime", D228),
-    ("OrthoViewpoint", "centerOfRotation", D1016),
-    ("OrthoViewpoint", "description", D685),
-    ("OrthoViewpoint", "farDistance", D1095),
+    ("OrthoViewpoint", "centerOfRotation", D1013),
+    ("OrthoViewpoint", "description", D682),
+    ("OrthoViewpoint", "farDistance", D1092),
     ("OrthoViewpoint", "fieldOfView", D409),
     ("OrthoViewpoint", "isBound", D518),
-    ("OrthoViewpoint", "jump", D817),
+    ("OrthoViewpoint", "jump", D814),
     ("OrthoViewpoint", "metadata", D322),
-    ("OrthoViewpoint", "navigationInfo", D762),
-    ("OrthoViewpoint", "nearDistance", D1223),
+    ("OrthoViewpoint", "navigationInfo", D759),
+    ("OrthoViewpoint", "nearDistance", D1220),
     ("OrthoViewpoint", "orientation", D600),
-    ("OrthoViewpoint", "position", D1265),
+    ("OrthoViewpoint", "position", D1262),
     ("OrthoViewpoint", "retainUserOffsets", D590),
     ("OrthoViewpoint", "set_bind", D618),
-    ("OrthoViewpoint", "viewAll", D855),
+    ("OrthoViewpoint", "viewAll", D852),
     ("OscillatorSource", "description", D81),
-    ("OscillatorSource", "detune", D734),
+    ("OscillatorSource", "detune", D731),
     ("OscillatorSource", "elapsedTime", D171),
     ("OscillatorSource", "enabled", D219),
-    ("OscillatorSource", "frequency", D738),
-    ("OscillatorSource", "gain", D739),
-    ("OscillatorSource", "isActive", D1157),
-    ("OscillatorSource", "isPaused", D1161),
+    ("OscillatorSource", "frequency", D735),
+    ("OscillatorSource", "gain", D736),
+    ("OscillatorSource", "isActive", D1154),
+    ("OscillatorSource", "isPaused", D1158),
     ("OscillatorSource", "metadata", D322),
-    ("OscillatorSource", "pauseTime", D883),
-    ("OscillatorSource", "periodicWave", D771),
-    ("OscillatorSource", "resumeTime", D879),
+    ("OscillatorSource", "pauseTime", D880),
+    ("OscillatorSource", "periodicWave", D768),
+    ("OscillatorSource", "resumeTime", D876),
     ("OscillatorSource", "startTime", D33),
     ("OscillatorSource", "stopTime", D33),
-    ("PackagedShader", "activate", D958),
-    ("PackagedShader", "autoRefresh", D975),
-    ("PackagedShader", "autoRefreshTimeLimit", D976),
+    ("PackagedShader", "activate", D955),
+    ("PackagedShader", "autoRefresh", D972),
+    ("PackagedShader", "autoRefreshTimeLimit", D973),
     ("PackagedShader", "description", D81),
     ("PackagedShader", "field", D309),
-    ("PackagedShader", "isSelected", D1164),
-    ("PackagedShader", "isValid", D1165),
-    ("PackagedShader", "language", D749),
-    ("PackagedShader", "load", D1180),
+    ("PackagedShader", "isSelected", D1161),
+    ("PackagedShader", "isValid", D1162),
+    ("PackagedShader", "language", D746),
+    ("PackagedShader", "load", D1177),
     ("PackagedShader", "metadata", D322),
-    ("PackagedShader", "url", D1393),
-    ("ParticleSystem", "appearance", D710),
+    ("PackagedShader", "url", D1390),
+    ("ParticleSystem", "appearance", D707),
     ("ParticleSystem", "bboxCenter", D97),
-    ("ParticleSystem", "bboxDisplay", D914),
+    ("ParticleSystem", "bboxDisplay", D911),
     ("ParticleSystem", "bboxSize", D98),
-    ("ParticleSystem", "castShadow", D715),
-    ("ParticleSystem", "color", D725),
+    ("ParticleSystem", "castShadow", D712),
+    ("ParticleSystem", "color", D722),
     ("ParticleSystem", "colorKey", D75),
     ("ParticleSystem", "createParticles", D218),
-    ("ParticleSystem", "emitter", D735),
+    ("ParticleSystem", "emitter", D732),
     ("ParticleSystem", "enabled", D219),
     ("ParticleSystem", "geometry", D490),
-    ("ParticleSystem", "geometryType", D1340),
-    ("ParticleSystem", "isActive", D1157),
-    ("ParticleSystem", "lifetimeVariation", D678),
+    ("ParticleSystem", "geometryType", D1337),
+    ("ParticleSystem", "isActive", D1154),
     ("ParticleSystem", "maxParticles", D401),
     ("ParticleSystem", "metadata", D322),
-    ("ParticleSystem", "particleLifetime", D678),
-    ("ParticleSystem", "particleSize", D1253),
+    ("ParticleSystem", "particleSize", D1250),
     ("ParticleSystem", "physics", D41),
-    ("ParticleSystem", "texCoord", D1363),
+    ("ParticleSystem", "texCoord", D1360),
     ("ParticleSystem", "texCoordKey", D76),
-    ("ParticleSystem", "visible", D906),
+    ("ParticleSystem", "visible", D903),
     ("PeriodicWave", "description", D81),
     ("PeriodicWave", "enabled", D219),
     ("PeriodicWave", "metadata", D322),
-    ("PeriodicWave", "optionsImag", D1136),
-    ("PeriodicWave", "optionsReal", D1276),
-    ("PeriodicWave", "type", D786),
-    ("PhysicalMaterial", "baseColor", D1321),
-    ("PhysicalMaterial", "baseTexture", D867),
-    ("PhysicalMaterial", "baseTextureMapping", D753),
-    ("PhysicalMaterial", "emissiveColor", D1131),
-    ("PhysicalMaterial", "emissiveTexture", D869),
-    ("PhysicalMaterial", "emissiveTextureMapping", D753),
+    ("PeriodicWave", "optionsImag", D1133),
+    ("PeriodicWave", "optionsReal", D1273),
+    ("PeriodicWave", "type", D783),
+    ("PhysicalMaterial", "baseColor", D1318),
+    ("PhysicalMaterial", "baseTexture", D864),
+    ("PhysicalMaterial", "baseTextureMapping", D750),
+    ("PhysicalMaterial", "emissiveColor", D1128),
+    ("PhysicalMaterial", "emissiveTexture", D866),
+    ("PhysicalMaterial", "emissiveTextureMapping", D750),
     ("PhysicalMaterial", "metadata", D322),
-    ("PhysicalMaterial", "metallic", D1197),
-    ("PhysicalMaterial", "metallicRoughnessTexture", D870),
-    ("PhysicalMaterial", "metallicRoughnessTextureMapping", D753),
-    ("PhysicalMaterial", "normalScale", D1229),
-    ("PhysicalMaterial", "normalTexture", D871),
-    ("PhysicalMaterial", "normalTextureMapping", D753),
-    ("PhysicalMaterial", "occlusionStrength", D1237),
-    ("PhysicalMaterial", "occlusionTexture", D872),
-    ("PhysicalMaterial", "occlusionTextureMapping", D753),
-    ("PhysicalMaterial", "roughness", D1292),
-    ("PhysicalMaterial", "transparency", D1127),
+    ("PhysicalMaterial", "metallic", D1194),
+    ("PhysicalMaterial", "metallicRoughnessTexture", D867),
+    ("PhysicalMaterial", "metallicRoughnessTextureMapping", D750),
+    ("PhysicalMaterial", "normalScale", D1226),
+    ("PhysicalMaterial", "normalTexture", D868),
+    ("PhysicalMaterial", "normalTextureMapping", D750),
+    ("PhysicalMaterial", "occlusionStrength", D1234),
+    ("PhysicalMaterial", "occlusionTexture", D869),
+    ("PhysicalMaterial", "occlusionTextureMapping", D750),
+    ("PhysicalMaterial", "roughness", D1289),
+    ("PhysicalMaterial", "transparency", D1124),
     ("PickableGroup", "bboxCenter", D97),
-    ("PickableGroup", "bboxDisplay", D914),
+    ("PickableGroup", "bboxDisplay", D911),
     ("PickableGroup", "bboxSize", D98),
     ("PickableGroup", "children", D270),
     ("PickableGroup", "description", D80),
     ("PickableGroup", "metadata", D322),
-    ("PickableGroup", "objectType", D763),
-    ("PickableGroup", "pickable", D772),
-    ("PickableGroup", "visible", D906),
+    ("PickableGroup", "objectType", D760),
+    ("PickableGroup", "pickable", D769),
+    ("PickableGroup", "visible", D903),
     ("PixelTexture", "description", D81),
     ("PixelTexture", "image", D190),
     ("PixelTexture", "metadata", D322),
-    ("PixelTexture", "repeatS", D922),
-    ("PixelTexture", "repeatT", D923),
+    ("PixelTexture", "repeatS", D919),
+    ("PixelTexture", "repeatT", D920),
     ("PixelTexture", "textureProperties", D481),
     ("PixelTexture3D", "description", D81),
-    ("PixelTexture3D", "image", D1134),
+    ("PixelTexture3D", "image", D1131),
     ("PixelTexture3D", "metadata", D322),
-    ("PixelTexture3D", "repeatR", D921),
-    ("PixelTexture3D", "repeatS", D922),
-    ("PixelTexture3D", "repeatT", D923),
+    ("PixelTexture3D", "repeatR", D918),
+    ("PixelTexture3D", "repeatS", D919),
+    ("PixelTexture3D", "repeatT", D920),
     ("PixelTexture3D", "textureProperties", D481),
     ("PlaneSensor", "autoOffset", D199),
-    ("PlaneSensor", "axisRotation", D989),
+    ("PlaneSensor", "axisRotation", D986),
     ("PlaneSensor", "description", D82),
     ("PlaneSensor", "enabled", D219),
     ("PlaneSensor", "isActive", D612),
     ("PlaneSensor", "isOver", D286),
-    ("PlaneSensor", "maxPosition", D1202),
+    ("PlaneSensor", "maxPosition", D1199),
     ("PlaneSensor", "metadata", D322),
-    ("PlaneSensor", "minPosition", D1202),
+    ("PlaneSensor", "minPosition", D1199),
     ("PlaneSensor", "offset", D621),
-    ("PlaneSensor", "trackPoint_changed", D1377),
-    ("PlaneSensor", "translation_changed", D1380),
+    ("PlaneSensor", "trackPoint_changed", D1374),
+    ("PlaneSensor", "translation_changed", D1377),
     ("PointEmitter", "direction", D325),
     ("PointEmitter", "mass", D86),
     ("PointEmitter", "metadata", D322),
@@ -3423,31 +3418,31 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("PointEmitter", "variation", D420),
     ("PointLight", "ambientIntensity", D100),
     ("PointLight", "attenuation", D148),
-    ("PointLight", "color", D1027),
+    ("PointLight", "color", D1024),
     ("PointLight", "global", D266),
     ("PointLight", "intensity", D101),
     ("PointLight", "location", D552),
     ("PointLight", "metadata", D322),
     ("PointLight", "on", D222),
     ("PointLight", "radius", D400),
-    ("PointLight", "shadowIntensity", D1317),
-    ("PointLight", "shadows", D1318),
+    ("PointLight", "shadowIntensity", D1314),
+    ("PointLight", "shadows", D1315),
     ("PointPickSensor", "description", D80),
     ("PointPickSensor", "enabled", D219),
-    ("PointPickSensor", "intersectionType", D1152),
-    ("PointPickSensor", "isActive", D1153),
-    ("PointPickSensor", "matchCriterion", D1059),
+    ("PointPickSensor", "intersectionType", D1149),
+    ("PointPickSensor", "isActive", D1150),
+    ("PointPickSensor", "matchCriterion", D1056),
     ("PointPickSensor", "metadata", D322),
-    ("PointPickSensor", "objectType", D763),
-    ("PointPickSensor", "pickTarget", D1254),
+    ("PointPickSensor", "objectType", D760),
+    ("PointPickSensor", "pickTarget", D1251),
     ("PointPickSensor", "pickedGeometry", D515),
     ("PointPickSensor", "pickedPoint", D510),
-    ("PointPickSensor", "pickingGeometry", D1256),
-    ("PointPickSensor", "sortOrder", D779),
-    ("PointProperties", "attenuation", D971),
+    ("PointPickSensor", "pickingGeometry", D1253),
+    ("PointPickSensor", "sortOrder", D776),
+    ("PointProperties", "attenuation", D968),
     ("PointProperties", "metadata", D322),
-    ("PointProperties", "pointSizeMaxValue", D1262),
-    ("PointProperties", "pointSizeMinValue", D1263),
+    ("PointProperties", "pointSizeMaxValue", D1259),
+    ("PointProperties", "pointSizeMinValue", D1260),
     ("PointProperties", "pointSizeScaleFactor", D431),
     ("PointSet", "attrib", D469),
     ("PointSet", "color", D464),
@@ -3458,7 +3453,7 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("Polyline2D", "lineSegments", D169),
     ("Polyline2D", "metadata", D322),
     ("PolylineEmitter", "coord", D168),
-    ("PolylineEmitter", "coordIndex", D1044),
+    ("PolylineEmitter", "coordIndex", D1041),
     ("PolylineEmitter", "direction", D325),
     ("PolylineEmitter", "mass", D86),
     ("PolylineEmitter", "metadata", D322),
@@ -3468,356 +3463,356 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("PolylineEmitter", "variation", D420),
     ("Polypoint2D", "metadata", D322),
     ("Polypoint2D", "point", D25),
-    ("PositionChaser", "duration", D1081),
+    ("PositionChaser", "duration", D1078),
     ("PositionChaser", "initialDestination", D324),
     ("PositionChaser", "initialValue", D328),
-    ("PositionChaser", "isActive", D1156),
+    ("PositionChaser", "isActive", D1153),
     ("PositionChaser", "metadata", D322),
-    ("PositionChaser", "set_destination", D1308),
-    ("PositionChaser", "set_value", D1314),
+    ("PositionChaser", "set_destination", D1305),
+    ("PositionChaser", "set_value", D1311),
     ("PositionChaser", "value_changed", D142),
-    ("PositionChaser2D", "duration", D1081),
+    ("PositionChaser2D", "duration", D1078),
     ("PositionChaser2D", "initialDestination", D324),
     ("PositionChaser2D", "initialValue", D328),
-    ("PositionChaser2D", "isActive", D1156),
+    ("PositionChaser2D", "isActive", D1153),
     ("PositionChaser2D", "metadata", D322),
-    ("PositionChaser2D", "set_destination", D1308),
-    ("PositionChaser2D", "set_value", D1314),
+    ("PositionChaser2D", "set_destination", D1305),
+    ("PositionChaser2D", "set_value", D1311),
     ("PositionChaser2D", "value_changed", D142),
     ("PositionDamper", "initialDestination", D324),
     ("PositionDamper", "initialValue", D328),
-    ("PositionDamper", "isActive", D1156),
+    ("PositionDamper", "isActive", D1153),
     ("PositionDamper", "metadata", D322),
-    ("PositionDamper", "order", D1242),
-    ("PositionDamper", "set_destination", D1308),
-    ("PositionDamper", "set_value", D1314),
-    ("PositionDamper", "tau", D1362),
-    ("PositionDamper", "tolerance", D1241),
+    ("PositionDamper", "order", D1239),
+    ("PositionDamper", "set_destination", D1305),
+    ("PositionDamper", "set_value", D1311),
+    ("PositionDamper", "tau", D1359),
+    ("PositionDamper", "tolerance", D1238),
     ("PositionDamper", "value_changed", D142),
     ("PositionDamper2D", "initialDestination", D324),
     ("PositionDamper2D", "initialValue", D328),
-    ("PositionDamper2D", "isActive", D1156),
+    ("PositionDamper2D", "isActive", D1153),
     ("PositionDamper2D", "metadata", D322),
-    ("PositionDamper2D", "order", D1242),
-    ("PositionDamper2D", "set_destination", D1308),
-    ("PositionDamper2D", "set_value", D1314),
-    ("PositionDamper2D", "tau", D1362),
-    ("PositionDamper2D", "tolerance", D1241),
+    ("PositionDamper2D", "order", D1239),
+    ("PositionDamper2D", "set_destination", D1305),
+    ("PositionDamper2D", "set_value", D1311),
+    ("PositionDamper2D", "tau", D1359),
+    ("PositionDamper2D", "tolerance", D1238),
     ("PositionDamper2D", "value_changed", D142),
     ("PositionInterpolator", "key", D194),
     ("PositionInterpolator", "keyValue", D520),
     ("PositionInterpolator", "metadata", D322),
-    ("PositionInterpolator", "set_fraction", D1310),
+    ("PositionInterpolator", "set_fraction", D1307),
     ("PositionInterpolator", "value_changed", D376),
     ("PositionInterpolator2D", "key", D194),
     ("PositionInterpolator2D", "keyValue", D520),
     ("PositionInterpolator2D", "metadata", D322),
-    ("PositionInterpolator2D", "set_fraction", D1310),
+    ("PositionInterpolator2D", "set_fraction", D1307),
     ("PositionInterpolator2D", "value_changed", D376),
     ("PrimitivePickSensor", "description", D80),
     ("PrimitivePickSensor", "enabled", D219),
-    ("PrimitivePickSensor", "intersectionType", D1152),
-    ("PrimitivePickSensor", "isActive", D1153),
-    ("PrimitivePickSensor", "matchCriterion", D1059),
+    ("PrimitivePickSensor", "intersectionType", D1149),
+    ("PrimitivePickSensor", "isActive", D1150),
+    ("PrimitivePickSensor", "matchCriterion", D1056),
     ("PrimitivePickSensor", "metadata", D322),
-    ("PrimitivePickSensor", "objectType", D763),
-    ("PrimitivePickSensor", "pickTarget", D1254),
+    ("PrimitivePickSensor", "objectType", D760),
+    ("PrimitivePickSensor", "pickTarget", D1251),
     ("PrimitivePickSensor", "pickedGeometry", D515),
-    ("PrimitivePickSensor", "pickingGeometry", D1256),
-    ("PrimitivePickSensor", "sortOrder", D779),
-    ("ProgramShader", "activate", D958),
-    ("ProgramShader", "isSelected", D1164),
-    ("ProgramShader", "isValid", D1165),
-    ("ProgramShader", "language", D749),
+    ("PrimitivePickSensor", "pickingGeometry", D1253),
+    ("PrimitivePickSensor", "sortOrder", D776),
+    ("ProgramShader", "activate", D955),
+    ("ProgramShader", "isSelected", D1161),
+    ("ProgramShader", "isValid", D1162),
+    ("ProgramShader", "language", D746),
     ("ProgramShader", "metadata", D322),
     ("ProgramShader", "programs", D569),
     ("ProjectionVolumeStyle", "enabled", D219),
-    ("ProjectionVolumeStyle", "intensityThreshold", D797),
+    ("ProjectionVolumeStyle", "intensityThreshold", D794),
     ("ProjectionVolumeStyle", "metadata", D322),
     ("ProjectionVolumeStyle", "type", D302),
     ("ProtoInstance", "fieldValue", D312),
-    ("ProtoInstance", "name", D1221),
+    ("ProtoInstance", "name", D1218),
     ("ProximitySensor", "center", D554),
     ("ProximitySensor", "centerOfRotation_changed", D620),
     ("ProximitySensor", "description", D80),
     ("ProximitySensor", "enabled", D219),
-    ("ProximitySensor", "enterTime", D803),
-    ("ProximitySensor", "exitTime", D805),
-    ("ProximitySensor", "isActive", D1154),
+    ("ProximitySensor", "enterTime", D800),
+    ("ProximitySensor", "exitTime", D802),
+    ("ProximitySensor", "isActive", D1151),
     ("ProximitySensor", "metadata", D322),
     ("ProximitySensor", "orientation_changed", D624),
     ("ProximitySensor", "position_changed", D626),
-    ("ProximitySensor", "size", D1325),
+    ("ProximitySensor", "size", D1322),
     ("QuadSet", "attrib", D469),
-    ("QuadSet", "ccw", D1011),
+    ("QuadSet", "ccw", D1008),
     ("QuadSet", "color", D464),
-    ("QuadSet", "colorPerVertex", D891),
+    ("QuadSet", "colorPerVertex", D888),
     ("QuadSet", "coord", D466),
     ("QuadSet", "fogCoord", D470),
     ("QuadSet", "metadata", D322),
     ("QuadSet", "normal", D475),
-    ("QuadSet", "normalPerVertex", D893),
+    ("QuadSet", "normalPerVertex", D890),
     ("QuadSet", "solid", D630),
     ("QuadSet", "tangent", D479),
     ("QuadSet", "texCoord", D480),
     ("ReceiverPdu", "address", D417),
     ("ReceiverPdu", "applicationID", D211),
     ("ReceiverPdu", "bboxCenter", D97),
-    ("ReceiverPdu", "bboxDisplay", D914),
+    ("ReceiverPdu", "bboxDisplay", D911),
     ("ReceiverPdu", "bboxSize", D98),
     ("ReceiverPdu", "description", D80),
     ("ReceiverPdu", "enabled", D221),
     ("ReceiverPdu", "entityID", D225),
     ("ReceiverPdu", "geoCoords", D262),
     ("ReceiverPdu", "geoSystem", D290),
-    ("ReceiverPdu", "isActive", D1035),
-    ("ReceiverPdu", "isNetworkReader", D900),
-    ("ReceiverPdu", "isNetworkWriter", D899),
-    ("ReceiverPdu", "isRtpHeaderHeard", D897),
-    ("ReceiverPdu", "isStandAlone", D898),
+    ("ReceiverPdu", "isActive", D1032),
+    ("ReceiverPdu", "isNetworkReader", D897),
+    ("ReceiverPdu", "isNetworkWriter", D896),
+    ("ReceiverPdu", "isRtpHeaderHeard", D894),
+    ("ReceiverPdu", "isStandAlone", D895),
     ("ReceiverPdu", "metadata", D322),
     ("ReceiverPdu", "multicastRelayHost", D238),
     ("ReceiverPdu", "multicastRelayPort", D239),
-    ("ReceiverPdu", "networkMode", D913),
+    ("ReceiverPdu", "networkMode", D910),
     ("ReceiverPdu", "port", D418),
     ("ReceiverPdu", "radioID", D288),
     ("ReceiverPdu", "readInterval", D609),
-    ("ReceiverPdu", "receivedPower", D1277),
-    ("ReceiverPdu", "receiverState", D1278),
-    ("ReceiverPdu", "rtpHeaderExpected", D894),
+    ("ReceiverPdu", "receivedPower", D1274),
+    ("ReceiverPdu", "receiverState", D1275),
+    ("ReceiverPdu", "rtpHeaderExpected", D891),
     ("ReceiverPdu", "siteID", D640),
     ("ReceiverPdu", "timestamp", D177),
     ("ReceiverPdu", "transmitterApplicationID", D641),
     ("ReceiverPdu", "transmitterEntityID", D642),
     ("ReceiverPdu", "transmitterRadioID", D288),
     ("ReceiverPdu", "transmitterSiteID", D643),
-    ("ReceiverPdu", "visible", D906),
+    ("ReceiverPdu", "visible", D903),
     ("ReceiverPdu", "whichGeometry", D613),
     ("ReceiverPdu", "writeInterval", D610),
     ("Rectangle2D", "metadata", D322),
     ("Rectangle2D", "size", D28),
     ("Rectangle2D", "solid", D630),
-    ("RenderedTexture", "colorDepth", D1235),
-    ("RenderedTexture", "depthMap", D1142),
+    ("RenderedTexture", "colorDepth", D1232),
+    ("RenderedTexture", "depthMap", D1139),
     ("RenderedTexture", "description", D81),
-    ("RenderedTexture", "height", D1135),
-    ("RenderedTexture", "isActive", D1270),
-    ("RenderedTexture", "maxNumberFrames", D1143),
+    ("RenderedTexture", "height", D1132),
+    ("RenderedTexture", "isActive", D1267),
+    ("RenderedTexture", "maxNumberFrames", D1140),
     ("RenderedTexture", "metadata", D322),
-    ("RenderedTexture", "repeatS", D922),
-    ("RenderedTexture", "repeatT", D923),
-    ("RenderedTexture", "replaceImage", D901),
-    ("RenderedTexture", "singleFrame", D1132),
+    ("RenderedTexture", "repeatS", D919),
+    ("RenderedTexture", "repeatT", D920),
+    ("RenderedTexture", "replaceImage", D898),
+    ("RenderedTexture", "singleFrame", D1129),
     ("RenderedTexture", "textureProperties", D481),
-    ("RenderedTexture", "updateInterval", D1144),
-    ("RenderedTexture", "url", D787),
-    ("RenderedTexture", "width", D1135),
-    ("RigidBody", "angularDampingFactor", D965),
-    ("RigidBody", "angularVelocity", D966),
-    ("RigidBody", "autoDamp", D973),
-    ("RigidBody", "autoDisable", D974),
+    ("RenderedTexture", "updateInterval", D1141),
+    ("RenderedTexture", "url", D784),
+    ("RenderedTexture", "width", D1132),
+    ("RigidBody", "angularDampingFactor", D962),
+    ("RigidBody", "angularVelocity", D963),
+    ("RigidBody", "autoDamp", D970),
+    ("RigidBody", "autoDisable", D971),
     ("RigidBody", "bboxCenter", D97),
-    ("RigidBody", "bboxDisplay", D914),
+    ("RigidBody", "bboxDisplay", D911),
     ("RigidBody", "bboxSize", D98),
-    ("RigidBody", "centerOfMass", D1015),
-    ("RigidBody", "disableAngularSpeed", D1073),
-    ("RigidBody", "disableLinearSpeed", D1074),
-    ("RigidBody", "disableTime", D1075),
+    ("RigidBody", "centerOfMass", D1012),
+    ("RigidBody", "disableAngularSpeed", D1070),
+    ("RigidBody", "disableLinearSpeed", D1071),
+    ("RigidBody", "disableTime", D1072),
     ("RigidBody", "enabled", D219),
-    ("RigidBody", "finiteRotationAxis", D1099),
-    ("RigidBody", "fixed", D1100),
-    ("RigidBody", "forces", D1104),
-    ("RigidBody", "geometry", D741),
-    ("RigidBody", "inertia", D1146),
-    ("RigidBody", "linearDampingFactor", D1174),
-    ("RigidBody", "linearVelocity", D1175),
-    ("RigidBody", "mass", D1185),
-    ("RigidBody", "massDensityModel", D754),
+    ("RigidBody", "finiteRotationAxis", D1096),
+    ("RigidBody", "fixed", D1097),
+    ("RigidBody", "forces", D1101),
+    ("RigidBody", "geometry", D738),
+    ("RigidBody", "inertia", D1143),
+    ("RigidBody", "linearDampingFactor", D1171),
+    ("RigidBody", "linearVelocity", D1172),
+    ("RigidBody", "mass", D1182),
+    ("RigidBody", "massDensityModel", D751),
     ("RigidBody", "metadata", D322),
-    ("RigidBody", "orientation", D1243),
-    ("RigidBody", "position", D1267),
-    ("RigidBody", "torques", D1376),
-    ("RigidBody", "useFiniteRotation", D1394),
-    ("RigidBody", "useGlobalGravity", D1396),
-    ("RigidBody", "visible", D906),
-    ("RigidBodyCollection", "autoDisable", D974),
+    ("RigidBody", "orientation", D1240),
+    ("RigidBody", "position", D1264),
+    ("RigidBody", "torques", D1373),
+    ("RigidBody", "useFiniteRotation", D1391),
+    ("RigidBody", "useGlobalGravity", D1393),
+    ("RigidBody", "visible", D903),
+    ("RigidBodyCollection", "autoDisable", D971),
     ("RigidBodyCollection", "bboxCenter", D97),
-    ("RigidBodyCollection", "bboxDisplay", D914),
+    ("RigidBodyCollection", "bboxDisplay", D911),
     ("RigidBodyCollection", "bboxSize", D98),
     ("RigidBodyCollection", "bodies", D119),
-    ("RigidBodyCollection", "collider", D723),
-    ("RigidBodyCollection", "constantForceMix", D1037),
-    ("RigidBodyCollection", "contactSurfaceThickness", D1039),
-    ("RigidBodyCollection", "disableAngularSpeed", D1073),
-    ("RigidBodyCollection", "disableLinearSpeed", D1074),
-    ("RigidBodyCollection", "disableTime", D1075),
+    ("RigidBodyCollection", "collider", D720),
+    ("RigidBodyCollection", "constantForceMix", D1034),
+    ("RigidBodyCollection", "contactSurfaceThickness", D1036),
+    ("RigidBodyCollection", "disableAngularSpeed", D1070),
+    ("RigidBodyCollection", "disableLinearSpeed", D1071),
+    ("RigidBodyCollection", "disableTime", D1072),
     ("RigidBodyCollection", "enabled", D219),
-    ("RigidBodyCollection", "errorCorrection", D1087),
-    ("RigidBodyCollection", "gravity", D1121),
-    ("RigidBodyCollection", "iterations", D1167),
-    ("RigidBodyCollection", "joints", D747),
-    ("RigidBodyCollection", "maxCorrectionSpeed", D1240),
+    ("RigidBodyCollection", "errorCorrection", D1084),
+    ("RigidBodyCollection", "gravity", D1118),
+    ("RigidBodyCollection", "iterations", D1164),
+    ("RigidBodyCollection", "joints", D744),
+    ("RigidBodyCollection", "maxCorrectionSpeed", D1237),
     ("RigidBodyCollection", "metadata", D322),
-    ("RigidBodyCollection", "preferAccuracy", D1269),
-    ("RigidBodyCollection", "set_contacts", D1307),
-    ("RigidBodyCollection", "visible", D906),
-    ("ScalarChaser", "duration", D1081),
+    ("RigidBodyCollection", "preferAccuracy", D1266),
+    ("RigidBodyCollection", "set_contacts", D1304),
+    ("RigidBodyCollection", "visible", D903),
+    ("ScalarChaser", "duration", D1078),
     ("ScalarChaser", "initialDestination", D324),
     ("ScalarChaser", "initialValue", D328),
-    ("ScalarChaser", "isActive", D1156),
+    ("ScalarChaser", "isActive", D1153),
     ("ScalarChaser", "metadata", D322),
-    ("ScalarChaser", "set_destination", D1308),
-    ("ScalarChaser", "set_value", D1314),
+    ("ScalarChaser", "set_destination", D1305),
+    ("ScalarChaser", "set_value", D1311),
     ("ScalarChaser", "value_changed", D142),
     ("ScalarDamper", "initialDestination", D324),
     ("ScalarDamper", "initialValue", D328),
-    ("ScalarDamper", "isActive", D1156),
+    ("ScalarDamper", "isActive", D1153),
     ("ScalarDamper", "metadata", D322),
-    ("ScalarDamper", "order", D1242),
-    ("ScalarDamper", "set_destination", D1308),
-    ("ScalarDamper", "set_value", D1314),
-    ("ScalarDamper", "tau", D1362),
-    ("ScalarDamper", "tolerance", D1241),
+    ("ScalarDamper", "order", D1239),
+    ("ScalarDamper", "set_destination", D1305),
+    ("ScalarDamper", "set_value", D1311),
+    ("ScalarDamper", "tau", D1359),
+    ("ScalarDamper", "tolerance", D1238),
     ("ScalarDamper", "value_changed", D142),
     ("ScalarInterpolator", "key", D194),
     ("ScalarInterpolator", "keyValue", D520),
     ("ScalarInterpolator", "metadata", D322),
-    ("ScalarInterpolator", "set_fraction", D1310),
+    ("ScalarInterpolator", "set_fraction", D1307),
     ("ScalarInterpolator", "value_changed", D376),
     ("ScreenFontStyle", "family", D74),
-    ("ScreenFontStyle", "horizontal", D910),
-    ("ScreenFontStyle", "justify", D748),
+    ("ScreenFontStyle", "horizontal", D907),
+    ("ScreenFontStyle", "justify", D745),
     ("ScreenFontStyle", "language", D359),
-    ("ScreenFontStyle", "leftToRight", D911),
+    ("ScreenFontStyle", "leftToRight", D908),
     ("ScreenFontStyle", "metadata", D322),
-    ("ScreenFontStyle", "pointSize", D1261),
+    ("ScreenFontStyle", "pointSize", D1258),
     ("ScreenFontStyle", "spacing", D40),
     ("ScreenFontStyle", "style", D534),
-    ("ScreenFontStyle", "topToBottom", D912),
+    ("ScreenFontStyle", "topToBottom", D909),
     ("ScreenGroup", "bboxCenter", D97),
-    ("ScreenGroup", "bboxDisplay", D914),
+    ("ScreenGroup", "bboxDisplay", D911),
     ("ScreenGroup", "bboxSize", D98),
     ("ScreenGroup", "children", D270),
     ("ScreenGroup", "metadata", D322),
-    ("ScreenGroup", "visible", D906),
-    ("Script", "autoRefresh", D975),
-    ("Script", "autoRefreshTimeLimit", D976),
+    ("ScreenGroup", "visible", D903),
+    ("Script", "autoRefresh", D972),
+    ("Script", "autoRefreshTimeLimit", D973),
     ("Script", "description", D81),
     ("Script", "directOutput", D628),
     ("Script", "field", D311),
-    ("Script", "load", D1180),
+    ("Script", "load", D1177),
     ("Script", "metadata", D322),
     ("Script", "mustEvaluate", D298),
     ("Script", "sourceCode", D215),
     ("Script", "url", D378),
     ("SegmentedVolumeData", "bboxCenter", D97),
-    ("SegmentedVolumeData", "bboxDisplay", D914),
+    ("SegmentedVolumeData", "bboxDisplay", D911),
     ("SegmentedVolumeData", "bboxSize", D98),
     ("SegmentedVolumeData", "dimensions", D36),
     ("SegmentedVolumeData", "metadata", D322),
     ("SegmentedVolumeData", "renderStyle", D419),
     ("SegmentedVolumeData", "segmentEnabled", D69),
     ("SegmentedVolumeData", "segmentIdentifiers", D484),
-    ("SegmentedVolumeData", "visible", D906),
+    ("SegmentedVolumeData", "visible", D903),
     ("SegmentedVolumeData", "voxels", D486),
     ("ShadedVolumeStyle", "enabled", D219),
-    ("ShadedVolumeStyle", "lighting", D908),
+    ("ShadedVolumeStyle", "lighting", D905),
     ("ShadedVolumeStyle", "material", D135),
     ("ShadedVolumeStyle", "metadata", D322),
-    ("ShadedVolumeStyle", "phaseFunction", D1057),
-    ("ShadedVolumeStyle", "shadows", D909),
-    ("ShadedVolumeStyle", "surfaceNormals", D782),
-    ("ShaderPart", "autoRefresh", D975),
-    ("ShaderPart", "autoRefreshTimeLimit", D976),
+    ("ShadedVolumeStyle", "phaseFunction", D1054),
+    ("ShadedVolumeStyle", "shadows", D906),
+    ("ShadedVolumeStyle", "surfaceNormals", D779),
+    ("ShaderPart", "autoRefresh", D972),
+    ("ShaderPart", "autoRefreshTimeLimit", D973),
     ("ShaderPart", "description", D81),
-    ("ShaderPart", "load", D1180),
+    ("ShaderPart", "load", D1177),
     ("ShaderPart", "metadata", D322),
     ("ShaderPart", "sourceCode", D215),
-    ("ShaderPart", "type", D1388),
+    ("ShaderPart", "type", D1385),
     ("ShaderPart", "url", D389),
-    ("ShaderProgram", "autoRefresh", D975),
-    ("ShaderProgram", "autoRefreshTimeLimit", D976),
+    ("ShaderProgram", "autoRefresh", D972),
+    ("ShaderProgram", "autoRefreshTimeLimit", D973),
     ("ShaderProgram", "description", D81),
     ("ShaderProgram", "field", D310),
-    ("ShaderProgram", "load", D1180),
+    ("ShaderProgram", "load", D1177),
     ("ShaderProgram", "metadata", D322),
     ("ShaderProgram", "sourceCode", D215),
-    ("ShaderProgram", "type", D1388),
+    ("ShaderProgram", "type", D1385),
     ("ShaderProgram", "url", D389),
     ("Shape", "appearance", D463),
     ("Shape", "bboxCenter", D97),
-    ("Shape", "bboxDisplay", D914),
+    ("Shape", "bboxDisplay", D911),
     ("Shape", "bboxSize", D98),
-    ("Shape", "castShadow", D1010),
+    ("Shape", "castShadow", D1007),
     ("Shape", "geometry", D492),
     ("Shape", "metadata", D322),
-    ("Shape", "visible", D906),
+    ("Shape", "visible", D903),
     ("SignalPdu", "address", D416),
     ("SignalPdu", "applicationID", D211),
     ("SignalPdu", "bboxCenter", D97),
-    ("SignalPdu", "bboxDisplay", D914),
+    ("SignalPdu", "bboxDisplay", D911),
     ("SignalPdu", "bboxSize", D98),
     ("SignalPdu", "data", D283),
-    ("SignalPdu", "dataLength", D1234),
+    ("SignalPdu", "dataLength", D1231),
     ("SignalPdu", "description", D80),
     ("SignalPdu", "enabled", D221),
-    ("SignalPdu", "encodingScheme", D1064),
+    ("SignalPdu", "encodingScheme", D1061),
     ("SignalPdu", "entityID", D225),
     ("SignalPdu", "geoCoords", D262),
     ("SignalPdu", "geoSystem", D290),
-    ("SignalPdu", "isActive", D1035),
-    ("SignalPdu", "isNetworkReader", D900),
-    ("SignalPdu", "isNetworkWriter", D899),
-    ("SignalPdu", "isRtpHeaderHeard", D897),
-    ("SignalPdu", "isStandAlone", D898),
+    ("SignalPdu", "isActive", D1032),
+    ("SignalPdu", "isNetworkReader", D897),
+    ("SignalPdu", "isNetworkWriter", D896),
+    ("SignalPdu", "isRtpHeaderHeard", D894),
+    ("SignalPdu", "isStandAlone", D895),
     ("SignalPdu", "metadata", D322),
     ("SignalPdu", "multicastRelayHost", D238),
     ("SignalPdu", "multicastRelayPort", D239),
-    ("SignalPdu", "networkMode", D913),
+    ("SignalPdu", "networkMode", D910),
     ("SignalPdu", "port", D418),
     ("SignalPdu", "radioID", D288),
     ("SignalPdu", "readInterval", D609),
-    ("SignalPdu", "rtpHeaderExpected", D894),
-    ("SignalPdu", "sampleRate", D1295),
+    ("SignalPdu", "rtpHeaderExpected", D891),
+    ("SignalPdu", "sampleRate", D1292),
     ("SignalPdu", "samples", D448),
     ("SignalPdu", "siteID", D640),
-    ("SignalPdu", "tdlType", D681),
+    ("SignalPdu", "tdlType", D678),
     ("SignalPdu", "timestamp", D177),
-    ("SignalPdu", "visible", D906),
+    ("SignalPdu", "visible", D903),
     ("SignalPdu", "whichGeometry", D613),
     ("SignalPdu", "writeInterval", D610),
     ("SilhouetteEnhancementVolumeStyle", "enabled", D219),
     ("SilhouetteEnhancementVolumeStyle", "metadata", D322),
-    ("SilhouetteEnhancementVolumeStyle", "silhouetteBoundaryOpacity", D963),
-    ("SilhouetteEnhancementVolumeStyle", "silhouetteRetainedOpacity", D1298),
-    ("SilhouetteEnhancementVolumeStyle", "silhouetteSharpness", D1268),
-    ("SilhouetteEnhancementVolumeStyle", "surfaceNormals", D782),
-    ("SingleAxisHingeJoint", "anchorPoint", D964),
-    ("SingleAxisHingeJoint", "axis", D978),
-    ("SingleAxisHingeJoint", "body1", D712),
-    ("SingleAxisHingeJoint", "body1AnchorPoint", D990),
-    ("SingleAxisHingeJoint", "body2", D712),
-    ("SingleAxisHingeJoint", "body2AnchorPoint", D992),
-    ("SingleAxisHingeJoint", "forceOutput", D1103),
-    ("SingleAxisHingeJoint", "maxAngle", D1187),
+    ("SilhouetteEnhancementVolumeStyle", "silhouetteBoundaryOpacity", D960),
+    ("SilhouetteEnhancementVolumeStyle", "silhouetteRetainedOpacity", D1295),
+    ("SilhouetteEnhancementVolumeStyle", "silhouetteSharpness", D1265),
+    ("SilhouetteEnhancementVolumeStyle", "surfaceNormals", D779),
+    ("SingleAxisHingeJoint", "anchorPoint", D961),
+    ("SingleAxisHingeJoint", "axis", D975),
+    ("SingleAxisHingeJoint", "body1", D709),
+    ("SingleAxisHingeJoint", "body1AnchorPoint", D987),
+    ("SingleAxisHingeJoint", "body2", D709),
+    ("SingleAxisHingeJoint", "body2AnchorPoint", D989),
+    ("SingleAxisHingeJoint", "forceOutput", D1100),
+    ("SingleAxisHingeJoint", "maxAngle", D1184),
     ("SingleAxisHingeJoint", "metadata", D322),
-    ("SingleAxisHingeJoint", "minAngle", D1198),
-    ("SingleAxisHingeJoint", "stopBounce", D1354),
-    ("SingleAxisHingeJoint", "stopErrorCorrection", D1355),
-    ("SliderJoint", "axis", D979),
-    ("SliderJoint", "body1", D712),
-    ("SliderJoint", "body2", D712),
-    ("SliderJoint", "forceOutput", D1103),
-    ("SliderJoint", "maxSeparation", D1192),
+    ("SingleAxisHingeJoint", "minAngle", D1195),
+    ("SingleAxisHingeJoint", "stopBounce", D1351),
+    ("SingleAxisHingeJoint", "stopErrorCorrection", D1352),
+    ("SliderJoint", "axis", D976),
+    ("SliderJoint", "body1", D709),
+    ("SliderJoint", "body2", D709),
+    ("SliderJoint", "forceOutput", D1100),
+    ("SliderJoint", "maxSeparation", D1189),
     ("SliderJoint", "metadata", D322),
-    ("SliderJoint", "minSeparation", D1203),
-    ("SliderJoint", "separation", D1301),
-    ("SliderJoint", "separationRate", D1302),
-    ("SliderJoint", "sliderForce", D1329),
-    ("SliderJoint", "stopBounce", D1354),
-    ("SliderJoint", "stopErrorCorrection", D1355),
+    ("SliderJoint", "minSeparation", D1200),
+    ("SliderJoint", "separation", D1298),
+    ("SliderJoint", "separationRate", D1299),
+    ("SliderJoint", "sliderForce", D1326),
+    ("SliderJoint", "stopBounce", D1351),
+    ("SliderJoint", "stopErrorCorrection", D1352),
     ("Sound", "description", D82),
-    ("Sound", "direction", D1072),
+    ("Sound", "direction", D1069),
     ("Sound", "enabled", D219),
     ("Sound", "intensity", D236),
     ("Sound", "location", D553),
@@ -3827,27 +3822,27 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("Sound", "minBack", D331),
     ("Sound", "minFront", D332),
     ("Sound", "priority", D539),
-    ("Sound", "source", D1336),
-    ("Sound", "spatialize", D925),
-    ("SpatialSound", "children", D720),
-    ("SpatialSound", "coneInnerAngle", D1032),
-    ("SpatialSound", "coneOuterAngle", D1033),
-    ("SpatialSound", "coneOuterGain", D1034),
+    ("Sound", "source", D1333),
+    ("Sound", "spatialize", D922),
+    ("SpatialSound", "children", D717),
+    ("SpatialSound", "coneInnerAngle", D1029),
+    ("SpatialSound", "coneOuterAngle", D1030),
+    ("SpatialSound", "coneOuterGain", D1031),
     ("SpatialSound", "description", D81),
-    ("SpatialSound", "direction", D1072),
-    ("SpatialSound", "distanceModel", D1079),
-    ("SpatialSound", "dopplerEnabled", D1080),
-    ("SpatialSound", "enableHRTF", D1084),
+    ("SpatialSound", "direction", D1069),
+    ("SpatialSound", "distanceModel", D1076),
+    ("SpatialSound", "dopplerEnabled", D1077),
+    ("SpatialSound", "enableHRTF", D1081),
     ("SpatialSound", "enabled", D219),
-    ("SpatialSound", "gain", D739),
+    ("SpatialSound", "gain", D736),
     ("SpatialSound", "intensity", D236),
     ("SpatialSound", "location", D553),
-    ("SpatialSound", "maxDistance", D1191),
+    ("SpatialSound", "maxDistance", D1188),
     ("SpatialSound", "metadata", D322),
     ("SpatialSound", "priority", D539),
-    ("SpatialSound", "referenceDistance", D1280),
-    ("SpatialSound", "rolloffFactor", D1287),
-    ("SpatialSound", "spatialize", D925),
+    ("SpatialSound", "referenceDistance", D1277),
+    ("SpatialSound", "rolloffFactor", D1284),
+    ("SpatialSound", "spatialize", D922),
     ("Sphere", "metadata", D322),
     ("Sphere", "radius", D649),
     ("Sphere", "solid", D630),
@@ -3858,36 +3853,36 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("SphereSensor", "isOver", D286),
     ("SphereSensor", "metadata", D322),
     ("SphereSensor", "offset", D621),
-    ("SphereSensor", "rotation_changed", D1291),
-    ("SphereSensor", "trackPoint_changed", D1377),
-    ("SplinePositionInterpolator", "closed", D907),
+    ("SphereSensor", "rotation_changed", D1288),
+    ("SphereSensor", "trackPoint_changed", D1374),
+    ("SplinePositionInterpolator", "closed", D904),
     ("SplinePositionInterpolator", "key", D193),
     ("SplinePositionInterpolator", "keyValue", D523),
     ("SplinePositionInterpolator", "keyVelocity", D523),
     ("SplinePositionInterpolator", "metadata", D322),
-    ("SplinePositionInterpolator", "normalizeVelocity", D1231),
-    ("SplinePositionInterpolator", "set_fraction", D1311),
+    ("SplinePositionInterpolator", "normalizeVelocity", D1228),
+    ("SplinePositionInterpolator", "set_fraction", D1308),
     ("SplinePositionInterpolator", "value_changed", D434),
-    ("SplinePositionInterpolator2D", "closed", D907),
+    ("SplinePositionInterpolator2D", "closed", D904),
     ("SplinePositionInterpolator2D", "key", D193),
     ("SplinePositionInterpolator2D", "keyValue", D523),
     ("SplinePositionInterpolator2D", "keyVelocity", D523),
     ("SplinePositionInterpolator2D", "metadata", D322),
-    ("SplinePositionInterpolator2D", "normalizeVelocity", D1231),
-    ("SplinePositionInterpolator2D", "set_fraction", D1311),
+    ("SplinePositionInterpolator2D", "normalizeVelocity", D1228),
+    ("SplinePositionInterpolator2D", "set_fraction", D1308),
     ("SplinePositionInterpolator2D", "value_changed", D434),
-    ("SplineScalarInterpolator", "closed", D907),
+    ("SplineScalarInterpolator", "closed", D904),
     ("SplineScalarInterpolator", "key", D193),
     ("SplineScalarInterpolator", "keyValue", D523),
     ("SplineScalarInterpolator", "keyVelocity", D523),
     ("SplineScalarInterpolator", "metadata", D322),
-    ("SplineScalarInterpolator", "normalizeVelocity", D1231),
-    ("SplineScalarInterpolator", "set_fraction", D1311),
+    ("SplineScalarInterpolator", "normalizeVelocity", D1228),
+    ("SplineScalarInterpolator", "set_fraction", D1308),
     ("SplineScalarInterpolator", "value_changed", D434),
     ("SpotLight", "ambientIntensity", D100),
     ("SpotLight", "attenuation", D148),
     ("SpotLight", "beamWidth", D334),
-    ("SpotLight", "color", D1027),
+    ("SpotLight", "color", D1024),
     ("SpotLight", "cutOffAngle", D506),
     ("SpotLight", "direction", D498),
     ("SpotLight", "global", D266),
@@ -3896,42 +3891,42 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("SpotLight", "metadata", D322),
     ("SpotLight", "on", D222),
     ("SpotLight", "radius", D400),
-    ("SpotLight", "shadowIntensity", D1317),
-    ("SpotLight", "shadows", D1318),
+    ("SpotLight", "shadowIntensity", D1314),
+    ("SpotLight", "shadows", D1315),
     ("SquadOrientationInterpolator", "key", D193),
     ("SquadOrientationInterpolator", "keyValue", D523),
     ("SquadOrientationInterpolator", "metadata", D322),
-    ("SquadOrientationInterpolator", "normalizeVelocity", D1231),
-    ("SquadOrientationInterpolator", "set_fraction", D1311),
+    ("SquadOrientationInterpolator", "normalizeVelocity", D1228),
+    ("SquadOrientationInterpolator", "set_fraction", D1308),
     ("SquadOrientationInterpolator", "value_changed", D434),
     ("StaticGroup", "bboxCenter", D97),
-    ("StaticGroup", "bboxDisplay", D914),
+    ("StaticGroup", "bboxDisplay", D911),
     ("StaticGroup", "bboxSize", D98),
     ("StaticGroup", "children", D270),
     ("StaticGroup", "metadata", D322),
-    ("StaticGroup", "visible", D906),
-    ("StreamAudioDestination", "channelCount", D1017),
-    ("StreamAudioDestination", "channelCountMode", D1018),
-    ("StreamAudioDestination", "channelInterpretation", D1019),
-    ("StreamAudioDestination", "children", D720),
+    ("StaticGroup", "visible", D903),
+    ("StreamAudioDestination", "channelCount", D1014),
+    ("StreamAudioDestination", "channelCountMode", D1015),
+    ("StreamAudioDestination", "channelInterpretation", D1016),
+    ("StreamAudioDestination", "children", D717),
     ("StreamAudioDestination", "description", D81),
     ("StreamAudioDestination", "enabled", D219),
-    ("StreamAudioDestination", "gain", D739),
-    ("StreamAudioDestination", "isActive", D1157),
-    ("StreamAudioDestination", "mediaDeviceID", D1196),
+    ("StreamAudioDestination", "gain", D736),
+    ("StreamAudioDestination", "isActive", D1154),
+    ("StreamAudioDestination", "mediaDeviceID", D1193),
     ("StreamAudioDestination", "metadata", D322),
     ("StreamAudioDestination", "streamIdentifier", D670),
-    ("StreamAudioSource", "channelCountMode", D1018),
-    ("StreamAudioSource", "channelInterpretation", D1019),
+    ("StreamAudioSource", "channelCountMode", D1015),
+    ("StreamAudioSource", "channelInterpretation", D1016),
     ("StreamAudioSource", "description", D81),
     ("StreamAudioSource", "elapsedTime", D171),
     ("StreamAudioSource", "enabled", D219),
-    ("StreamAudioSource", "gain", D739),
-    ("StreamAudioSource", "isActive", D1157),
-    ("StreamAudioSource", "isPaused", D1161),
+    ("StreamAudioSource", "gain", D736),
+    ("StreamAudioSource", "isActive", D1154),
+    ("StreamAudioSource", "isPaused", D1158),
     ("StreamAudioSource", "metadata", D322),
-    ("StreamAudioSource", "pauseTime", D883),
-    ("StreamAudioSource", "resumeTime", D879),
+    ("StreamAudioSource", "pauseTime", D880),
+    ("StreamAudioSource", "resumeTime", D876),
     ("StreamAudioSource", "startTime", D33),
     ("StreamAudioSource", "stopTime", D33),
     ("StreamAudioSource", "streamIdentifier", D670),
@@ -3942,214 +3937,214 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("StringSensor", "finalText", D231),
     ("StringSensor", "isActive", D612),
     ("StringSensor", "metadata", D322),
-    ("SurfaceEmitter", "coordIndex", D1044),
+    ("SurfaceEmitter", "coordIndex", D1041),
     ("SurfaceEmitter", "mass", D86),
     ("SurfaceEmitter", "metadata", D322),
     ("SurfaceEmitter", "on", D220),
     ("SurfaceEmitter", "speed", D326),
-    ("SurfaceEmitter", "surface", D742),
+    ("SurfaceEmitter", "surface", D739),
     ("SurfaceEmitter", "surfaceArea", D529),
     ("SurfaceEmitter", "variation", D420),
     ("Switch", "bboxCenter", D97),
-    ("Switch", "bboxDisplay", D914),
+    ("Switch", "bboxDisplay", D911),
     ("Switch", "bboxSize", D98),
     ("Switch", "children", D270),
     ("Switch", "metadata", D322),
-    ("Switch", "visible", D906),
+    ("Switch", "visible", D903),
     ("Switch", "whichChoice", D313),
     ("Tangent", "metadata", D322),
-    ("Tangent", "vector", D1304),
-    ("TexCoordChaser2D", "duration", D1081),
+    ("Tangent", "vector", D1301),
+    ("TexCoordChaser2D", "duration", D1078),
     ("TexCoordChaser2D", "initialDestination", D324),
     ("TexCoordChaser2D", "initialValue", D328),
-    ("TexCoordChaser2D", "isActive", D1156),
+    ("TexCoordChaser2D", "isActive", D1153),
     ("TexCoordChaser2D", "metadata", D322),
-    ("TexCoordChaser2D", "set_destination", D1308),
-    ("TexCoordChaser2D", "set_value", D1314),
+    ("TexCoordChaser2D", "set_destination", D1305),
+    ("TexCoordChaser2D", "set_value", D1311),
     ("TexCoordChaser2D", "value_changed", D142),
     ("TexCoordDamper2D", "initialDestination", D324),
     ("TexCoordDamper2D", "initialValue", D328),
-    ("TexCoordDamper2D", "isActive", D1156),
+    ("TexCoordDamper2D", "isActive", D1153),
     ("TexCoordDamper2D", "metadata", D322),
-    ("TexCoordDamper2D", "order", D1242),
-    ("TexCoordDamper2D", "set_destination", D1308),
-    ("TexCoordDamper2D", "set_value", D1314),
-    ("TexCoordDamper2D", "tau", D1362),
-    ("TexCoordDamper2D", "tolerance", D1241),
+    ("TexCoordDamper2D", "order", D1239),
+    ("TexCoordDamper2D", "set_destination", D1305),
+    ("TexCoordDamper2D", "set_value", D1311),
+    ("TexCoordDamper2D", "tau", D1359),
+    ("TexCoordDamper2D", "tolerance", D1238),
     ("TexCoordDamper2D", "value_changed", D142),
-    ("Text", "fontStyle", D737),
+    ("Text", "fontStyle", D734),
     ("Text", "length", D72),
     ("Text", "lineBounds", D64),
     ("Text", "maxExtent", D371),
     ("Text", "metadata", D322),
-    ("Text", "origin", D1245),
+    ("Text", "origin", D1242),
     ("Text", "solid", D630),
     ("Text", "string", D646),
     ("Text", "textBounds", D23),
     ("TextureBackground", "backTexture", D528),
-    ("TextureBackground", "bindTime", D1088),
+    ("TextureBackground", "bindTime", D1085),
     ("TextureBackground", "bottomTexture", D528),
     ("TextureBackground", "frontTexture", D528),
-    ("TextureBackground", "groundAngle", D709),
+    ("TextureBackground", "groundAngle", D706),
     ("TextureBackground", "groundColor", D128),
-    ("TextureBackground", "isBound", D1089),
+    ("TextureBackground", "isBound", D1086),
     ("TextureBackground", "leftTexture", D528),
     ("TextureBackground", "metadata", D322),
     ("TextureBackground", "rightTexture", D528),
     ("TextureBackground", "set_bind", D335),
-    ("TextureBackground", "skyAngle", D709),
+    ("TextureBackground", "skyAngle", D706),
     ("TextureBackground", "skyColor", D130),
     ("TextureBackground", "topTexture", D528),
-    ("TextureBackground", "transparency", D1381),
-    ("TextureCoordinate", "mapping", D753),
+    ("TextureBackground", "transparency", D1378),
+    ("TextureCoordinate", "mapping", D750),
     ("TextureCoordinate", "metadata", D322),
-    ("TextureCoordinate", "point", D1249),
-    ("TextureCoordinate3D", "mapping", D753),
+    ("TextureCoordinate", "point", D1246),
+    ("TextureCoordinate3D", "mapping", D750),
     ("TextureCoordinate3D", "metadata", D322),
-    ("TextureCoordinate3D", "point", D1386),
-    ("TextureCoordinate4D", "mapping", D753),
+    ("TextureCoordinate3D", "point", D1383),
+    ("TextureCoordinate4D", "mapping", D750),
     ("TextureCoordinate4D", "metadata", D322),
     ("TextureCoordinate4D", "point", D30),
-    ("TextureCoordinateGenerator", "mapping", D753),
+    ("TextureCoordinateGenerator", "mapping", D750),
     ("TextureCoordinateGenerator", "metadata", D322),
-    ("TextureCoordinateGenerator", "mode", D1252),
-    ("TextureCoordinateGenerator", "parameter", D1251),
+    ("TextureCoordinateGenerator", "mode", D1249),
+    ("TextureCoordinateGenerator", "parameter", D1248),
     ("TextureProjector", "ambientIntensity", D100),
-    ("TextureProjector", "aspectRatio", D970),
-    ("TextureProjector", "color", D1027),
+    ("TextureProjector", "aspectRatio", D967),
+    ("TextureProjector", "color", D1024),
     ("TextureProjector", "description", D81),
     ("TextureProjector", "direction", D200),
-    ("TextureProjector", "farDistance", D1195),
+    ("TextureProjector", "farDistance", D1192),
     ("TextureProjector", "fieldOfView", D564),
     ("TextureProjector", "global", D267),
     ("TextureProjector", "intensity", D101),
     ("TextureProjector", "location", D549),
     ("TextureProjector", "metadata", D322),
-    ("TextureProjector", "nearDistance", D1206),
+    ("TextureProjector", "nearDistance", D1203),
     ("TextureProjector", "on", D223),
-    ("TextureProjector", "shadowIntensity", D1317),
-    ("TextureProjector", "shadows", D1318),
+    ("TextureProjector", "shadowIntensity", D1314),
+    ("TextureProjector", "shadows", D1315),
     ("TextureProjector", "texture", D493),
-    ("TextureProjector", "upVector", D1390),
+    ("TextureProjector", "upVector", D1387),
     ("TextureProjectorParallel", "ambientIntensity", D100),
-    ("TextureProjectorParallel", "aspectRatio", D970),
-    ("TextureProjectorParallel", "color", D1027),
+    ("TextureProjectorParallel", "aspectRatio", D967),
+    ("TextureProjectorParallel", "color", D1024),
     ("TextureProjectorParallel", "description", D81),
     ("TextureProjectorParallel", "direction", D200),
-    ("TextureProjectorParallel", "farDistance", D1195),
+    ("TextureProjectorParallel", "farDistance", D1192),
     ("TextureProjectorParallel", "fieldOfView", D408),
     ("TextureProjectorParallel", "global", D267),
     ("TextureProjectorParallel", "intensity", D101),
     ("TextureProjectorParallel", "location", D549),
     ("TextureProjectorParallel", "metadata", D322),
-    ("TextureProjectorParallel", "nearDistance", D1206),
+    ("TextureProjectorParallel", "nearDistance", D1203),
     ("TextureProjectorParallel", "on", D223),
-    ("TextureProjectorParallel", "shadowIntensity", D1317),
-    ("TextureProjectorParallel", "shadows", D1318),
+    ("TextureProjectorParallel", "shadowIntensity", D1314),
+    ("TextureProjectorParallel", "shadows", D1315),
     ("TextureProjectorParallel", "texture", D493),
-    ("TextureProjectorParallel", "upVector", D1390),
-    ("TextureProperties", "anisotropicDegree", D967),
-    ("TextureProperties", "borderColor", D996),
-    ("TextureProperties", "borderWidth", D997),
-    ("TextureProperties", "boundaryModeR", D999),
-    ("TextureProperties", "boundaryModeS", D1000),
-    ("TextureProperties", "boundaryModeT", D1001),
+    ("TextureProjectorParallel", "upVector", D1387),
+    ("TextureProperties", "anisotropicDegree", D964),
+    ("TextureProperties", "borderColor", D993),
+    ("TextureProperties", "borderWidth", D994),
+    ("TextureProperties", "boundaryModeR", D996),
+    ("TextureProperties", "boundaryModeS", D997),
+    ("TextureProperties", "boundaryModeT", D998),
     ("TextureProperties", "generateMipMaps", D198),
-    ("TextureProperties", "magnificationFilter", D1183),
+    ("TextureProperties", "magnificationFilter", D1180),
     ("TextureProperties", "metadata", D322),
-    ("TextureProperties", "minificationFilter", D1204),
-    ("TextureProperties", "textureCompression", D1369),
-    ("TextureProperties", "texturePriority", D1370),
-    ("TextureTransform", "center", D1013),
-    ("TextureTransform", "mapping", D753),
+    ("TextureProperties", "minificationFilter", D1201),
+    ("TextureProperties", "textureCompression", D1366),
+    ("TextureProperties", "texturePriority", D1367),
+    ("TextureTransform", "center", D1010),
+    ("TextureTransform", "mapping", D750),
     ("TextureTransform", "metadata", D322),
     ("TextureTransform", "rotation", D647),
     ("TextureTransform", "scale", D432),
     ("TextureTransform", "translation", D360),
-    ("TextureTransform3D", "center", D1013),
-    ("TextureTransform3D", "mapping", D753),
+    ("TextureTransform3D", "center", D1010),
+    ("TextureTransform3D", "mapping", D750),
     ("TextureTransform3D", "metadata", D322),
-    ("TextureTransform3D", "rotation", D1288),
+    ("TextureTransform3D", "rotation", D1285),
     ("TextureTransform3D", "scale", D432),
     ("TextureTransform3D", "translation", D360),
-    ("TextureTransformMatrix3D", "mapping", D753),
-    ("TextureTransformMatrix3D", "matrix", D1186),
+    ("TextureTransformMatrix3D", "mapping", D750),
+    ("TextureTransformMatrix3D", "matrix", D1183),
     ("TextureTransformMatrix3D", "metadata", D322),
-    ("TimeSensor", "cycleInterval", D1049),
-    ("TimeSensor", "cycleTime", D1051),
+    ("TimeSensor", "cycleInterval", D1046),
+    ("TimeSensor", "cycleTime", D1048),
     ("TimeSensor", "description", D82),
     ("TimeSensor", "elapsedTime", D173),
     ("TimeSensor", "enabled", D219),
-    ("TimeSensor", "fraction_changed", D1105),
-    ("TimeSensor", "isActive", D1155),
-    ("TimeSensor", "isPaused", D1163),
+    ("TimeSensor", "fraction_changed", D1102),
+    ("TimeSensor", "isActive", D1152),
+    ("TimeSensor", "isPaused", D1160),
     ("TimeSensor", "loop", D587),
     ("TimeSensor", "metadata", D322),
-    ("TimeSensor", "pauseTime", D885),
-    ("TimeSensor", "resumeTime", D881),
-    ("TimeSensor", "startTime", D886),
-    ("TimeSensor", "stopTime", D882),
-    ("TimeSensor", "time", D798),
+    ("TimeSensor", "pauseTime", D882),
+    ("TimeSensor", "resumeTime", D878),
+    ("TimeSensor", "startTime", D883),
+    ("TimeSensor", "stopTime", D879),
+    ("TimeSensor", "time", D795),
     ("TimeTrigger", "metadata", D322),
     ("TimeTrigger", "set_boolean", D296),
-    ("TimeTrigger", "triggerTime", D1383),
-    ("ToneMappedVolumeStyle", "coolColor", D1043),
+    ("TimeTrigger", "triggerTime", D1380),
+    ("ToneMappedVolumeStyle", "coolColor", D1040),
     ("ToneMappedVolumeStyle", "enabled", D219),
     ("ToneMappedVolumeStyle", "metadata", D322),
-    ("ToneMappedVolumeStyle", "surfaceNormals", D782),
-    ("ToneMappedVolumeStyle", "warmColor", D1403),
+    ("ToneMappedVolumeStyle", "surfaceNormals", D779),
+    ("ToneMappedVolumeStyle", "warmColor", D1400),
     ("TouchSensor", "description", D82),
     ("TouchSensor", "enabled", D219),
-    ("TouchSensor", "hitNormal_changed", D877),
-    ("TouchSensor", "hitPoint_changed", D876),
-    ("TouchSensor", "hitTexCoord_changed", D878),
+    ("TouchSensor", "hitNormal_changed", D874),
+    ("TouchSensor", "hitPoint_changed", D873),
+    ("TouchSensor", "hitTexCoord_changed", D875),
     ("TouchSensor", "isActive", D612),
     ("TouchSensor", "isOver", D286),
     ("TouchSensor", "metadata", D322),
-    ("TouchSensor", "touchTime", D799),
+    ("TouchSensor", "touchTime", D796),
     ("Transform", "bboxCenter", D97),
-    ("Transform", "bboxDisplay", D914),
+    ("Transform", "bboxDisplay", D911),
     ("Transform", "bboxSize", D98),
-    ("Transform", "center", D818),
+    ("Transform", "center", D815),
     ("Transform", "children", D270),
     ("Transform", "metadata", D322),
     ("Transform", "rotation", D494),
     ("Transform", "scale", D433),
     ("Transform", "scaleOrientation", D567),
     ("Transform", "translation", D548),
-    ("Transform", "visible", D906),
-    ("TransformSensor", "center", D819),
+    ("Transform", "visible", D903),
+    ("TransformSensor", "center", D816),
     ("TransformSensor", "description", D80),
     ("TransformSensor", "enabled", D219),
-    ("TransformSensor", "enterTime", D800),
-    ("TransformSensor", "exitTime", D801),
-    ("TransformSensor", "isActive", D1160),
+    ("TransformSensor", "enterTime", D797),
+    ("TransformSensor", "exitTime", D798),
+    ("TransformSensor", "isActive", D1157),
     ("TransformSensor", "metadata", D322),
     ("TransformSensor", "orientation_changed", D623),
     ("TransformSensor", "position_changed", D625),
-    ("TransformSensor", "size", D1326),
-    ("TransformSensor", "targetObject", D1361),
+    ("TransformSensor", "size", D1323),
+    ("TransformSensor", "targetObject", D1358),
     ("TransmitterPdu", "address", D416),
-    ("TransmitterPdu", "antennaLocation", D928),
+    ("TransmitterPdu", "antennaLocation", D925),
     ("TransmitterPdu", "antennaPatternType", D49),
     ("TransmitterPdu", "applicationID", D211),
     ("TransmitterPdu", "bboxCenter", D97),
-    ("TransmitterPdu", "bboxDisplay", D914),
+    ("TransmitterPdu", "bboxDisplay", D911),
     ("TransmitterPdu", "bboxSize", D98),
     ("TransmitterPdu", "cryptoKeyID", D435),
     ("TransmitterPdu", "cryptoSystem", D321),
     ("TransmitterPdu", "description", D80),
     ("TransmitterPdu", "enabled", D221),
     ("TransmitterPdu", "entityID", D225),
-    ("TransmitterPdu", "frequency", D820),
+    ("TransmitterPdu", "frequency", D817),
     ("TransmitterPdu", "geoCoords", D262),
     ("TransmitterPdu", "geoSystem", D290),
     ("TransmitterPdu", "inputSource", D652),
-    ("TransmitterPdu", "isActive", D1035),
-    ("TransmitterPdu", "isNetworkReader", D900),
-    ("TransmitterPdu", "isNetworkWriter", D899),
-    ("TransmitterPdu", "isRtpHeaderHeard", D897),
-    ("TransmitterPdu", "isStandAlone", D898),
+    ("TransmitterPdu", "isActive", D1032),
+    ("TransmitterPdu", "isNetworkReader", D897),
+    ("TransmitterPdu", "isNetworkWriter", D896),
+    ("TransmitterPdu", "isRtpHeaderHeard", D894),
+    ("TransmitterPdu", "isStandAlone", D895),
     ("TransmitterPdu", "metadata", D322),
     ("TransmitterPdu", "modulationTypeDetail", D337),
     ("TransmitterPdu", "modulationTypeMajor", D338),
@@ -4157,7 +4152,7 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("TransmitterPdu", "modulationTypeSystem", D660),
     ("TransmitterPdu", "multicastRelayHost", D238),
     ("TransmitterPdu", "multicastRelayPort", D239),
-    ("TransmitterPdu", "networkMode", D913),
+    ("TransmitterPdu", "networkMode", D910),
     ("TransmitterPdu", "port", D418),
     ("TransmitterPdu", "power", D563),
     ("TransmitterPdu", "radioEntityTypeCategory", D336),
@@ -4169,36 +4164,36 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("TransmitterPdu", "radioID", D288),
     ("TransmitterPdu", "readInterval", D609),
     ("TransmitterPdu", "relativeAntennaLocation", D583),
-    ("TransmitterPdu", "rtpHeaderExpected", D894),
+    ("TransmitterPdu", "rtpHeaderExpected", D891),
     ("TransmitterPdu", "siteID", D640),
     ("TransmitterPdu", "timestamp", D177),
     ("TransmitterPdu", "transmitFrequencyBandwidth", D85),
     ("TransmitterPdu", "transmitState", D661),
-    ("TransmitterPdu", "visible", D906),
+    ("TransmitterPdu", "visible", D903),
     ("TransmitterPdu", "whichGeometry", D613),
     ("TransmitterPdu", "writeInterval", D610),
     ("TriangleFanSet", "attrib", D469),
-    ("TriangleFanSet", "ccw", D1011),
+    ("TriangleFanSet", "ccw", D1008),
     ("TriangleFanSet", "color", D464),
-    ("TriangleFanSet", "colorPerVertex", D891),
+    ("TriangleFanSet", "colorPerVertex", D888),
     ("TriangleFanSet", "coord", D466),
-    ("TriangleFanSet", "fanCount", D1094),
+    ("TriangleFanSet", "fanCount", D1091),
     ("TriangleFanSet", "fogCoord", D470),
     ("TriangleFanSet", "metadata", D322),
     ("TriangleFanSet", "normal", D475),
-    ("TriangleFanSet", "normalPerVertex", D893),
+    ("TriangleFanSet", "normalPerVertex", D890),
     ("TriangleFanSet", "solid", D630),
     ("TriangleFanSet", "tangent", D479),
     ("TriangleFanSet", "texCoord", D480),
     ("TriangleSet", "attrib", D469),
-    ("TriangleSet", "ccw", D1011),
+    ("TriangleSet", "ccw", D1008),
     ("TriangleSet", "color", D464),
-    ("TriangleSet", "colorPerVertex", D891),
+    ("TriangleSet", "colorPerVertex", D888),
     ("TriangleSet", "coord", D466),
     ("TriangleSet", "fogCoord", D470),
     ("TriangleSet", "metadata", D322),
     ("TriangleSet", "normal", D475),
-    ("TriangleSet", "normalPerVertex", D893),
+    ("TriangleSet", "normalPerVertex", D890),
     ("TriangleSet", "solid", D630),
     ("TriangleSet", "tangent", D479),
     ("TriangleSet", "texCoord", D480),
@@ -4206,104 +4201,103 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("TriangleSet2D", "solid", D630),
     ("TriangleSet2D", "vertices", D24),
     ("TriangleStripSet", "attrib", D469),
-    ("TriangleStripSet", "ccw", D1011),
+    ("TriangleStripSet", "ccw", D1008),
     ("TriangleStripSet", "color", D464),
-    ("TriangleStripSet", "colorPerVertex", D891),
+    ("TriangleStripSet", "colorPerVertex", D888),
     ("TriangleStripSet", "coord", D466),
     ("TriangleStripSet", "fogCoord", D470),
     ("TriangleStripSet", "metadata", D322),
     ("TriangleStripSet", "normal", D475),
-    ("TriangleStripSet", "normalPerVertex", D893),
+    ("TriangleStripSet", "normalPerVertex", D890),
     ("TriangleStripSet", "solid", D630),
-    ("TriangleStripSet", "stripCount", D1356),
+    ("TriangleStripSet", "stripCount", D1353),
     ("TriangleStripSet", "tangent", D479),
     ("TriangleStripSet", "texCoord", D480),
-    ("TwoSidedMaterial", "ambientIntensity", D1129),
-    ("TwoSidedMaterial", "backAmbientIntensity", D1129),
-    ("TwoSidedMaterial", "backDiffuseColor", D1130),
-    ("TwoSidedMaterial", "backEmissiveColor", D1131),
+    ("TwoSidedMaterial", "ambientIntensity", D1126),
+    ("TwoSidedMaterial", "backAmbientIntensity", D1126),
+    ("TwoSidedMaterial", "backDiffuseColor", D1127),
+    ("TwoSidedMaterial", "backEmissiveColor", D1128),
     ("TwoSidedMaterial", "backShininess", D394),
-    ("TwoSidedMaterial", "backSpecularColor", D1342),
-    ("TwoSidedMaterial", "backTransparency", D1127),
-    ("TwoSidedMaterial", "diffuseColor", D1130),
-    ("TwoSidedMaterial", "emissiveColor", D1131),
+    ("TwoSidedMaterial", "backSpecularColor", D1339),
+    ("TwoSidedMaterial", "backTransparency", D1124),
+    ("TwoSidedMaterial", "diffuseColor", D1127),
+    ("TwoSidedMaterial", "emissiveColor", D1128),
     ("TwoSidedMaterial", "metadata", D322),
-    ("TwoSidedMaterial", "separateBackColor", D1300),
+    ("TwoSidedMaterial", "separateBackColor", D1297),
     ("TwoSidedMaterial", "shininess", D394),
-    ("TwoSidedMaterial", "specularColor", D1342),
-    ("TwoSidedMaterial", "transparency", D1127),
-    ("UniversalJoint", "anchorPoint", D964),
-    ("UniversalJoint", "axis1", D980),
-    ("UniversalJoint", "axis2", D983),
-    ("UniversalJoint", "body1", D712),
-    ("UniversalJoint", "body1AnchorPoint", D990),
-    ("UniversalJoint", "body1Axis", D991),
-    ("UniversalJoint", "body2", D712),
-    ("UniversalJoint", "body2AnchorPoint", D992),
-    ("UniversalJoint", "body2Axis", D991),
-    ("UniversalJoint", "forceOutput", D1103),
+    ("TwoSidedMaterial", "specularColor", D1339),
+    ("TwoSidedMaterial", "transparency", D1124),
+    ("UniversalJoint", "anchorPoint", D961),
+    ("UniversalJoint", "axis1", D977),
+    ("UniversalJoint", "axis2", D980),
+    ("UniversalJoint", "body1", D709),
+    ("UniversalJoint", "body1AnchorPoint", D987),
+    ("UniversalJoint", "body1Axis", D988),
+    ("UniversalJoint", "body2", D709),
+    ("UniversalJoint", "body2AnchorPoint", D989),
+    ("UniversalJoint", "body2Axis", D988),
+    ("UniversalJoint", "forceOutput", D1100),
     ("UniversalJoint", "metadata", D322),
-    ("UniversalJoint", "stop1Bounce", D1347),
-    ("UniversalJoint", "stop1ErrorCorrection", D1349),
-    ("UniversalJoint", "stop2Bounce", D1350),
-    ("UniversalJoint", "stop2ErrorCorrection", D1351),
-    ("UnlitMaterial", "emissiveColor", D1131),
-    ("UnlitMaterial", "emissiveTexture", D869),
-    ("UnlitMaterial", "emissiveTextureMapping", D753),
+    ("UniversalJoint", "stop1Bounce", D1344),
+    ("UniversalJoint", "stop1ErrorCorrection", D1346),
+    ("UniversalJoint", "stop2Bounce", D1347),
+    ("UniversalJoint", "stop2ErrorCorrection", D1348),
+    ("UnlitMaterial", "emissiveColor", D1128),
+    ("UnlitMaterial", "emissiveTexture", D866),
+    ("UnlitMaterial", "emissiveTextureMapping", D750),
     ("UnlitMaterial", "metadata", D322),
-    ("UnlitMaterial", "normalScale", D1229),
-    ("UnlitMaterial", "normalTexture", D871),
-    ("UnlitMaterial", "normalTextureMapping", D753),
-    ("UnlitMaterial", "transparency", D1127),
+    ("UnlitMaterial", "normalScale", D1226),
+    ("UnlitMaterial", "normalTexture", D868),
+    ("UnlitMaterial", "normalTextureMapping", D750),
+    ("UnlitMaterial", "transparency", D1124),
     ("Viewpoint", "bindTime", D228),
-    ("Viewpoint", "centerOfRotation", D1016),
-    ("Viewpoint", "description", D685),
-    ("Viewpoint", "farDistance", D1095),
+    ("Viewpoint", "centerOfRotation", D1013),
+    ("Viewpoint", "description", D682),
+    ("Viewpoint", "farDistance", D1092),
     ("Viewpoint", "fieldOfView", D565),
     ("Viewpoint", "isBound", D518),
-    ("Viewpoint", "jump", D817),
+    ("Viewpoint", "jump", D814),
     ("Viewpoint", "metadata", D322),
-    ("Viewpoint", "navigationInfo", D762),
-    ("Viewpoint", "nearDistance", D1223),
+    ("Viewpoint", "navigationInfo", D759),
+    ("Viewpoint", "nearDistance", D1220),
     ("Viewpoint", "orientation", D600),
-    ("Viewpoint", "position", D1265),
+    ("Viewpoint", "position", D1262),
     ("Viewpoint", "retainUserOffsets", D590),
     ("Viewpoint", "set_bind", D618),
-    ("Viewpoint", "viewAll", D855),
-    ("ViewpointGroup", "center", D1014),
-    ("ViewpointGroup", "children", D858),
-    ("ViewpointGroup", "description", D686),
-    ("ViewpointGroup", "displayed", D1078),
+    ("Viewpoint", "viewAll", D852),
+    ("ViewpointGroup", "center", D1011),
+    ("ViewpointGroup", "children", D855),
+    ("ViewpointGroup", "description", D683),
+    ("ViewpointGroup", "displayed", D1075),
     ("ViewpointGroup", "metadata", D322),
     ("ViewpointGroup", "retainUserOffsets", D590),
-    ("ViewpointGroup", "size", D1324),
+    ("ViewpointGroup", "size", D1321),
     ("Viewport", "bboxCenter", D97),
-    ("Viewport", "bboxDisplay", D914),
+    ("Viewport", "bboxDisplay", D911),
     ("Viewport", "bboxSize", D98),
     ("Viewport", "children", D270),
-    ("Viewport", "clipBoundary", D1025),
+    ("Viewport", "clipBoundary", D1022),
     ("Viewport", "metadata", D322),
-    ("Viewport", "visible", D906),
-    ("VisibilitySensor", "center", D819),
+    ("Viewport", "visible", D903),
+    ("VisibilitySensor", "center", D816),
     ("VisibilitySensor", "description", D80),
     ("VisibilitySensor", "enabled", D219),
-    ("VisibilitySensor", "enterTime", D804),
-    ("VisibilitySensor", "exitTime", D806),
-    ("VisibilitySensor", "isActive", D1160),
+    ("VisibilitySensor", "enterTime", D801),
+    ("VisibilitySensor", "exitTime", D803),
+    ("VisibilitySensor", "isActive", D1157),
     ("VisibilitySensor", "metadata", D322),
-    ("VisibilitySensor", "size", D1327),
+    ("VisibilitySensor", "size", D1324),
     ("VolumeData", "bboxCenter", D97),
-    ("VolumeData", "bboxDisplay", D914),
+    ("VolumeData", "bboxDisplay", D911),
     ("VolumeData", "bboxSize", D98),
     ("VolumeData", "dimensions", D36),
     ("VolumeData", "metadata", D322),
     ("VolumeData", "renderStyle", D488),
-    ("VolumeData", "visible", D906),
+    ("VolumeData", "visible", D903),
     ("VolumeData", "voxels", D486),
     ("VolumeEmitter", "coord", D167),
-    ("VolumeEmitter", "coordIndex", D1044),
+    ("VolumeEmitter", "coordIndex", D1041),
     ("VolumeEmitter", "direction", D325),
-    ("VolumeEmitter", "internal", D680),
     ("VolumeEmitter", "mass", D86),
     ("VolumeEmitter", "metadata", D322),
     ("VolumeEmitter", "on", D220),
@@ -4312,110 +4306,110 @@ pub static FIELDS: &[(&str, &str, &str)] = &[
     ("VolumeEmitter", "variation", D420),
     ("VolumePickSensor", "description", D80),
     ("VolumePickSensor", "enabled", D219),
-    ("VolumePickSensor", "intersectionType", D1152),
-    ("VolumePickSensor", "isActive", D1153),
-    ("VolumePickSensor", "matchCriterion", D1059),
+    ("VolumePickSensor", "intersectionType", D1149),
+    ("VolumePickSensor", "isActive", D1150),
+    ("VolumePickSensor", "matchCriterion", D1056),
     ("VolumePickSensor", "metadata", D322),
-    ("VolumePickSensor", "objectType", D763),
-    ("VolumePickSensor", "pickTarget", D1254),
+    ("VolumePickSensor", "objectType", D760),
+    ("VolumePickSensor", "pickTarget", D1251),
     ("VolumePickSensor", "pickedGeometry", D515),
-    ("VolumePickSensor", "pickingGeometry", D1256),
-    ("VolumePickSensor", "sortOrder", D779),
-    ("WaveShaper", "channelCount", D1017),
-    ("WaveShaper", "channelCountMode", D1018),
-    ("WaveShaper", "channelInterpretation", D1019),
-    ("WaveShaper", "children", D720),
-    ("WaveShaper", "curve", D733),
+    ("VolumePickSensor", "pickingGeometry", D1253),
+    ("VolumePickSensor", "sortOrder", D776),
+    ("WaveShaper", "channelCount", D1014),
+    ("WaveShaper", "channelCountMode", D1015),
+    ("WaveShaper", "channelInterpretation", D1016),
+    ("WaveShaper", "children", D717),
+    ("WaveShaper", "curve", D730),
     ("WaveShaper", "description", D81),
     ("WaveShaper", "elapsedTime", D171),
     ("WaveShaper", "enabled", D219),
-    ("WaveShaper", "gain", D739),
-    ("WaveShaper", "isActive", D1157),
-    ("WaveShaper", "isPaused", D1161),
+    ("WaveShaper", "gain", D736),
+    ("WaveShaper", "isActive", D1154),
+    ("WaveShaper", "isPaused", D1158),
     ("WaveShaper", "metadata", D322),
-    ("WaveShaper", "oversample", D770),
-    ("WaveShaper", "pauseTime", D883),
-    ("WaveShaper", "resumeTime", D879),
+    ("WaveShaper", "oversample", D767),
+    ("WaveShaper", "pauseTime", D880),
+    ("WaveShaper", "resumeTime", D876),
     ("WaveShaper", "startTime", D33),
     ("WaveShaper", "stopTime", D33),
-    ("WaveShaper", "tailTime", D1360),
-    ("WindPhysicsModel", "direction", D1071),
+    ("WaveShaper", "tailTime", D1357),
+    ("WindPhysicsModel", "direction", D1068),
     ("WindPhysicsModel", "enabled", D219),
-    ("WindPhysicsModel", "gustiness", D1123),
+    ("WindPhysicsModel", "gustiness", D1120),
     ("WindPhysicsModel", "metadata", D322),
     ("WindPhysicsModel", "speed", D326),
-    ("WindPhysicsModel", "turbulence", D1387),
+    ("WindPhysicsModel", "turbulence", D1384),
     ("WorldInfo", "info", D37),
     ("WorldInfo", "metadata", D322),
-    ("WorldInfo", "title", D1375),
+    ("WorldInfo", "title", D1372),
 ];
 
 /// Node type name, field name, enumeration value and the value's description.
 pub static VALUES: &[(&str, &str, &str, &str)] = &[
-    ("Analyser", "channelCountMode", "CLAMPED_MAX", D933),
-    ("Analyser", "channelCountMode", "EXPLICIT", D936),
-    ("Analyser", "channelCountMode", "MAX", D944),
-    ("Analyser", "channelInterpretation", "DISCRETE", D935),
-    ("Analyser", "channelInterpretation", "SPEAKERS", D949),
+    ("Analyser", "channelCountMode", "CLAMPED_MAX", D930),
+    ("Analyser", "channelCountMode", "EXPLICIT", D933),
+    ("Analyser", "channelCountMode", "MAX", D941),
+    ("Analyser", "channelInterpretation", "DISCRETE", D932),
+    ("Analyser", "channelInterpretation", "SPEAKERS", D946),
     ("Appearance", "alphaMode", "AUTO", D396),
     ("Appearance", "alphaMode", "BLEND", D89),
     ("Appearance", "alphaMode", "MASK", D44),
     ("Appearance", "alphaMode", "OPAQUE", D303),
     ("ArcClose2D", "closureType", "CHORD", D146),
     ("ArcClose2D", "closureType", "PIE", D147),
-    ("AudioDestination", "channelCountMode", "CLAMPED_MAX", D933),
-    ("AudioDestination", "channelCountMode", "EXPLICIT", D936),
-    ("AudioDestination", "channelCountMode", "MAX", D944),
-    ("AudioDestination", "channelInterpretation", "DISCRETE", D935),
-    ("AudioDestination", "channelInterpretation", "SPEAKERS", D949),
-    ("BallJoint", "forceOutput", "\"ALL\"", D961),
-    ("BallJoint", "forceOutput", "\"NONE\"", D1224),
-    ("BiquadFilter", "channelCountMode", "CLAMPED_MAX", D933),
-    ("BiquadFilter", "channelCountMode", "EXPLICIT", D936),
-    ("BiquadFilter", "channelCountMode", "MAX", D944),
-    ("BiquadFilter", "channelInterpretation", "DISCRETE", D935),
-    ("BiquadFilter", "channelInterpretation", "SPEAKERS", D949),
-    ("BiquadFilter", "type", "ALLPASS", D931),
-    ("BiquadFilter", "type", "BANDPASS", D932),
-    ("BiquadFilter", "type", "HIGHPASS", D938),
-    ("BiquadFilter", "type", "HIGHSHELF", D939),
-    ("BiquadFilter", "type", "LOWPASS", D942),
-    ("BiquadFilter", "type", "LOWSHELF", D943),
-    ("BiquadFilter", "type", "NOTCH", D945),
-    ("BiquadFilter", "type", "PEAKING", D946),
-    ("BlendedVolumeStyle", "weightFunction1", "ALPHA1", D840),
-    ("BlendedVolumeStyle", "weightFunction1", "ALPHA2", D839),
-    ("BlendedVolumeStyle", "weightFunction1", "CONSTANT", D847),
-    ("BlendedVolumeStyle", "weightFunction1", "ONE_MINUS_ALPHA1", D838),
-    ("BlendedVolumeStyle", "weightFunction1", "ONE_MINUS_ALPHA2", D837),
-    ("BlendedVolumeStyle", "weightFunction1", "TABLE", D842),
-    ("BlendedVolumeStyle", "weightFunction2", "ALPHA1", D840),
-    ("BlendedVolumeStyle", "weightFunction2", "ALPHA2", D839),
-    ("BlendedVolumeStyle", "weightFunction2", "CONSTANT", D847),
-    ("BlendedVolumeStyle", "weightFunction2", "ONE_MINUS_ALPHA1", D838),
-    ("BlendedVolumeStyle", "weightFunction2", "ONE_MINUS_ALPHA2", D837),
-    ("BlendedVolumeStyle", "weightFunction2", "TABLE", D842),
-    ("BufferAudioSource", "channelCountMode", "CLAMPED_MAX", D933),
-    ("BufferAudioSource", "channelCountMode", "EXPLICIT", D936),
-    ("BufferAudioSource", "channelCountMode", "MAX", D944),
-    ("BufferAudioSource", "channelInterpretation", "DISCRETE", D935),
-    ("BufferAudioSource", "channelInterpretation", "SPEAKERS", D949),
-    ("ChannelMerger", "channelCountMode", "CLAMPED_MAX", D933),
-    ("ChannelMerger", "channelCountMode", "EXPLICIT", D936),
-    ("ChannelMerger", "channelCountMode", "MAX", D944),
-    ("ChannelMerger", "channelInterpretation", "DISCRETE", D935),
-    ("ChannelMerger", "channelInterpretation", "SPEAKERS", D949),
-    ("ChannelSelector", "channelCountMode", "CLAMPED_MAX", D933),
-    ("ChannelSelector", "channelCountMode", "EXPLICIT", D936),
-    ("ChannelSelector", "channelCountMode", "MAX", D944),
-    ("ChannelSelector", "channelInterpretation", "DISCRETE", D935),
-    ("ChannelSelector", "channelInterpretation", "SPEAKERS", D949),
-    ("ChannelSplitter", "channelCountMode", "CLAMPED_MAX", D933),
-    ("ChannelSplitter", "channelCountMode", "EXPLICIT", D936),
-    ("ChannelSplitter", "channelCountMode", "MAX", D944),
-    ("ChannelSplitter", "channelInterpretation", "DISCRETE", D935),
-    ("ChannelSplitter", "channelInterpretation", "SPEAKERS", D949),
-    ("CollisionCollection", "appliedParameters", "\"BOUNCE\"", D714),
+    ("AudioDestination", "channelCountMode", "CLAMPED_MAX", D930),
+    ("AudioDestination", "channelCountMode", "EXPLICIT", D933),
+    ("AudioDestination", "channelCountMode", "MAX", D941),
+    ("AudioDestination", "channelInterpretation", "DISCRETE", D932),
+    ("AudioDestination", "channelInterpretation", "SPEAKERS", D946),
+    ("BallJoint", "forceOutput", "\"ALL\"", D958),
+    ("BallJoint", "forceOutput", "\"NONE\"", D1221),
+    ("BiquadFilter", "channelCountMode", "CLAMPED_MAX", D930),
+    ("BiquadFilter", "channelCountMode", "EXPLICIT", D933),
+    ("BiquadFilter", "channelCountMode", "MAX", D941),
+    ("BiquadFilter", "channelInterpretation", "DISCRETE", D932),
+    ("BiquadFilter", "channelInterpretation", "SPEAKERS", D946),
+    ("BiquadFilter", "type", "ALLPASS", D928),
+    ("BiquadFilter", "type", "BANDPASS", D929),
+    ("BiquadFilter", "type", "HIGHPASS", D935),
+    ("BiquadFilter", "type", "HIGHSHELF", D936),
+    ("BiquadFilter", "type", "LOWPASS", D939),
+    ("BiquadFilter", "type", "LOWSHELF", D940),
+    ("BiquadFilter", "type", "NOTCH", D942),
+    ("BiquadFilter", "type", "PEAKING", D943),
+    ("BlendedVolumeStyle", "weightFunction1", "ALPHA1", D837),
+    ("BlendedVolumeStyle", "weightFunction1", "ALPHA2", D836),
+    ("BlendedVolumeStyle", "weightFunction1", "CONSTANT", D844),
+    ("BlendedVolumeStyle", "weightFunction1", "ONE_MINUS_ALPHA1", D835),
+    ("BlendedVolumeStyle", "weightFunction1", "ONE_MINUS_ALPHA2", D834),
+    ("BlendedVolumeStyle", "weightFunction1", "TABLE", D839),
+    ("BlendedVolumeStyle", "weightFunction2", "ALPHA1", D837),
+    ("BlendedVolumeStyle", "weightFunction2", "ALPHA2", D836),
+    ("BlendedVolumeStyle", "weightFunction2", "CONSTANT", D844),
+    ("BlendedVolumeStyle", "weightFunction2", "ONE_MINUS_ALPHA1", D835),
+    ("BlendedVolumeStyle", "weightFunction2", "ONE_MINUS_ALPHA2", D834),
+    ("BlendedVolumeStyle", "weightFunction2", "TABLE", D839),
+    ("BufferAudioSource", "channelCountMode", "CLAMPED_MAX", D930),
+    ("BufferAudioSource", "channelCountMode", "EXPLICIT", D933),
+    ("BufferAudioSource", "channelCountMode", "MAX", D941),
+    ("BufferAudioSource", "channelInterpretation", "DISCRETE", D932),
+    ("BufferAudioSource", "channelInterpretation", "SPEAKERS", D946),
+    ("ChannelMerger", "channelCountMode", "CLAMPED_MAX", D930),
+    ("ChannelMerger", "channelCountMode", "EXPLICIT", D933),
+    ("ChannelMerger", "channelCountMode", "MAX", D941),
+    ("ChannelMerger", "channelInterpretation", "DISCRETE", D932),
+    ("ChannelMerger", "channelInterpretation", "SPEAKERS", D946),
+    ("ChannelSelector", "channelCountMode", "CLAMPED_MAX", D930),
+    ("ChannelSelector", "channelCountMode", "EXPLICIT", D933),
+    ("ChannelSelector", "channelCountMode", "MAX", D941),
+    ("ChannelSelector", "channelInterpretation", "DISCRETE", D932),
+    ("ChannelSelector", "channelInterpretation", "SPEAKERS", D946),
+    ("ChannelSplitter", "channelCountMode", "CLAMPED_MAX", D930),
+    ("ChannelSplitter", "channelCountMode", "EXPLICIT", D933),
+    ("ChannelSplitter", "channelCountMode", "MAX", D941),
+    ("ChannelSplitter", "channelInterpretation", "DISCRETE", D932),
+    ("ChannelSplitter", "channelInterpretation", "SPEAKERS", D946),
+    ("CollisionCollection", "appliedParameters", "\"BOUNCE\"", D711),
     ("CollisionCollection", "appliedParameters", "\"CONSTANT_FORCE\"", D59),
     ("CollisionCollection", "appliedParameters", "\"ERROR_REDUCTION\"", D60),
     ("CollisionCollection", "appliedParameters", "\"FRICTION_COEFFICIENT-2\"", D56),
@@ -4428,11 +4422,11 @@ pub static VALUES: &[(&str, &str, &str, &str)] = &[
     ("CollisionCollection", "appliedParameters", "\"SPEED-2\"", D58),
     ("CollisionCollection", "appliedParameters", "\"SPEED_1\"", D55),
     ("CollisionCollection", "appliedParameters", "\"SPEED_2\"", D58),
-    ("CollisionCollection", "appliedParameters", "\"USER_FRICTION\"", D783),
-    ("ComposedShader", "language", "Cg", D1220),
+    ("CollisionCollection", "appliedParameters", "\"USER_FRICTION\"", D780),
+    ("ComposedShader", "language", "Cg", D1217),
     ("ComposedShader", "language", "GLSL", D461),
     ("ComposedShader", "language", "HLSL", D406),
-    ("Contact", "appliedParameters", "\"BOUNCE\"", D714),
+    ("Contact", "appliedParameters", "\"BOUNCE\"", D711),
     ("Contact", "appliedParameters", "\"CONSTANT_FORCE\"", D59),
     ("Contact", "appliedParameters", "\"ERROR_REDUCTION\"", D60),
     ("Contact", "appliedParameters", "\"FRICTION_COEFFICIENT-2\"", D56),
@@ -4445,27 +4439,27 @@ pub static VALUES: &[(&str, &str, &str, &str)] = &[
     ("Contact", "appliedParameters", "\"SPEED-2\"", D58),
     ("Contact", "appliedParameters", "\"SPEED_1\"", D55),
     ("Contact", "appliedParameters", "\"SPEED_2\"", D58),
-    ("Contact", "appliedParameters", "\"USER_FRICTION\"", D783),
-    ("Convolver", "channelCountMode", "CLAMPED_MAX", D933),
-    ("Convolver", "channelCountMode", "EXPLICIT", D936),
-    ("Convolver", "channelCountMode", "MAX", D944),
-    ("Convolver", "channelInterpretation", "DISCRETE", D935),
-    ("Convolver", "channelInterpretation", "SPEAKERS", D949),
-    ("Delay", "channelCountMode", "CLAMPED_MAX", D933),
-    ("Delay", "channelCountMode", "EXPLICIT", D936),
-    ("Delay", "channelCountMode", "MAX", D944),
-    ("Delay", "channelInterpretation", "DISCRETE", D935),
-    ("Delay", "channelInterpretation", "SPEAKERS", D949),
-    ("DoubleAxisHingeJoint", "forceOutput", "\"ALL\"", D961),
-    ("DoubleAxisHingeJoint", "forceOutput", "\"NONE\"", D1224),
-    ("DynamicsCompressor", "channelCountMode", "CLAMPED_MAX", D933),
-    ("DynamicsCompressor", "channelCountMode", "EXPLICIT", D936),
-    ("DynamicsCompressor", "channelCountMode", "MAX", D944),
-    ("DynamicsCompressor", "channelInterpretation", "DISCRETE", D935),
-    ("DynamicsCompressor", "channelInterpretation", "SPEAKERS", D949),
-    ("EspduTransform", "networkMode", "networkReader", D1179),
-    ("EspduTransform", "networkMode", "networkWriter", D1299),
-    ("EspduTransform", "networkMode", "standAlone", D1133),
+    ("Contact", "appliedParameters", "\"USER_FRICTION\"", D780),
+    ("Convolver", "channelCountMode", "CLAMPED_MAX", D930),
+    ("Convolver", "channelCountMode", "EXPLICIT", D933),
+    ("Convolver", "channelCountMode", "MAX", D941),
+    ("Convolver", "channelInterpretation", "DISCRETE", D932),
+    ("Convolver", "channelInterpretation", "SPEAKERS", D946),
+    ("Delay", "channelCountMode", "CLAMPED_MAX", D930),
+    ("Delay", "channelCountMode", "EXPLICIT", D933),
+    ("Delay", "channelCountMode", "MAX", D941),
+    ("Delay", "channelInterpretation", "DISCRETE", D932),
+    ("Delay", "channelInterpretation", "SPEAKERS", D946),
+    ("DoubleAxisHingeJoint", "forceOutput", "\"ALL\"", D958),
+    ("DoubleAxisHingeJoint", "forceOutput", "\"NONE\"", D1221),
+    ("DynamicsCompressor", "channelCountMode", "CLAMPED_MAX", D930),
+    ("DynamicsCompressor", "channelCountMode", "EXPLICIT", D933),
+    ("DynamicsCompressor", "channelCountMode", "MAX", D941),
+    ("DynamicsCompressor", "channelInterpretation", "DISCRETE", D932),
+    ("DynamicsCompressor", "channelInterpretation", "SPEAKERS", D946),
+    ("EspduTransform", "networkMode", "networkReader", D1176),
+    ("EspduTransform", "networkMode", "networkWriter", D1296),
+    ("EspduTransform", "networkMode", "standAlone", D1130),
     ("FillProperties", "hatchStyle", "1", D284),
     ("FillProperties", "hatchStyle", "10", D22),
     ("FillProperties", "hatchStyle", "11", D10),
@@ -4477,7 +4471,7 @@ pub static VALUES: &[(&str, &str, &str, &str)] = &[
     ("FillProperties", "hatchStyle", "17", D8),
     ("FillProperties", "hatchStyle", "18", D15),
     ("FillProperties", "hatchStyle", "19", D13),
-    ("FillProperties", "hatchStyle", "2", D851),
+    ("FillProperties", "hatchStyle", "2", D848),
     ("FillProperties", "hatchStyle", "3", D561),
     ("FillProperties", "hatchStyle", "4", D425),
     ("FillProperties", "hatchStyle", "5", D285),
@@ -4485,78 +4479,76 @@ pub static VALUES: &[(&str, &str, &str, &str)] = &[
     ("FillProperties", "hatchStyle", "7", D3),
     ("FillProperties", "hatchStyle", "8", D18),
     ("FillProperties", "hatchStyle", "9", D2),
-    ("Fog", "fogType", "EXPONENTIAL", D1093),
-    ("Fog", "fogType", "LINEAR", D1173),
-    ("FontStyle", "family", "\"SANS\"", D1053),
-    ("FontStyle", "family", "\"SERIF\"", D1054),
-    ("FontStyle", "family", "\"TYPEWRITER\"", D1052),
-    ("FontStyle", "style", "BOLD", D994),
-    ("FontStyle", "style", "BOLDITALIC", D993),
-    ("FontStyle", "style", "ITALIC", D1166),
-    ("FontStyle", "style", "PLAIN", D1055),
-    ("Gain", "channelCountMode", "CLAMPED_MAX", D933),
-    ("Gain", "channelCountMode", "EXPLICIT", D936),
-    ("Gain", "channelCountMode", "MAX", D944),
-    ("Gain", "channelInterpretation", "DISCRETE", D935),
-    ("Gain", "channelInterpretation", "SPEAKERS", D949),
-    ("GaussianSplats", "colorSpace", "LIN_REC709_DISPLAY", D1028),
-    ("GaussianSplats", "colorSpace", "SRGB_REC709_DISPLAY", D1028),
-    ("GeneratedCubeMapTexture", "update", "ALWAYS", D1368),
-    ("GeneratedCubeMapTexture", "update", "NEXT_FRAME_ONLY", D1283),
-    ("GeneratedCubeMapTexture", "update", "NONE", D1225),
-    ("HAnimDisplacer", "name", "glabella", D1119),
+    ("Fog", "fogType", "EXPONENTIAL", D1090),
+    ("Fog", "fogType", "LINEAR", D1170),
+    ("FontStyle", "family", "\"SANS\"", D1050),
+    ("FontStyle", "family", "\"SERIF\"", D1051),
+    ("FontStyle", "family", "\"TYPEWRITER\"", D1049),
+    ("FontStyle", "style", "BOLD", D991),
+    ("FontStyle", "style", "BOLDITALIC", D990),
+    ("FontStyle", "style", "ITALIC", D1163),
+    ("FontStyle", "style", "PLAIN", D1052),
+    ("Gain", "channelCountMode", "CLAMPED_MAX", D930),
+    ("Gain", "channelCountMode", "EXPLICIT", D933),
+    ("Gain", "channelCountMode", "MAX", D941),
+    ("Gain", "channelInterpretation", "DISCRETE", D932),
+    ("Gain", "channelInterpretation", "SPEAKERS", D946),
+    ("GaussianSplats", "colorSpace", "LIN_REC709_DISPLAY", D1025),
+    ("GaussianSplats", "colorSpace", "SRGB_REC709_DISPLAY", D1025),
+    ("GeneratedCubeMapTexture", "update", "ALWAYS", D1365),
+    ("GeneratedCubeMapTexture", "update", "NEXT_FRAME_ONLY", D1280),
+    ("GeneratedCubeMapTexture", "update", "NONE", D1222),
+    ("HAnimDisplacer", "name", "glabella", D1116),
     ("HAnimDisplacer", "name", "l_axilla_distal", D366),
     ("HAnimDisplacer", "name", "l_axilla_proximal", D367),
     ("HAnimDisplacer", "name", "l_gonion", D368),
     ("HAnimDisplacer", "name", "l_infraorbitale", D369),
-    ("HAnimDisplacer", "name", "l_tragion", D1232),
+    ("HAnimDisplacer", "name", "l_tragion", D1229),
     ("HAnimDisplacer", "name", "r_axilla_distal", D593),
     ("HAnimDisplacer", "name", "r_axilla_posterior_folds", D597),
     ("HAnimDisplacer", "name", "r_axilla_proximal", D594),
     ("HAnimDisplacer", "name", "r_gonion", D595),
     ("HAnimDisplacer", "name", "r_infraorbitale", D596),
-    ("HAnimDisplacer", "name", "r_tragion", D1232),
-    ("HAnimDisplacer", "name", "sellion", D1247),
+    ("HAnimDisplacer", "name", "r_tragion", D1229),
+    ("HAnimDisplacer", "name", "sellion", D1244),
     ("HAnimDisplacer", "name", "skull_vertex", D107),
-    ("HAnimDisplacer", "name", "supramenton", D1012),
+    ("HAnimDisplacer", "name", "supramenton", D1009),
     ("HAnimDisplacer", "name", "suprasternale", D674),
     ("HAnimHumanoid", "version", "1.0", D351),
     ("HAnimHumanoid", "version", "2.0", D591),
     ("HAnimHumanoid", "version", "2.1", D592),
-    ("HAnimSite", "name", "glabella", D1119),
+    ("HAnimSite", "name", "glabella", D1116),
     ("HAnimSite", "name", "l_axilla_distal", D366),
     ("HAnimSite", "name", "l_axilla_proximal", D367),
     ("HAnimSite", "name", "l_gonion", D368),
     ("HAnimSite", "name", "l_infraorbitale", D369),
-    ("HAnimSite", "name", "l_tragion", D1232),
+    ("HAnimSite", "name", "l_tragion", D1229),
     ("HAnimSite", "name", "r_axilla_distal", D593),
     ("HAnimSite", "name", "r_axilla_posterior_folds", D597),
     ("HAnimSite", "name", "r_axilla_proximal", D594),
     ("HAnimSite", "name", "r_gonion", D595),
     ("HAnimSite", "name", "r_infraorbitale", D596),
-    ("HAnimSite", "name", "r_tragion", D1232),
-    ("HAnimSite", "name", "sellion", D1247),
+    ("HAnimSite", "name", "r_tragion", D1229),
+    ("HAnimSite", "name", "sellion", D1244),
     ("HAnimSite", "name", "skull_vertex", D107),
-    ("HAnimSite", "name", "supramenton", D1012),
+    ("HAnimSite", "name", "supramenton", D1009),
     ("HAnimSite", "name", "suprasternale", D674),
-    ("Layer", "objectType", "\"ALL\"", D1082),
-    ("Layer", "objectType", "\"NONE\"", D1226),
+    ("Layer", "objectType", "\"ALL\"", D1079),
+    ("Layer", "objectType", "\"NONE\"", D1223),
     ("Layer", "objectType", "\"TERRAIN\"", D677),
-    ("LayoutLayer", "objectType", "\"ALL\"", D1082),
-    ("LayoutLayer", "objectType", "\"NONE\"", D1226),
+    ("LayoutLayer", "objectType", "\"ALL\"", D1079),
+    ("LayoutLayer", "objectType", "\"NONE\"", D1223),
     ("LayoutLayer", "objectType", "\"TERRAIN\"", D677),
-    ("LinePickSensor", "intersectionType", "BOUNDS", D679),
-    ("LinePickSensor", "intersectionType", "GEOMETRY", D679),
-    ("LinePickSensor", "matchCriterion", "MATCH_ANY", D968),
-    ("LinePickSensor", "matchCriterion", "MATCH_EVERY", D1092),
-    ("LinePickSensor", "matchCriterion", "MATCH_ONLY_ONE", D1238),
-    ("LinePickSensor", "objectType", "\"ALL\"", D1082),
-    ("LinePickSensor", "objectType", "\"NONE\"", D1226),
+    ("LinePickSensor", "matchCriterion", "MATCH_ANY", D965),
+    ("LinePickSensor", "matchCriterion", "MATCH_EVERY", D1089),
+    ("LinePickSensor", "matchCriterion", "MATCH_ONLY_ONE", D1235),
+    ("LinePickSensor", "objectType", "\"ALL\"", D1079),
+    ("LinePickSensor", "objectType", "\"NONE\"", D1223),
     ("LinePickSensor", "objectType", "\"TERRAIN\"", D677),
-    ("LinePickSensor", "sortOrder", "ALL", D1091),
-    ("LinePickSensor", "sortOrder", "ALL_SORTED", D1090),
-    ("LinePickSensor", "sortOrder", "ANY", D969),
-    ("LinePickSensor", "sortOrder", "CLOSEST", D1286),
+    ("LinePickSensor", "sortOrder", "ALL", D1088),
+    ("LinePickSensor", "sortOrder", "ALL_SORTED", D1087),
+    ("LinePickSensor", "sortOrder", "ANY", D966),
+    ("LinePickSensor", "sortOrder", "CLOSEST", D1283),
     ("LineProperties", "linetype", "1", D651),
     ("LineProperties", "linetype", "10", D5),
     ("LineProperties", "linetype", "11", D4),
@@ -4564,7 +4556,7 @@ pub static VALUES: &[(&str, &str, &str, &str)] = &[
     ("LineProperties", "linetype", "13", D12),
     ("LineProperties", "linetype", "14", D0),
     ("LineProperties", "linetype", "15", D1),
-    ("LineProperties", "linetype", "16", D848),
+    ("LineProperties", "linetype", "16", D845),
     ("LineProperties", "linetype", "2", D183),
     ("LineProperties", "linetype", "3", D206),
     ("LineProperties", "linetype", "4", D182),
@@ -4573,174 +4565,168 @@ pub static VALUES: &[(&str, &str, &str, &str)] = &[
     ("LineProperties", "linetype", "7", D17),
     ("LineProperties", "linetype", "8", D7),
     ("LineProperties", "linetype", "9", D19),
-    ("LocalFog", "fogType", "EXPONENTIAL", D1093),
-    ("LocalFog", "fogType", "LINEAR", D1173),
-    ("MotorJoint", "forceOutput", "\"ALL\"", D961),
-    ("MotorJoint", "forceOutput", "\"NONE\"", D1224),
+    ("LocalFog", "fogType", "EXPONENTIAL", D1090),
+    ("LocalFog", "fogType", "LINEAR", D1170),
+    ("MotorJoint", "forceOutput", "\"ALL\"", D958),
+    ("MotorJoint", "forceOutput", "\"NONE\"", D1221),
     ("MultiTexture", "function", "\"\"", D427),
     ("MultiTexture", "function", "\"ALPHAREPLICATE\"", D588),
     ("MultiTexture", "function", "\"COMPLEMENT\"", D353),
-    ("NavigationInfo", "transitionType", "\"ANIMATE\"", D1293),
-    ("NavigationInfo", "transitionType", "\"LINEAR\"", D1378),
-    ("NavigationInfo", "transitionType", "\"TELEPORT\"", D1137),
-    ("NavigationInfo", "type", "\"ANY\"", D1003),
-    ("NavigationInfo", "type", "\"EXAMINE\"", D1402),
-    ("NavigationInfo", "type", "\"EXPLORE\"", D1036),
-    ("NavigationInfo", "type", "\"FLY\"", D1112),
-    ("NavigationInfo", "type", "\"LOOKAT\"", D1222),
-    ("NavigationInfo", "type", "\"NONE\"", D1076),
-    ("NavigationInfo", "type", "\"WALK\"", D1111),
-    ("PackagedShader", "language", "Cg", D1220),
+    ("NavigationInfo", "transitionType", "\"ANIMATE\"", D1290),
+    ("NavigationInfo", "transitionType", "\"LINEAR\"", D1375),
+    ("NavigationInfo", "transitionType", "\"TELEPORT\"", D1134),
+    ("NavigationInfo", "type", "\"ANY\"", D1000),
+    ("NavigationInfo", "type", "\"EXAMINE\"", D1399),
+    ("NavigationInfo", "type", "\"EXPLORE\"", D1033),
+    ("NavigationInfo", "type", "\"FLY\"", D1109),
+    ("NavigationInfo", "type", "\"LOOKAT\"", D1219),
+    ("NavigationInfo", "type", "\"NONE\"", D1073),
+    ("NavigationInfo", "type", "\"WALK\"", D1108),
+    ("PackagedShader", "language", "Cg", D1217),
     ("PackagedShader", "language", "GLSL", D461),
     ("PackagedShader", "language", "HLSL", D406),
-    ("ParticleSystem", "geometryType", "GEOMETRY", D1118),
-    ("ParticleSystem", "geometryType", "LINE", D1172),
-    ("ParticleSystem", "geometryType", "POINT", D1260),
-    ("ParticleSystem", "geometryType", "QUAD", D1271),
-    ("ParticleSystem", "geometryType", "SPRITE", D1272),
-    ("ParticleSystem", "geometryType", "TRIANGLE", D1248),
-    ("PeriodicWave", "type", "CUSTOM", D934),
-    ("PeriodicWave", "type", "SAWTOOTH", D947),
-    ("PeriodicWave", "type", "SINE", D948),
-    ("PeriodicWave", "type", "SQUARE", D950),
-    ("PeriodicWave", "type", "TRIANGLE", D951),
-    ("PickableGroup", "objectType", "\"ALL\"", D1082),
-    ("PickableGroup", "objectType", "\"NONE\"", D1226),
+    ("ParticleSystem", "geometryType", "GEOMETRY", D1115),
+    ("ParticleSystem", "geometryType", "LINE", D1169),
+    ("ParticleSystem", "geometryType", "POINT", D1257),
+    ("ParticleSystem", "geometryType", "QUAD", D1268),
+    ("ParticleSystem", "geometryType", "SPRITE", D1269),
+    ("ParticleSystem", "geometryType", "TRIANGLE", D1245),
+    ("PeriodicWave", "type", "CUSTOM", D931),
+    ("PeriodicWave", "type", "SAWTOOTH", D944),
+    ("PeriodicWave", "type", "SINE", D945),
+    ("PeriodicWave", "type", "SQUARE", D947),
+    ("PeriodicWave", "type", "TRIANGLE", D948),
+    ("PickableGroup", "objectType", "\"ALL\"", D1079),
+    ("PickableGroup", "objectType", "\"NONE\"", D1223),
     ("PickableGroup", "objectType", "\"TERRAIN\"", D677),
-    ("PointPickSensor", "intersectionType", "BOUNDS", D679),
-    ("PointPickSensor", "intersectionType", "GEOMETRY", D679),
-    ("PointPickSensor", "matchCriterion", "MATCH_ANY", D968),
-    ("PointPickSensor", "matchCriterion", "MATCH_EVERY", D1092),
-    ("PointPickSensor", "matchCriterion", "MATCH_ONLY_ONE", D1238),
-    ("PointPickSensor", "objectType", "\"ALL\"", D1082),
-    ("PointPickSensor", "objectType", "\"NONE\"", D1226),
+    ("PointPickSensor", "matchCriterion", "MATCH_ANY", D965),
+    ("PointPickSensor", "matchCriterion", "MATCH_EVERY", D1089),
+    ("PointPickSensor", "matchCriterion", "MATCH_ONLY_ONE", D1235),
+    ("PointPickSensor", "objectType", "\"ALL\"", D1079),
+    ("PointPickSensor", "objectType", "\"NONE\"", D1223),
     ("PointPickSensor", "objectType", "\"TERRAIN\"", D677),
-    ("PointPickSensor", "sortOrder", "ALL", D1091),
-    ("PointPickSensor", "sortOrder", "ALL_SORTED", D1090),
-    ("PointPickSensor", "sortOrder", "ANY", D969),
-    ("PointPickSensor", "sortOrder", "CLOSEST", D1286),
-    ("PrimitivePickSensor", "intersectionType", "BOUNDS", D679),
-    ("PrimitivePickSensor", "intersectionType", "GEOMETRY", D679),
-    ("PrimitivePickSensor", "matchCriterion", "MATCH_ANY", D968),
-    ("PrimitivePickSensor", "matchCriterion", "MATCH_EVERY", D1092),
-    ("PrimitivePickSensor", "matchCriterion", "MATCH_ONLY_ONE", D1238),
-    ("PrimitivePickSensor", "objectType", "\"ALL\"", D1082),
-    ("PrimitivePickSensor", "objectType", "\"NONE\"", D1226),
+    ("PointPickSensor", "sortOrder", "ALL", D1088),
+    ("PointPickSensor", "sortOrder", "ALL_SORTED", D1087),
+    ("PointPickSensor", "sortOrder", "ANY", D966),
+    ("PointPickSensor", "sortOrder", "CLOSEST", D1283),
+    ("PrimitivePickSensor", "matchCriterion", "MATCH_ANY", D965),
+    ("PrimitivePickSensor", "matchCriterion", "MATCH_EVERY", D1089),
+    ("PrimitivePickSensor", "matchCriterion", "MATCH_ONLY_ONE", D1235),
+    ("PrimitivePickSensor", "objectType", "\"ALL\"", D1079),
+    ("PrimitivePickSensor", "objectType", "\"NONE\"", D1223),
     ("PrimitivePickSensor", "objectType", "\"TERRAIN\"", D677),
-    ("PrimitivePickSensor", "sortOrder", "ALL", D1091),
-    ("PrimitivePickSensor", "sortOrder", "ALL_SORTED", D1090),
-    ("PrimitivePickSensor", "sortOrder", "ANY", D969),
-    ("PrimitivePickSensor", "sortOrder", "CLOSEST", D1286),
-    ("ProgramShader", "language", "Cg", D1220),
+    ("PrimitivePickSensor", "sortOrder", "ALL", D1088),
+    ("PrimitivePickSensor", "sortOrder", "ALL_SORTED", D1087),
+    ("PrimitivePickSensor", "sortOrder", "ANY", D966),
+    ("PrimitivePickSensor", "sortOrder", "CLOSEST", D1283),
+    ("ProgramShader", "language", "Cg", D1217),
     ("ProgramShader", "language", "GLSL", D461),
     ("ProgramShader", "language", "HLSL", D406),
     ("ProjectionVolumeStyle", "type", "AVERAGE", D43),
     ("ProjectionVolumeStyle", "type", "MAX", D399),
     ("ProjectionVolumeStyle", "type", "MIN", D407),
-    ("ReceiverPdu", "networkMode", "networkReader", D1179),
-    ("ReceiverPdu", "networkMode", "networkWriter", D1299),
-    ("ReceiverPdu", "networkMode", "standAlone", D1133),
-    ("ScreenFontStyle", "family", "\"SANS\"", D1053),
-    ("ScreenFontStyle", "family", "\"SERIF\"", D1054),
-    ("ScreenFontStyle", "family", "\"TYPEWRITER\"", D1052),
-    ("ScreenFontStyle", "style", "BOLD", D994),
-    ("ScreenFontStyle", "style", "BOLDITALIC", D993),
-    ("ScreenFontStyle", "style", "ITALIC", D1166),
-    ("ScreenFontStyle", "style", "PLAIN", D1055),
+    ("ReceiverPdu", "networkMode", "networkReader", D1176),
+    ("ReceiverPdu", "networkMode", "networkWriter", D1296),
+    ("ReceiverPdu", "networkMode", "standAlone", D1130),
+    ("ScreenFontStyle", "family", "\"SANS\"", D1050),
+    ("ScreenFontStyle", "family", "\"SERIF\"", D1051),
+    ("ScreenFontStyle", "family", "\"TYPEWRITER\"", D1049),
+    ("ScreenFontStyle", "style", "BOLD", D991),
+    ("ScreenFontStyle", "style", "BOLDITALIC", D990),
+    ("ScreenFontStyle", "style", "ITALIC", D1163),
+    ("ScreenFontStyle", "style", "PLAIN", D1052),
     ("ShadedVolumeStyle", "phaseFunction", "Henyey-Greenstein", D282),
-    ("ShadedVolumeStyle", "phaseFunction", "NONE", D1227),
-    ("ShaderPart", "type", "FRAGMENT", D1106),
-    ("ShaderPart", "type", "VERTEX", D1400),
-    ("ShaderProgram", "type", "FRAGMENT", D1106),
-    ("ShaderProgram", "type", "VERTEX", D1400),
-    ("SignalPdu", "networkMode", "networkReader", D1179),
-    ("SignalPdu", "networkMode", "networkWriter", D1299),
-    ("SignalPdu", "networkMode", "standAlone", D1133),
-    ("SingleAxisHingeJoint", "forceOutput", "\"ALL\"", D961),
-    ("SingleAxisHingeJoint", "forceOutput", "\"NONE\"", D1224),
-    ("SliderJoint", "forceOutput", "\"ALL\"", D961),
-    ("SliderJoint", "forceOutput", "\"NONE\"", D1224),
-    ("SpatialSound", "distanceModel", "EXPONENTIAL", D937),
-    ("SpatialSound", "distanceModel", "INVERSE", D940),
-    ("SpatialSound", "distanceModel", "LINEAR", D941),
-    ("StreamAudioDestination", "channelCountMode", "CLAMPED_MAX", D933),
-    ("StreamAudioDestination", "channelCountMode", "EXPLICIT", D936),
-    ("StreamAudioDestination", "channelCountMode", "MAX", D944),
-    ("StreamAudioDestination", "channelInterpretation", "DISCRETE", D935),
-    ("StreamAudioDestination", "channelInterpretation", "SPEAKERS", D949),
-    ("StreamAudioSource", "channelCountMode", "CLAMPED_MAX", D933),
-    ("StreamAudioSource", "channelCountMode", "EXPLICIT", D936),
-    ("StreamAudioSource", "channelCountMode", "MAX", D944),
-    ("StreamAudioSource", "channelInterpretation", "DISCRETE", D935),
-    ("StreamAudioSource", "channelInterpretation", "SPEAKERS", D949),
-    ("TextureCoordinateGenerator", "mode", "CAMERASPACENORMAL", D845),
-    ("TextureCoordinateGenerator", "mode", "CAMERASPACEPOSITION", D846),
-    ("TextureCoordinateGenerator", "mode", "CAMERASPACEREFLECTIONVECTOR", D841),
-    ("TextureCoordinateGenerator", "mode", "COORD", D844),
-    ("TextureCoordinateGenerator", "mode", "COORD-EYE", D843),
+    ("ShadedVolumeStyle", "phaseFunction", "NONE", D1224),
+    ("ShaderPart", "type", "FRAGMENT", D1103),
+    ("ShaderPart", "type", "VERTEX", D1397),
+    ("ShaderProgram", "type", "FRAGMENT", D1103),
+    ("ShaderProgram", "type", "VERTEX", D1397),
+    ("SignalPdu", "networkMode", "networkReader", D1176),
+    ("SignalPdu", "networkMode", "networkWriter", D1296),
+    ("SignalPdu", "networkMode", "standAlone", D1130),
+    ("SingleAxisHingeJoint", "forceOutput", "\"ALL\"", D958),
+    ("SingleAxisHingeJoint", "forceOutput", "\"NONE\"", D1221),
+    ("SliderJoint", "forceOutput", "\"ALL\"", D958),
+    ("SliderJoint", "forceOutput", "\"NONE\"", D1221),
+    ("SpatialSound", "distanceModel", "EXPONENTIAL", D934),
+    ("SpatialSound", "distanceModel", "INVERSE", D937),
+    ("SpatialSound", "distanceModel", "LINEAR", D938),
+    ("StreamAudioDestination", "channelCountMode", "CLAMPED_MAX", D930),
+    ("StreamAudioDestination", "channelCountMode", "EXPLICIT", D933),
+    ("StreamAudioDestination", "channelCountMode", "MAX", D941),
+    ("StreamAudioDestination", "channelInterpretation", "DISCRETE", D932),
+    ("StreamAudioDestination", "channelInterpretation", "SPEAKERS", D946),
+    ("StreamAudioSource", "channelCountMode", "CLAMPED_MAX", D930),
+    ("StreamAudioSource", "channelCountMode", "EXPLICIT", D933),
+    ("StreamAudioSource", "channelCountMode", "MAX", D941),
+    ("StreamAudioSource", "channelInterpretation", "DISCRETE", D932),
+    ("StreamAudioSource", "channelInterpretation", "SPEAKERS", D946),
+    ("TextureCoordinateGenerator", "mode", "CAMERASPACENORMAL", D842),
+    ("TextureCoordinateGenerator", "mode", "CAMERASPACEPOSITION", D843),
+    ("TextureCoordinateGenerator", "mode", "CAMERASPACEREFLECTIONVECTOR", D838),
+    ("TextureCoordinateGenerator", "mode", "COORD", D841),
+    ("TextureCoordinateGenerator", "mode", "COORD-EYE", D840),
     ("TextureCoordinateGenerator", "mode", "NOISE", D53),
     ("TextureCoordinateGenerator", "mode", "NOISE-EYE", D52),
     ("TextureCoordinateGenerator", "mode", "SPHERE", D170),
     ("TextureCoordinateGenerator", "mode", "SPHERE-LOCAL", D663),
-    ("TextureCoordinateGenerator", "mode", "SPHERE-REFLECT", D1320),
+    ("TextureCoordinateGenerator", "mode", "SPHERE-REFLECT", D1317),
     ("TextureCoordinateGenerator", "mode", "SPHERE-REFLECT-LOCAL", D636),
     ("TextureProperties", "boundaryModeR", "CLAMP", D116),
     ("TextureProperties", "boundaryModeR", "CLAMP_TO_BOUNDARY", D115),
     ("TextureProperties", "boundaryModeR", "CLAMP_TO_EDGE", D114),
-    ("TextureProperties", "boundaryModeR", "MIRRORED_REPEAT", D688),
+    ("TextureProperties", "boundaryModeR", "MIRRORED_REPEAT", D685),
     ("TextureProperties", "boundaryModeR", "REPEAT", D586),
     ("TextureProperties", "boundaryModeS", "CLAMP", D116),
     ("TextureProperties", "boundaryModeS", "CLAMP_TO_BOUNDARY", D115),
     ("TextureProperties", "boundaryModeS", "CLAMP_TO_EDGE", D114),
-    ("TextureProperties", "boundaryModeS", "MIRRORED_REPEAT", D688),
+    ("TextureProperties", "boundaryModeS", "MIRRORED_REPEAT", D685),
     ("TextureProperties", "boundaryModeS", "REPEAT", D586),
     ("TextureProperties", "boundaryModeT", "CLAMP", D116),
     ("TextureProperties", "boundaryModeT", "CLAMP_TO_BOUNDARY", D115),
     ("TextureProperties", "boundaryModeT", "CLAMP_TO_EDGE", D114),
-    ("TextureProperties", "boundaryModeT", "MIRRORED_REPEAT", D688),
+    ("TextureProperties", "boundaryModeT", "MIRRORED_REPEAT", D685),
     ("TextureProperties", "boundaryModeT", "REPEAT", D586),
-    ("TextureProperties", "magnificationFilter", "AVG_PIXEL", D1406),
-    ("TextureProperties", "magnificationFilter", "DEFAULT", D1005),
-    ("TextureProperties", "magnificationFilter", "FASTEST", D1097),
-    ("TextureProperties", "magnificationFilter", "NEAREST_PIXEL", D1367),
-    ("TextureProperties", "magnificationFilter", "NICEST", D1125),
-    ("TextureProperties", "minificationFilter", "AVG_PIXEL", D1406),
-    ("TextureProperties", "minificationFilter", "AVG_PIXEL_AVG_MIPMAP", D1382),
-    ("TextureProperties", "minificationFilter", "AVG_PIXEL_NEAREST_MIPMAP", D1021),
-    ("TextureProperties", "minificationFilter", "DEFAULT", D1006),
-    ("TextureProperties", "minificationFilter", "FASTEST", D1096),
-    ("TextureProperties", "minificationFilter", "NEAREST_PIXEL", D1366),
-    ("TextureProperties", "minificationFilter", "NEAREST_PIXEL_AVG_MIPMAP", D1364),
-    ("TextureProperties", "minificationFilter", "NEAREST_PIXEL_NEAREST_MIPMAP", D1365),
-    ("TextureProperties", "minificationFilter", "NICEST", D1125),
-    ("TextureProperties", "textureCompression", "DEFAULT", D1004),
-    ("TextureProperties", "textureCompression", "FASTEST", D1097),
-    ("TextureProperties", "textureCompression", "HIGH", D1122),
-    ("TextureProperties", "textureCompression", "LOW", D1171),
-    ("TextureProperties", "textureCompression", "MEDIUM", D1208),
-    ("TextureProperties", "textureCompression", "NICEST", D1125),
-    ("TransmitterPdu", "networkMode", "networkReader", D1179),
-    ("TransmitterPdu", "networkMode", "networkWriter", D1299),
-    ("TransmitterPdu", "networkMode", "standAlone", D1133),
-    ("UniversalJoint", "forceOutput", "\"ALL\"", D961),
-    ("UniversalJoint", "forceOutput", "\"NONE\"", D1224),
-    ("VolumePickSensor", "intersectionType", "BOUNDS", D679),
-    ("VolumePickSensor", "intersectionType", "GEOMETRY", D679),
-    ("VolumePickSensor", "matchCriterion", "MATCH_ANY", D968),
-    ("VolumePickSensor", "matchCriterion", "MATCH_EVERY", D1092),
-    ("VolumePickSensor", "matchCriterion", "MATCH_ONLY_ONE", D1238),
-    ("VolumePickSensor", "objectType", "\"ALL\"", D1082),
-    ("VolumePickSensor", "objectType", "\"NONE\"", D1226),
+    ("TextureProperties", "magnificationFilter", "AVG_PIXEL", D1403),
+    ("TextureProperties", "magnificationFilter", "DEFAULT", D1002),
+    ("TextureProperties", "magnificationFilter", "FASTEST", D1094),
+    ("TextureProperties", "magnificationFilter", "NEAREST_PIXEL", D1364),
+    ("TextureProperties", "magnificationFilter", "NICEST", D1122),
+    ("TextureProperties", "minificationFilter", "AVG_PIXEL", D1403),
+    ("TextureProperties", "minificationFilter", "AVG_PIXEL_AVG_MIPMAP", D1379),
+    ("TextureProperties", "minificationFilter", "AVG_PIXEL_NEAREST_MIPMAP", D1018),
+    ("TextureProperties", "minificationFilter", "DEFAULT", D1003),
+    ("TextureProperties", "minificationFilter", "FASTEST", D1093),
+    ("TextureProperties", "minificationFilter", "NEAREST_PIXEL", D1363),
+    ("TextureProperties", "minificationFilter", "NEAREST_PIXEL_AVG_MIPMAP", D1361),
+    ("TextureProperties", "minificationFilter", "NEAREST_PIXEL_NEAREST_MIPMAP", D1362),
+    ("TextureProperties", "minificationFilter", "NICEST", D1122),
+    ("TextureProperties", "textureCompression", "DEFAULT", D1001),
+    ("TextureProperties", "textureCompression", "FASTEST", D1094),
+    ("TextureProperties", "textureCompression", "HIGH", D1119),
+    ("TextureProperties", "textureCompression", "LOW", D1168),
+    ("TextureProperties", "textureCompression", "MEDIUM", D1205),
+    ("TextureProperties", "textureCompression", "NICEST", D1122),
+    ("TransmitterPdu", "networkMode", "networkReader", D1176),
+    ("TransmitterPdu", "networkMode", "networkWriter", D1296),
+    ("TransmitterPdu", "networkMode", "standAlone", D1130),
+    ("UniversalJoint", "forceOutput", "\"ALL\"", D958),
+    ("UniversalJoint", "forceOutput", "\"NONE\"", D1221),
+    ("VolumePickSensor", "matchCriterion", "MATCH_ANY", D965),
+    ("VolumePickSensor", "matchCriterion", "MATCH_EVERY", D1089),
+    ("VolumePickSensor", "matchCriterion", "MATCH_ONLY_ONE", D1235),
+    ("VolumePickSensor", "objectType", "\"ALL\"", D1079),
+    ("VolumePickSensor", "objectType", "\"NONE\"", D1223),
     ("VolumePickSensor", "objectType", "\"TERRAIN\"", D677),
-    ("VolumePickSensor", "sortOrder", "ALL", D1091),
-    ("VolumePickSensor", "sortOrder", "ALL_SORTED", D1090),
-    ("VolumePickSensor", "sortOrder", "ANY", D969),
-    ("VolumePickSensor", "sortOrder", "CLOSEST", D1286),
-    ("WaveShaper", "channelCountMode", "CLAMPED_MAX", D933),
-    ("WaveShaper", "channelCountMode", "EXPLICIT", D936),
-    ("WaveShaper", "channelCountMode", "MAX", D944),
-    ("WaveShaper", "channelInterpretation", "DISCRETE", D935),
-    ("WaveShaper", "channelInterpretation", "SPEAKERS", D949),
+    ("VolumePickSensor", "sortOrder", "ALL", D1088),
+    ("VolumePickSensor", "sortOrder", "ALL_SORTED", D1087),
+    ("VolumePickSensor", "sortOrder", "ANY", D966),
+    ("VolumePickSensor", "sortOrder", "CLOSEST", D1283),
+    ("WaveShaper", "channelCountMode", "CLAMPED_MAX", D930),
+    ("WaveShaper", "channelCountMode", "EXPLICIT", D933),
+    ("WaveShaper", "channelCountMode", "MAX", D941),
+    ("WaveShaper", "channelInterpretation", "DISCRETE", D932),
+    ("WaveShaper", "channelInterpretation", "SPEAKERS", D946),
     ("WaveShaper", "oversample", "2X", D207),
     ("WaveShaper", "oversample", "4X", D575),
     ("WaveShaper", "oversample", "NONE", D428),
