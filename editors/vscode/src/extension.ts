@@ -3,6 +3,7 @@
 // symbols, quick fixes) is the server's.
 
 import * as vscode from "vscode";
+import { findServer, INSTALL_HINT } from "./server";
 import {
   LanguageClient,
   LanguageClientOptions,
@@ -18,13 +19,23 @@ function settings() {
   const config = vscode.workspace.getConfiguration("x3dcheck");
   const level = config.get<string>("level") || undefined;
   const rulesDocUrl = config.get<string>("rulesDocUrl") || undefined;
-  return { path: config.get<string>("path") || "x3dcheck", level, rulesDocUrl };
+  return { path: config.get<string>("path") || undefined, level, rulesDocUrl };
 }
 
 async function start(context: vscode.ExtensionContext): Promise<void> {
   const { path, level, rulesDocUrl } = settings();
+  const found = await findServer(context.extensionPath, path);
+  if (!found) {
+    // Not awaited: activation does not wait for the user to dismiss the message.
+    void vscode.window.showErrorMessage(INSTALL_HINT, "Open Settings").then((choice) => {
+      if (choice === "Open Settings") {
+        void vscode.commands.executeCommand("workbench.action.openSettings", "x3dcheck.path");
+      }
+    });
+    return;
+  }
   const serverOptions: ServerOptions = {
-    command: path,
+    command: found.command,
     args: ["server"],
     transport: TransportKind.stdio,
   };
@@ -39,7 +50,7 @@ async function start(context: vscode.ExtensionContext): Promise<void> {
     await client.start();
   } catch (error) {
     vscode.window.showErrorMessage(
-      `x3dcheck: could not start \`${path} server\` (set x3dcheck.path): ${error}`
+      `x3dcheck: could not start \`${found.command} server\` (from ${found.source}; set x3dcheck.path): ${error}`
     );
   }
 }
