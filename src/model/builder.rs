@@ -569,6 +569,15 @@ impl Builder {
     /// Adds a ROUTE in the current scope.
     pub fn add_route(&mut self, mut route: Route) {
         route.scope = self.scope();
+        if self.doc.encoding == Encoding::Vrml97 {
+            let bound = |name: &Named| {
+                self.doc
+                    .defs
+                    .get(&(route.scope, name.text.clone()))
+                    .copied()
+            };
+            route.vrml97_ends = Some([bound(&route.from_node), bound(&route.to_node)]);
+        }
         self.doc.routes.push(route);
     }
 

@@ -343,6 +343,42 @@ pub struct Route {
     pub to_field: Named,
     pub span: Span,
     pub scope: Scope,
+    /// VRML97 only: the nodes `from_node` and `to_node` named where the ROUTE is written,
+    /// since a later DEF may take a name over (14772-1 4.6.2). Set by
+    /// [`Builder::add_route`](builder::Builder::add_route); readers leave it `None`.
+    pub vrml97_ends: Option<[Option<NodeId>; 2]>,
+}
+
+/// The two ends of a ROUTE.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum RouteEnd {
+    From,
+    To,
+}
+
+impl Route {
+    /// The name written for `end`.
+    pub fn node_name(&self, end: RouteEnd) -> &Named {
+        match end {
+            RouteEnd::From => &self.from_node,
+            RouteEnd::To => &self.to_node,
+        }
+    }
+
+    /// The node `end` names in this document: in VRML97 the nearest DEF before the ROUTE,
+    /// else the DEF of that name in the ROUTE's scope. None: no such DEF here (an IMPORT
+    /// may still bring the node in).
+    pub fn node_id(&self, doc: &Document, end: RouteEnd) -> Option<NodeId> {
+        let index = match end {
+            RouteEnd::From => 0,
+            RouteEnd::To => 1,
+        };
+        self.vrml97_ends.and_then(|ends| ends[index]).or_else(|| {
+            doc.defs
+                .get(&(self.scope, self.node_name(end).text.clone()))
+                .copied()
+        })
+    }
 }
 
 /// An IMPORT statement (19775-1 4.9.2): `IMPORT inlineDEF.importedDEF AS name`, the XML

@@ -768,6 +768,7 @@ impl<'t, 's> JsonReader<'t, 's> {
             to_field: get("@toField"),
             span: route_span,
             scope: Scope::Scene,
+            vrml97_ends: None,
         };
         self.builder.add_route(route);
     }

@@ -742,6 +742,7 @@ impl<'s> XmlReader<'s> {
             to_field: get("toField"),
             span,
             scope: Scope::Scene,
+            vrml97_ends: None,
         });
     }
 

@@ -423,6 +423,7 @@ impl<'s> Reader<'s> {
                     to_field,
                     span,
                     scope: Scope::Scene,
+                    vrml97_ends: None,
                 });
             }
             None => self.recover_statement(),

@@ -7,7 +7,7 @@
 //! types, instances of undeclared prototypes) resolve to [`Lookup::Unchecked`].
 
 use crate::library::Library;
-use crate::model::{Document, NodeId, NodeKind, Route, Scope};
+use crate::model::{Document, NodeId, NodeKind, Route, RouteEnd, Scope};
 use crate::schema::{self, AccessType, FieldType, Version};
 use crate::validate::Ctx;
 
@@ -116,9 +116,9 @@ impl End<'_> {
     }
 }
 
-/// The node a ROUTE end named `name` in `scope` stands for.
-pub fn route_end<'a>(ctx: &'a Ctx, scope: Scope, name: &str) -> Option<End<'a>> {
-    if let Some(node) = route_node(ctx.doc, scope, name) {
+/// The node end `end` of `route` stands for: DEF'd here, or imported.
+pub fn route_end<'a>(ctx: &'a Ctx, route: &Route, end: RouteEnd) -> Option<End<'a>> {
+    if let Some(node) = route.node_id(ctx.doc, end) {
         return Some(End {
             doc: ctx.doc,
             node,
@@ -126,7 +126,8 @@ pub fn route_end<'a>(ctx: &'a Ctx, scope: Scope, name: &str) -> Option<End<'a>> 
             imported_from: None,
         });
     }
-    let (library, doc, node) = ctx.imports.node(ctx.doc, scope, name)?;
+    let name = &route.node_name(end).text;
+    let (library, doc, node) = ctx.imports.node(ctx.doc, route.scope, name)?;
     Some(End {
         doc,
         node,
@@ -138,8 +139,8 @@ pub fn route_end<'a>(ctx: &'a Ctx, scope: Scope, name: &str) -> Option<End<'a>> 
 /// Both ends of a ROUTE, when both resolve.
 pub fn route_ends<'a>(ctx: &'a Ctx, route: &Route) -> Option<(End<'a>, End<'a>)> {
     Some((
-        route_end(ctx, route.scope, &route.from_node.text)?,
-        route_end(ctx, route.scope, &route.to_node.text)?,
+        route_end(ctx, route, RouteEnd::From)?,
+        route_end(ctx, route, RouteEnd::To)?,
     ))
 }
 

@@ -4,7 +4,7 @@
 use super::endpoint::{
     did_you_mean, not_input_output_text, only_in_text, route_end, Direction, End, Lookup,
 };
-use crate::model::Named;
+use crate::model::{Named, RouteEnd};
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -46,12 +46,12 @@ fn check(ctx: &mut Ctx) {
     let mut found = Vec::new();
     for route in &doc.routes {
         let ends = [
-            (&route.from_node, &route.from_field, Direction::Out),
-            (&route.to_node, &route.to_field, Direction::In),
+            (RouteEnd::From, &route.from_field, Direction::Out),
+            (RouteEnd::To, &route.to_field, Direction::In),
         ];
-        for (node_name, field, direction) in ends {
+        for (which, field, direction) in ends {
             // An undefined node is ROUTE_NODE_UNDEFINED's finding.
-            if let Some(end) = route_end(ctx, route.scope, &node_name.text) {
+            if let Some(end) = route_end(ctx, route, which) {
                 found.extend(problem(&end, field, direction));
             }
         }

@@ -1,7 +1,6 @@
 //! ROUTE_NODE_UNDEFINED: a ROUTE end names no DEF in the ROUTE's name scope.
 
-use super::endpoint::route_node;
-use crate::model::{Document, Named, Route};
+use crate::model::{Document, Named, Route, RouteEnd};
 use crate::report::Diagnostic;
 use crate::validate::{suggest, Ctx};
 
@@ -45,10 +44,9 @@ fn check(ctx: &mut Ctx) {
     let doc = ctx.doc;
     let mut reported = 0;
     for route in &doc.routes {
-        for (attribute, name) in [("fromNode", &route.from_node), ("toNode", &route.to_node)] {
-            if route_node(doc, route.scope, &name.text).is_none()
-                && !imported(ctx, route, &name.text)
-            {
+        for (attribute, end) in [("fromNode", RouteEnd::From), ("toNode", RouteEnd::To)] {
+            let name = route.node_name(end);
+            if route.node_id(doc, end).is_none() && !imported(ctx, route, &name.text) {
                 let suggest = reported < MAX_SUGGESTIONS;
                 ctx.report(diagnostic(doc, route, attribute, name, suggest));
                 reported += 1;

@@ -10,7 +10,7 @@
 use std::collections::{HashMap, HashSet};
 
 use super::endpoint::route_node;
-use crate::model::{Document, Encoding, NodeId, NodeKind, Scope, Value};
+use crate::model::{Document, Encoding, NodeId, NodeKind, RouteEnd, Scope, Value};
 use crate::parse::behind::{Pass, Progress};
 use crate::validate::Ctx;
 
@@ -42,12 +42,12 @@ impl Wiring {
         let mut routed_from: HashMap<NodeId, Vec<String>> = HashMap::new();
         let mut routed_into: HashMap<NodeId, Vec<String>> = HashMap::new();
         for route in &doc.routes {
-            if let Some(node) = route_node(doc, route.scope, &route.from_node.text) {
+            if let Some(node) = route.node_id(doc, RouteEnd::From) {
                 let field = route.from_field.text.as_str();
                 let field = field.strip_suffix("_changed").unwrap_or(field);
                 routed_from.entry(node).or_default().push(field.to_string());
             }
-            if let Some(node) = route_node(doc, route.scope, &route.to_node.text) {
+            if let Some(node) = route.node_id(doc, RouteEnd::To) {
                 let field = route.to_field.text.as_str();
                 let field = field.strip_prefix("set_").unwrap_or(field);
                 routed_into.entry(node).or_default().push(field.to_string());
@@ -188,7 +188,7 @@ pub(crate) fn routed_fields(doc: &Document) -> HashSet<(NodeId, String)> {
     doc.routes
         .iter()
         .filter_map(|route| {
-            let node = route_node(doc, route.scope, &route.to_node.text)?;
+            let node = route.node_id(doc, RouteEnd::To)?;
             let field = route.to_field.text.as_str();
             let field = field.strip_prefix("set_").unwrap_or(field);
             let field = field.strip_suffix("_changed").unwrap_or(field);
