@@ -298,7 +298,7 @@ function renderDoc(rule) {
       text: `${rule.severity}, level ${rule.level}, X3D ${rule.versions}, clause ${rule.clause}`,
     }),
   );
-  body.append(markdown(rule.doc));
+  body.append(markdown(rule.doc ?? ""));
   return body;
 }
 
