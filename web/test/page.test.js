@@ -153,7 +153,7 @@ test("the rule catalogue and the version are shown", async () => {
   const rules = await page.$$eval("#rules > details.rule", (items) => items.map((item) => item.id));
   assert.ok(rules.length > 100, `${rules.length} rules`);
   assert.ok(rules.includes("rule-BACK_MATERIAL_WITH_TWO_SIDED"));
-  assert.match(await page.textContent("#version"), /^\d+\.\d+\.\d+/);
+  assert.match(await page.textContent("#version"), /^ \d+\.\d+\.\d+/);
 });
 
 test("a dropped XML scene: findings with line, source, clause, filter, rule doc", async () => {
@@ -192,7 +192,7 @@ test("a dropped XML scene: findings with line, source, clause, filter, rule doc"
   assert.ok((await shownFindings()).every((f) => !f.hidden));
 
   if (process.env.X3DCHECK_WEB_SCREENSHOT) {
-    await page.screenshot({ path: process.env.X3DCHECK_WEB_SCREENSHOT, fullPage: false });
+    await page.screenshot({ path: process.env.X3DCHECK_WEB_SCREENSHOT, fullPage: true });
   }
 });
 
