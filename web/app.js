@@ -236,7 +236,7 @@ function renderFinding(d, otherFile) {
     item.append(
       element("p", {
         class: "related",
-        text: `${related.line}:${related.column}: ${related.message}`,
+        text: `see ${related.line}:${related.column}: ${related.message}`,
       }),
     );
   }
