@@ -222,7 +222,7 @@ test("the JSON and SARIF downloads hold the findings shown", async () => {
   );
 });
 
-test("a gzip-compressed scene chosen in the file input: the same findings, source shown", async () => {
+test("a gzip-compressed scene chosen in the file input: the same findings, source shown; another level", async () => {
   await page.setInputFiles("#file", {
     name: "fail.x3dz",
     mimeType: "application/gzip",
@@ -235,6 +235,13 @@ test("a gzip-compressed scene chosen in the file input: the same findings, sourc
     await page.textContent("#findings > li[data-code='NODE_DEPRECATED'] .excerpt mark"),
     /^TwoSidedMaterial$/,
   );
+
+  // Another level checks the same bytes again: fast has no cross-node rule.
+  await page.selectOption("#level", "fast");
+  await page.waitForFunction(() => document.querySelectorAll("#findings > li").length === 1);
+  assert.deepEqual(withoutHidden(await shownFindings()), [XML_FINDINGS[0]]);
+  await page.selectOption("#level", "standard");
+  await page.waitForFunction(() => document.querySelectorAll("#findings > li").length === 2);
 });
 
 test("a ClassicVRML scene, chosen and then pasted", async () => {
