@@ -19,11 +19,23 @@ const PENDING: &[(&str, u32)] = &[];
 /// Codes whose severity departs on purpose from the catalogue's, with the severity they
 /// have and why. A code leaves this list when the catalogue agrees (the test fails until
 /// it does), so the list cannot go stale.
-const LOWERED: &[(&str, Severity, &str)] = &[(
-    "LIGHT_DIRECTION_ZERO",
-    Severity::Warning,
-    "issue 32: no 'shall' on the file; 17.4.1 gives direction the range (-∞,∞)",
-)];
+const LOWERED: &[(&str, Severity, &str)] = &[
+    (
+        "LIGHT_DIRECTION_ZERO",
+        Severity::Warning,
+        "issue 32: no 'shall' on the file; 17.4.1 gives direction the range (-∞,∞)",
+    ),
+    (
+        "COUNT_EXCEEDS_COORDS",
+        Severity::Warning,
+        "issue 32: 11.4.5/11.4.12/11.4.14 constrain each count, not their sum against the coordinates",
+    ),
+    (
+        "IMAGE_UNREADABLE",
+        Severity::Warning,
+        "issue 32: an image that does not decode is the browser's run-time matter (url fallback), not a 'shall' of the X3D file",
+    ),
+];
 
 /// The table rows of RULES.md: `| CODE | sev | …`. §1 and §7 are the fast level; a
 /// table with a `lvl` column says the level in it; elsewhere a rule is standard unless

@@ -40,15 +40,34 @@ fn check(path: &Path) -> FileReport {
     x3dcheck::check_source(&path.display().to_string(), &source, &config)
 }
 
-/// The report without positions: one line per diagnostic, sorted, and the stats.
-fn positionless(report: &FileReport) -> (Vec<String>, String) {
+/// The codes whose messages name prototypes, IS and ROUTE in the encoding's own words
+/// (`src/validate/terms.rs`): ClassicVRML says `PROTO`, `a IS b`, `ROUTE from field` where
+/// XML and JSON say `ProtoDeclare`, `connect`, `fromField`.
+const WORDED: &[&str] = &[
+    "IS_FIELD_UNKNOWN",
+    "IS_OUTSIDE_PROTO",
+    "IS_TYPE_MISMATCH",
+    "PROTO_CYCLE",
+    "PROTO_FIELD_UNKNOWN",
+    "ROUTE_FIELD_UNKNOWN",
+];
+
+/// The report without positions: one line per diagnostic, sorted, and the stats. Without
+/// `words`, a diagnostic of a [`WORDED`] code is compared without its message.
+fn positionless(report: &FileReport, words: bool) -> (Vec<String>, String) {
     let mut lines: Vec<String> = report
         .diagnostics
         .iter()
         .map(|d| {
+            let worded = WORDED.contains(&d.code);
+            let message = if words || !worded {
+                d.message.as_str()
+            } else {
+                ""
+            };
             format!(
-                "{} {:?} {} at {} value {:?} ×{}",
-                d.code, d.severity, d.message, d.path, d.value, d.count
+                "{} {:?} {message} at {} value {:?} ×{}",
+                d.code, d.severity, d.path, d.value, d.count
             )
         })
         .collect();
@@ -73,7 +92,12 @@ fn compare(name: &str, a: (&str, &Path), b: (&str, &Path)) -> Vec<String> {
     if let Some(difference) = first_difference((a.0, &Summary::of(da)), (b.0, &Summary::of(db))) {
         problems.push(format!("{name}: the models differ\n{difference}"));
     }
-    let (ra, rb) = (positionless(&check(a.1)), positionless(&check(b.1)));
+    // XML and JSON share their words; ClassicVRML has its own.
+    let words = a.0 != "classic" && b.0 != "classic";
+    let (ra, rb) = (
+        positionless(&check(a.1), words),
+        positionless(&check(b.1), words),
+    );
     if ra != rb {
         problems.push(format!(
             "{name}: the reports differ\n      {}: {:#?}\n      {}: {:#?}",

@@ -28,6 +28,7 @@ pub mod shaders;
 pub mod shape;
 pub mod sound;
 pub mod suggest;
+pub mod terms;
 pub mod texturing;
 
 pub use crate::diagnostic::{Level, Rule, Severity};

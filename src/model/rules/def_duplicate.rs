@@ -23,6 +23,13 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 4.4.3 DEF/USE semantics; 4.4.7 Run-time name scope; 14772-1 4.6.2.
+    /// > "A name must not appear more than once in an XML document as a value of this type" (XML 1.0, validity constraint ID)
+    ///
+    /// The X3D XML Schema types `DEF` as `xs:ID` (x3d-4.0.xsd, attribute group DEF_USE),
+    /// so an XML file that repeats a DEF name breaks the constraint, whatever the scope.
+    /// For ClassicVRML and JSON files no sentence of their own was found (issue 32):
+    /// x3dcheck holds them to the XML encoding's rule, since such a file cannot be written
+    /// as XML without renaming, and it is an error there too.
     pub static DEF_DUPLICATE = {
         severity: Error,
         level: Fast,

@@ -48,8 +48,12 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 4.3.2 Scene graph hierarchy (a directed acyclic graph); x3dcheck's own limit.
+    /// A warning, not an error (issue 32): no part of X3D sets these limits, so a file past
+    /// one breaks no "shall"; the finding says that x3dcheck stopped reading, not that the
+    /// file is wrong. (A USE chain that really loops is USE_CYCLE's, a prototype that
+    /// instantiates itself PROTO_CYCLE's.)
     pub static LIMIT_EXCEEDED = {
-        severity: Error,
+        severity: Warning,
         level: Fast,
         clause: "4.3.2",
         versions: "all",

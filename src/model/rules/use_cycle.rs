@@ -22,6 +22,10 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 4.3.2 Scene graph hierarchy; 4.4.3 DEF/USE semantics.
+    /// > "The transformation hierarchy shall be a directed acyclic graph" (14772-1 4.4.4)
+    ///
+    /// A node USEd inside itself is its own ancestor, a cycle in that graph (19775-1 4.3.2
+    /// calls the scene graph a directed acyclic graph too).
     pub static USE_CYCLE = {
         severity: Error,
         level: Fast,

@@ -36,6 +36,12 @@ crate::declare_rule! {
     /// 19775-1 4.4.4.2 PROTO statement (the body is one or more nodes; the first
     /// determines the prototype's type); 19776-1 4.3.7 (ProtoBody), 19776-2 the PROTO
     /// statement.
+    /// > "A prototype definition consists of one or more nodes, nested PROTO statements, and ROUTE statements" (14772-1 4.8.3)
+    ///
+    /// A body with no node has none of the "one or more nodes", and no first node to give
+    /// the prototype its type; the grammar says the same, `protoBody ::= protoStatements
+    /// rootNodeStatement statements` (14772-1 A.2; 19776-2 Annex A likewise), where the root node
+    /// statement is not optional.
     pub static PROTO_BODY_EMPTY = {
         severity: Error,
         level: Fast,

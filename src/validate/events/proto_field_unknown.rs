@@ -3,6 +3,7 @@
 use super::endpoint::did_you_mean;
 use crate::model::{NodeId, NodeKind};
 use crate::report::Diagnostic;
+use crate::validate::terms::Terms;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -58,11 +59,13 @@ fn field_values(ctx: &mut Ctx, id: NodeId, proto: usize, proto_name: &str) {
         return;
     };
     let names: Vec<String> = decl.interface.iter().map(|f| f.name.text.clone()).collect();
+    let terms = Terms::of(ctx.doc.encoding);
     let kind = if decl.external {
-        "ExternProtoDeclare"
+        terms.extern_proto()
     } else {
-        "ProtoDeclare"
+        terms.proto()
     };
+    let setting = terms.field_value();
     for entry in &ctx.doc.node(id).fields {
         let name = entry.name();
         if names.iter().any(|n| n == name) {
@@ -71,7 +74,7 @@ fn field_values(ctx: &mut Ctx, id: NodeId, proto: usize, proto_name: &str) {
         let d = Diagnostic::new(
             &PROTO_FIELD_UNKNOWN,
             entry.name_span,
-            format!("fieldValue `{name}`: {kind} `{proto_name}` declares no such field"),
+            format!("{setting} `{name}`: {kind} `{proto_name}` declares no such field"),
         )
         .node(id)
         .value(name)

@@ -6,6 +6,7 @@ use super::endpoint::{
 };
 use crate::model::{Named, RouteEnd};
 use crate::report::Diagnostic;
+use crate::validate::terms::Terms;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -32,6 +33,11 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 4.4.8.2 Routes, 4.4.2.2 Field semantics (access types, `set_`/`_changed`).
+    /// > "Routes may be established only from eventOuts to eventIns" (14772-1 4.10.2)
+    ///
+    /// A route whose field the node does not have (with or without the optional `set_` or
+    /// `_changed`) runs from or to no event at all (wording read in a copy of the 1997
+    /// text).
     pub static ROUTE_FIELD_UNKNOWN = {
         severity: Error,
         level: Standard,
@@ -52,7 +58,7 @@ fn check(ctx: &mut Ctx) {
         for (which, field, direction) in ends {
             // An undefined node is ROUTE_NODE_UNDEFINED's finding.
             if let Some(end) = route_end(ctx, route, which) {
-                found.extend(problem(&end, field, direction));
+                found.extend(problem(&end, field, direction, Terms::of(doc.encoding)));
             }
         }
     }
@@ -61,11 +67,8 @@ fn check(ctx: &mut Ctx) {
     }
 }
 
-fn problem(end: &End, field: &Named, direction: Direction) -> Option<Diagnostic> {
-    let attribute = match direction {
-        Direction::Out => "fromField",
-        Direction::In => "toField",
-    };
+fn problem(end: &End, field: &Named, direction: Direction, terms: Terms) -> Option<Diagnostic> {
+    let attribute = terms.route_end(direction == Direction::Out);
     let diagnostic = |message: String| {
         let diagnostic =
             Diagnostic::new(&ROUTE_FIELD_UNKNOWN, field.span, message).value(field.text.clone());

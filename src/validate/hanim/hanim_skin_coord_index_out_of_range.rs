@@ -47,9 +47,15 @@ crate::declare_rule! {
     /// skinCoordWeight "has a corresponding index value in the skinCoordIndex field of the
     /// Joint object indicating exactly which coordinate is to be influenced", a vertex
     /// "from the skinCoord field of the Humanoid object". An index with no such vertex
-    /// indicates none; an error, as INDEX_OUT_OF_RANGE is for geometry.
+    /// indicates none.
+    /// A warning, not an error (issue 32): unlike the geometry indices ("If the greatest
+    /// index in the colorIndex field is N, then there shall be N+1 colours", 13.3.6,
+    /// INDEX_OUT_OF_RANGE's sentence), no sentence found puts a "shall" on the upper bound
+    /// of skinCoordIndex: the interface table gives it `[0,∞)` (X3DUOM 4.0: "Coordinate
+    /// index values referencing which vertices are influenced by the HAnimJoint"), and what
+    /// a browser does with an index past the skin is left undefined.
     pub static HANIM_SKIN_COORD_INDEX_OUT_OF_RANGE = {
-        severity: Error,
+        severity: Warning,
         level: Standard,
         clause: "26.3.3",
         versions: "all",

@@ -32,8 +32,12 @@ crate::declare_rule! {
     /// rotation axis vector"). Reading: an axis that cannot be normalized is no
     /// SFRotation value even with angle 0, so `0 0 0 0` is reported too (write
     /// `0 0 1 0`, the default, or leave the field out).
+    /// A warning, not an error (issue 32): "normalized rotation axis vector" describes the
+    /// value without a "shall", and the interface table gives `orientation` the range
+    /// `[-1,1],(-∞,∞)`, which `0 0 0` is inside; browsers normalize any other axis, and
+    /// what they do with a zero one is left undefined.
     pub static VIEWPOINT_ORIENTATION_AXIS_ZERO = {
-        severity: Error,
+        severity: Warning,
         level: Standard,
         clause: "23.3.1",
         versions: "all",

@@ -50,6 +50,11 @@ crate::declare_rule! {
     /// ## Clause
     /// 19775-1 9.4.2 Inline (the url names a scene whose nodes become the Inline's
     /// children), 4.4.5 External prototype semantics.
+    /// > "The transformation hierarchy shall be a directed acyclic graph" (14772-1 4.4.4)
+    ///
+    /// The inlined scene's nodes are the Inline's children, so a scene that inlines itself
+    /// makes the Inline its own ancestor. (A library cycle of EXTERNPROTOs is a prototype
+    /// instantiated in its own implementation, PROTO_CYCLE's sentence.)
     pub static INLINE_CYCLE = {
         severity: Error,
         level: Deep,

@@ -38,9 +38,13 @@ crate::declare_rule! {
     /// in u-direction followed by further u-polylines with the v-parameter in ascending
     /// order"); 27.4.10 NurbsSurfaceInterpolator and 27.4.13 NurbsTextureCoordinate use
     /// the same fields. Reading: a set "of dimension uDimension × vDimension" has that
-    /// many points, so any other count is an error.
+    /// many points, so any other count contradicts the dimensions.
+    /// A warning, not an error (issue 32): the sentence describes the grid without a
+    /// "shall". The constraint stated on the count, that the control points "shall be
+    /// equal or greater than the order" (27.3.2; 27.4.4 for curves), is
+    /// NURBS_CONTROL_POINTS_TOO_FEW's.
     pub static NURBS_DIMENSION_MISMATCH = {
-        severity: Error,
+        severity: Warning,
         level: Standard,
         clause: "27.3.2",
         versions: "all",

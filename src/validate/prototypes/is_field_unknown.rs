@@ -3,6 +3,7 @@
 use crate::model::{IsConnect, NodeId, Scope};
 use crate::report::Diagnostic;
 use crate::validate::events::endpoint::{did_you_mean, lookup, only_in_text, type_label, Lookup};
+use crate::validate::terms::Terms;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -37,6 +38,12 @@ crate::declare_rule! {
     /// ## Clause
     /// 19775-1 4.4.4.3 Prototype scoping rules: "An IS statement refers to a field in the
     /// interface of the same prototype".
+    /// > "It is an error for an IS statement to refer to a non-existent declaration" (14772-1 4.8.3)
+    ///
+    /// The IS names an interface field the prototype does not declare, or a node field the
+    /// node does not have (the quoted paragraph also says "IS statements shall refer to
+    /// fields or events defined in the prototype declaration"; wording read in a copy of
+    /// the 1997 text).
     pub static IS_FIELD_UNKNOWN = {
         severity: Error,
         level: Standard,
@@ -78,21 +85,29 @@ fn proto_field(ctx: &mut Ctx, id: NodeId, proto: usize, connect: &IsConnect) {
         return;
     }
     let names: Vec<String> = decl.interface.iter().map(|f| f.name.text.clone()).collect();
-    let d = Diagnostic::new(
-        &IS_FIELD_UNKNOWN,
-        name.span,
+    let terms = Terms::of(ctx.doc.encoding);
+    let message = if terms.statements() {
+        format!(
+            "{}: {} `{}` declares no field `{}`",
+            Terms::is_statement(&connect.node_field.text, &name.text),
+            terms.proto(),
+            decl.name.text,
+            name.text
+        )
+    } else {
         format!(
             "IS connect protoField `{}`: ProtoDeclare `{}` declares no such field",
             name.text, decl.name.text
-        ),
-    )
-    .node(id)
-    .value(name.text.clone())
-    .help_opt(did_you_mean(&name.text, &names))
-    .related(
-        decl.name.span,
-        format!("`{}` declared here", decl.name.text),
-    );
+        )
+    };
+    let d = Diagnostic::new(&IS_FIELD_UNKNOWN, name.span, message)
+        .node(id)
+        .value(name.text.clone())
+        .help_opt(did_you_mean(&name.text, &names))
+        .related(
+            decl.name.span,
+            format!("`{}` declared here", decl.name.text),
+        );
     ctx.report(d);
 }
 
@@ -115,18 +130,25 @@ fn node_field(ctx: &mut Ctx, id: NodeId, connect: &IsConnect) {
     else {
         return;
     };
-    let d = Diagnostic::new(
-        &IS_FIELD_UNKNOWN,
-        name.span,
+    let message = if Terms::of(ctx.doc.encoding).statements() {
+        format!(
+            "{}: {} has no field `{}`{}",
+            Terms::is_statement(&name.text, &connect.proto_field.text),
+            type_label(ctx.doc, id),
+            name.text,
+            only_in_text(&only_in)
+        )
+    } else {
         format!(
             "IS connect nodeField `{}`: {} has no such field{}",
             name.text,
             type_label(ctx.doc, id),
             only_in_text(&only_in)
-        ),
-    )
-    .node(id)
-    .value(name.text.clone())
-    .help_opt(did_you_mean(&name.text, &candidates));
+        )
+    };
+    let d = Diagnostic::new(&IS_FIELD_UNKNOWN, name.span, message)
+        .node(id)
+        .value(name.text.clone())
+        .help_opt(did_you_mean(&name.text, &candidates));
     ctx.report(d);
 }

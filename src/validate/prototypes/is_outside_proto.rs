@@ -2,6 +2,7 @@
 
 use crate::model::Scope;
 use crate::report::Diagnostic;
+use crate::validate::terms::Terms;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -33,6 +34,11 @@ crate::declare_rule! {
     /// ## Clause
     /// 19775-1 4.4.4.3 Prototype scoping rules (IS statements refer to the interface of the
     /// prototype they are in).
+    /// > "IS statements shall refer to fields or events defined in the prototype declaration" (14772-1 4.8.3)
+    ///
+    /// Outside any prototype body there is no prototype declaration for the IS to refer
+    /// to ("IS statements may appear inside the prototype definition wherever fields may
+    /// appear", the same paragraph; wording read in a copy of the 1997 text).
     pub static IS_OUTSIDE_PROTO = {
         severity: Error,
         level: Standard,
@@ -49,10 +55,17 @@ fn check(ctx: &mut Ctx) {
             continue;
         }
         for connect in &node.connects {
-            let message = format!(
-                "IS connects `{}` to `{}` outside any ProtoBody: there is no prototype interface to name",
-                connect.node_field.text, connect.proto_field.text
-            );
+            let (node_field, proto_field) = (&connect.node_field.text, &connect.proto_field.text);
+            let message = if Terms::of(doc.encoding).statements() {
+                format!(
+                    "{} outside any PROTO body: there is no prototype interface to name",
+                    Terms::is_statement(node_field, proto_field)
+                )
+            } else {
+                format!(
+                    "IS connects `{node_field}` to `{proto_field}` outside any ProtoBody: there is no prototype interface to name"
+                )
+            };
             ctx.report(Diagnostic::new(&IS_OUTSIDE_PROTO, connect.span, message).node(id));
         }
     }

@@ -5,6 +5,7 @@ use crate::model::{FieldDecl, IsConnect, NodeId, Scope};
 use crate::report::Diagnostic;
 use crate::schema::AccessType;
 use crate::validate::events::endpoint::{lookup, type_label, Direction, Field, Lookup};
+use crate::validate::terms::Terms;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -45,6 +46,12 @@ crate::declare_rule! {
     /// declarations to node instances (read as X_ITE's `X3DField.isReference` implements
     /// it: the node field's access type equals the interface field's, or is inputOutput);
     /// the types of IS-connected fields are the same (as for ROUTEs, 4.4.8.2).
+    /// > "It is an error if the type of the field or event being associated does not match the type declared in the prototype's interface declaration" (14772-1 4.8.3)
+    ///
+    /// For the access types the same paragraph goes on: "It is illegal for an eventIn to
+    /// be associated with a field or an eventOut, an eventOut to be associated with a
+    /// field or eventIn, or a field to be associated with an eventIn or eventOut", with
+    /// Table 4.4 ("no denotes an error"); wording read in a copy of the 1997 text.
     pub static IS_TYPE_MISMATCH = {
         severity: Error,
         level: Standard,
@@ -107,7 +114,12 @@ fn mismatch(
     field: &Field,
 ) -> Option<Diagnostic> {
     let node_label = format!("{}.{}", type_label(ctx.doc, id), connect.node_field.text);
-    let proto_label = format!("`{}` of ProtoDeclare `{proto_name}`", interface.name.text);
+    let terms = Terms::of(ctx.doc.encoding);
+    let proto_label = format!(
+        "`{}` of {} `{proto_name}`",
+        interface.name.text,
+        terms.proto()
+    );
     let related = |what: String| (interface.name.span, what);
     if let (Some(node_type), Some(proto_type)) = (field.ty, interface.ty) {
         if node_type != proto_type {
@@ -130,20 +142,25 @@ fn mismatch(
     if may_connect(node_access, proto_access) {
         return None;
     }
+    let input_output = terms.access(AccessType::InputOutput);
     let allowed = match proto_access {
-        AccessType::InputOutput => "only to inputOutput node fields".to_string(),
-        other => format!("only to {} or inputOutput node fields", other.as_str()),
+        AccessType::InputOutput => format!("only to {input_output} node fields"),
+        other => format!(
+            "only to {} or {input_output} node fields",
+            terms.access(other)
+        ),
     };
-    let (span, what) = related(format!("declared {} here", proto_access.as_str()));
+    let (span, what) = related(format!("declared {} here", terms.access(proto_access)));
     Some(
         Diagnostic::new(
             &IS_TYPE_MISMATCH,
             connect.node_field.span,
             format!(
-                "IS connects `{node_label}` ({}) to {proto_label} ({}): an {} interface field connects {allowed} (19775-1 Table 4.4)",
-                node_access.as_str(),
-                proto_access.as_str(),
-                proto_access.as_str(),
+                "IS connects `{node_label}` ({}) to {proto_label} ({}): {} interface field connects {allowed} ({} Table 4.4)",
+                terms.access(node_access),
+                terms.access(proto_access),
+                terms.an_access(proto_access),
+                terms.standard(),
             ),
         )
         .node(id)

@@ -15,6 +15,7 @@ use crate::limits::MAX_LIBRARY_FILES;
 use crate::model::rules::LIMIT_EXCEEDED;
 use crate::model::{Document, NodeId};
 use crate::report::Diagnostic;
+use crate::validate::terms::Terms;
 use crate::validate::{Ctx, Level};
 
 crate::declare_rule! {
@@ -51,6 +52,10 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 4.4.4.3 Prototype scoping rules.
+    /// > "A prototype may not be instantiated inside its own implementation (i.e., recursive prototypes are illegal)" (14772-1 4.8.4)
+    ///
+    /// The flagged prototype is instantiated, directly or through others, in its own body
+    /// (wording read in a copy of the 1997 text).
     pub static PROTO_CYCLE = {
         severity: Error,
         level: Standard,
@@ -283,14 +288,15 @@ fn cycle(graph: &Graph, edges: &DiGraph<Key, NodeId>, steps: &[(NodeIndex, NodeI
     chain.push(graph.label(key));
     let doc = graph.ctx.doc;
     let proto = &doc.protos[key.1];
+    let kind = Terms::of(doc.encoding).proto();
     let message = if steps.len() == 1 {
         format!(
-            "ProtoDeclare `{}` instantiates itself in its own definition",
+            "{kind} `{}` instantiates itself in its own definition",
             proto.name.text
         )
     } else {
         format!(
-            "ProtoDeclare `{}` instantiates itself: {}",
+            "{kind} `{}` instantiates itself: {}",
             proto.name.text,
             chain.join(" → ")
         )

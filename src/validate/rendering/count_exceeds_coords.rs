@@ -26,8 +26,14 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 11.4.5 LineSet, 11.4.12 TriangleFanSet, 11.4.14 TriangleStripSet.
+    /// A warning, not an error (issue 32): the clauses constrain each count ("Each value
+    /// of the vertexCount array shall be greater than or equal to two", 11.4.5; three for
+    /// fanCount and stripCount) but no sentence requires the coordinates to suffice for
+    /// their sum; "Coordinates are assigned to each line by taking vertexCount[n] vertices
+    /// from the coordinate field" describes the reading, and what a browser draws when the
+    /// coordinates run out is left undefined.
     pub static COUNT_EXCEEDS_COORDS = {
-        severity: Error,
+        severity: Warning,
         level: Standard,
         clause: "11.4",
         versions: "all",

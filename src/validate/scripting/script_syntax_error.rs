@@ -40,6 +40,9 @@ crate::declare_rule! {
     /// ## Clause
     /// 19775-1 29.2.1 Script node (29.4.1 Script); ISO/IEC 19777-1 (ECMAScript language
     /// binding); ECMA-262 (the language).
+    /// > "The input stream is syntactically in error if the tokens in the stream of input elements cannot be parsed as a single instance of the goal nonterminal (Script or Module), with no tokens left over" (ECMA-262 5.1.4)
+    ///
+    /// The Script's code, parsed with the goal Script, is such a stream.
     pub static SCRIPT_SYNTAX_ERROR = {
         severity: Error,
         level: Standard,

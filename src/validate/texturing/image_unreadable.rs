@@ -31,8 +31,15 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 18.2.1 Texture map image formats; 18.4.1 ImageTexture.
+    /// A warning, not an error (issue 32): the X3D document itself is sound (its `url` is a
+    /// well-formed MFString), and the spec treats a resource that cannot be had as a
+    /// run-time matter of the browser, not a fault of the file: the url field lists
+    /// alternatives in order of preference, and a browser that cannot obtain one goes on
+    /// to the next (19775-1 9.2.1 URLs; 14772-1 4.5.2). No sentence of 18.2.1 or 18.4.1
+    /// puts a "shall" on the image data; the broken image is a fault of another file, or
+    /// of the `data:` URL's content.
     pub static IMAGE_UNREADABLE = {
-        severity: Error,
+        severity: Warning,
         level: Deep,
         clause: "18.4.1",
         versions: "all",
