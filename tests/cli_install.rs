@@ -116,9 +116,13 @@ fn the_wheel_hook_matches_the_source_hook_and_pins_this_version() {
     assert!(wheel.lines().any(|l| l == "  language: python"), "{wheel}");
 
     // The wheel's version is its crate's (pyproject.toml: `dynamic = ["version"]`).
-    let bindings: toml::Table = repository_file("bindings/python/Cargo.toml").parse().unwrap();
+    let bindings: toml::Table = repository_file("bindings/python/Cargo.toml")
+        .parse()
+        .unwrap();
     let version = bindings["package"]["version"].as_str().unwrap().to_owned();
-    let project: toml::Table = repository_file("pre-commit/pyproject.toml").parse().unwrap();
+    let project: toml::Table = repository_file("pre-commit/pyproject.toml")
+        .parse()
+        .unwrap();
     let project = project["project"].as_table().unwrap();
     assert_eq!(project["version"].as_str(), Some(version.as_str()));
     let dependencies = project["dependencies"].as_array().unwrap();
