@@ -89,7 +89,10 @@ timed "x3dcheck --version (installed command)" x3dcheck --version
 
 check_scene() {
     local scene="$1" installed expected
-    [ "$(command -v x3dcheck)" = "$repo/$venv/bin/x3dcheck" ]
+    if [ "$(command -v x3dcheck)" != "$repo/$venv/bin/x3dcheck" ]; then
+        echo "error: x3dcheck on PATH is $(command -v x3dcheck), not the venv's" >&2
+        exit 1
+    fi
     installed="$(x3dcheck --level deep --format concise --exit-zero "$scene")"
     printf '%s\n' "$installed" | sed -n '1,5p'
     # The installed command is the real command line: the same report as the binary.
