@@ -194,3 +194,37 @@ fn the_github_action_checks_and_keeps_the_exit_code() {
     let outputs = std::fs::read_to_string(dir.join("github_output")).unwrap();
     assert_eq!(outputs.trim(), "exit-code=1");
 }
+
+#[test]
+fn the_wheel_hook_matches_the_source_hook_and_pins_this_version() {
+    // pre-commit/ is what a mirror repository holds once the wheel is published: the same
+    // hook as the root's but `language: python`, installing the wheel of this version.
+    let source = repository_file(".pre-commit-hooks.yaml");
+    let wheel = repository_file("pre-commit/.pre-commit-hooks.yaml");
+    let hook_lines = |hooks: &str| -> Vec<String> {
+        hooks
+            .lines()
+            .filter(|l| !l.starts_with('#') && !l.starts_with("  language: "))
+            .map(str::to_owned)
+            .collect()
+    };
+    assert_eq!(hook_lines(&wheel), hook_lines(&source));
+    assert!(wheel.lines().any(|l| l == "  language: python"), "{wheel}");
+
+    // The wheel's version is its crate's (pyproject.toml: `dynamic = ["version"]`).
+    let bindings: toml::Table = repository_file("bindings/python/Cargo.toml")
+        .parse()
+        .unwrap();
+    let version = bindings["package"]["version"].as_str().unwrap().to_owned();
+    let project: toml::Table = repository_file("pre-commit/pyproject.toml")
+        .parse()
+        .unwrap();
+    let project = project["project"].as_table().unwrap();
+    assert_eq!(project["version"].as_str(), Some(version.as_str()));
+    let dependencies = project["dependencies"].as_array().unwrap();
+    assert_eq!(dependencies.len(), 1);
+    assert_eq!(
+        dependencies[0].as_str(),
+        Some(format!("x3dcheck=={version}").as_str())
+    );
+}
