@@ -35,6 +35,21 @@ const LOWERED: &[(&str, Severity, &str)] = &[
         Severity::Warning,
         "issue 32: an image that does not decode is the browser's run-time matter (url fallback), not a 'shall' of the X3D file",
     ),
+    (
+        "ENCODING_UNSUPPORTED",
+        Severity::Warning,
+        "issue 32: x3dcheck cannot read the file (VRML 1.0, binary, …); no X3D 'shall' applies to a file in none of its encodings",
+    ),
+    (
+        "IMPORT_UNRESOLVED",
+        Severity::Warning,
+        "issue 32: what an IMPORT finds depends on the inlined file, loaded at run time like any url (URL_UNRESOLVED is a warning)",
+    ),
+    (
+        "EXTERNPROTO_NOT_FOUND",
+        Severity::Warning,
+        "issue 32: whether the url's file declares the prototype depends on that file, loaded at run time like any url",
+    ),
 ];
 
 /// The table rows of RULES.md: `| CODE | sev | …`. §1 and §7 are the fast level; a

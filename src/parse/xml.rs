@@ -19,7 +19,7 @@ use crate::limits::{MAX_FIELDS_PER_NODE, MAX_INPUT_BYTES};
 use crate::model::builder::{Limit, Parent};
 use crate::model::*;
 use crate::parse::{KeepValues, Parsed};
-use crate::schema::{AccessType, FieldDef, FieldType, Scalar};
+use crate::schema::{AccessType, FieldDef, FieldType, NodeDef, Scalar};
 
 /// Reads an X3D XML document.
 pub fn read(source: &[u8]) -> Parsed {
@@ -862,6 +862,29 @@ impl<'s> XmlReader<'s> {
             .push(connect);
     }
 
+    /// The field a child element without `containerField` goes to. X3D 4 gave the
+    /// Metadata nodes the default `value` (the field of a MetadataSet), and x3d-4.0.xsd says
+    /// what it means elsewhere: "Default containerField='metadata' when providing
+    /// information about the parent element itself, otherwise apply containerField='value'
+    /// when this element contains payload metadata inside a parent/ancestor MetadataSet
+    /// element". So under a parent without a `value` node field, such a node is the
+    /// parent's `metadata`, as it was by default in X3D 3.
+    fn default_container_field(&self, def: &NodeDef, hint: &Hint) -> String {
+        let default = def.container_field;
+        if default == "value" && def.field("metadata").is_some() {
+            if let Hint::Node(parent) = hint {
+                let parent_def = self.builder.doc().node(*parent).def();
+                let holds_value = parent_def
+                    .and_then(|p| p.field("value"))
+                    .is_some_and(|f| f.ty.scalar() == Scalar::Node);
+                if parent_def.is_some_and(|p| p.field("metadata").is_some()) && !holds_value {
+                    return "metadata".to_string();
+                }
+            }
+        }
+        default.to_string()
+    }
+
     /// A node element: a new node, or a USE of a DEF'd one.
     fn node(
         &mut self,
@@ -887,7 +910,7 @@ impl<'s> XmlReader<'s> {
         let field_name = container
             .map(|a| a.value.trim().to_string())
             .unwrap_or_else(|| match &kind {
-                NodeKind::Known { def, .. } => def.container_field.to_string(),
+                NodeKind::Known { def, .. } => self.default_container_field(def, &hint),
                 _ => "children".to_string(),
             });
         let field_span = container.map(|a| a.value_span).unwrap_or(name_span);
@@ -1032,6 +1055,8 @@ impl<'s> XmlReader<'s> {
                         format!("'{fix}'")
                     };
                     diagnostic = diagnostic.help(format!("write {}={written}", attr.name));
+                } else if let Some(help) = &error.help {
+                    diagnostic = diagnostic.help(help.clone());
                 }
                 self.builder.report(diagnostic);
                 error

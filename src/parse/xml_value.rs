@@ -28,6 +28,8 @@ pub struct SyntaxError {
     pub message: String,
     /// How to write the value instead, where one rewrite fixes it (`"SANS"` for `SANS`).
     pub fix: Option<String>,
+    /// What the value looks like, where no rewrite is sure to keep its meaning.
+    pub help: Option<String>,
     /// The value browsers read despite the error, where there is no doubt about it (a
     /// misplaced comma read as whitespace, an unquoted MFString read as one string), so
     /// that the rules after the reader judge what is drawn rather than the default.
@@ -41,6 +43,7 @@ impl SyntaxError {
             len,
             message: message.into(),
             fix: None,
+            help: None,
             recovered: None,
         }
     }
@@ -509,11 +512,31 @@ fn scan_floats<F: Float, S: Sink<F>>(
 
 /// A comma where 19776-1 5.1.2 allows none, at `at`: inside an SF value, inside one
 /// element of an MF value, or before its first value. The fix writes the value with spaces
-/// between the numbers of an element and commas between elements.
+/// between the numbers of an element and commas between elements, unless the commas group
+/// the numbers in another size: then the help says so, and there is no fix.
 #[cold]
 fn comma_error(ty: FieldType, s: &[u8], at: usize) -> SyntaxError {
     let single = ty.single();
     let arity = ty.arity();
+    if let Some((size, other)) = other_grouping(ty, s) {
+        // The commas set the numbers apart in groups of another size: the author likely
+        // wrote another type's values (x y w triples in an MFVec2d), and regrouping them
+        // in the field's size would change what they mean, so there is no rewrite.
+        let mut error = SyntaxError::new(
+            at,
+            1,
+            format!(
+                "commas after every {size} numbers, but each {single} of an {ty} has {arity}: commas may only separate whole {single} values"
+            ),
+        );
+        error.help = Some(match other {
+            Some(other) => format!("{size} numbers between commas: is this an {other}'s value?"),
+            None => format!(
+                "{size} numbers between commas: browsers read the numbers {arity} at a time, ignoring the commas"
+            ),
+        });
+        return error;
+    }
     let message = if !ty.is_mf() {
         format!("a comma inside an {ty}: commas may only separate the values of an MF field")
     } else if ty.scalar() == Scalar::Image {
@@ -550,6 +573,28 @@ fn comma_error(ty: FieldType, s: &[u8], at: usize) -> SyntaxError {
         error.fix = Some(elements.join(", "));
     }
     error
+}
+
+/// The size of every group of numbers the commas of `s` set apart, where they all have
+/// one size other than the arity of `ty` (a trailing comma allowed), and the MF type whose
+/// values have that size, if there is one of the same precision.
+fn other_grouping(ty: FieldType, s: &[u8]) -> Option<(usize, Option<FieldType>)> {
+    if !ty.is_mf() || ty.arity() < 2 || ty.scalar() == Scalar::Image {
+        return None;
+    }
+    let mut groups: Vec<usize> = s.split(|&b| b == b',').map(|g| tokens(g).count()).collect();
+    if groups.len() > 1 && groups.last() == Some(&0) {
+        groups.pop();
+    }
+    let size = *groups.first()?;
+    if size < 2 || size == ty.arity() || groups.iter().any(|&g| g != size) {
+        return None;
+    }
+    let other = FieldType::ALL
+        .iter()
+        .copied()
+        .find(|t| t.is_mf() && t.scalar() == ty.scalar() && t.arity() == size);
+    Some((size, other))
 }
 
 #[cold]
@@ -987,6 +1032,17 @@ mod tests {
             "a comma inside an SFColor: commas may only separate the values of an MF field"
         );
         assert_eq!(e.fix.as_deref(), Some("1 0 0"));
+        // Commas after every 3 numbers of an MFVec2d: x y w triples, not pairs to regroup.
+        let e = err(MFVec2d, "0 -27.12 1,6.28 -27.12 1,");
+        assert_eq!(e.fix, None);
+        assert_eq!(
+            e.message,
+            "commas after every 3 numbers, but each SFVec2d of an MFVec2d has 2: commas may only separate whole SFVec2d values"
+        );
+        assert_eq!(
+            e.help.as_deref(),
+            Some("3 numbers between commas: is this an MFVec3d's value?")
+        );
         // The count is judged first: one error per value.
         let e = err(MFColor, "1 1 1, 0 0");
         assert!(e.message.contains("multiple of 3"), "{}", e.message);

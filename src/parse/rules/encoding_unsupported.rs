@@ -17,8 +17,13 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19776-1 (XML encoding) and 19776-5 (JSON encoding).
+    /// A warning, not an error (issue 32): the finding says x3dcheck cannot read the file,
+    /// not that the file breaks a sentence of an X3D encoding. What it flags is mostly
+    /// another language (VRML 1.0, whose files are right by their own specification) or
+    /// content no X3D encoding describes; no "shall" of 19776-1, 19776-2, 19776-5 or
+    /// 14772-1 applies to a file that is none of them.
     pub static ENCODING_UNSUPPORTED = {
-        severity: Error,
+        severity: Warning,
         level: Fast,
         clause: "19776",
         versions: "all",

@@ -40,6 +40,13 @@ crate::declare_rule! {
     /// ## Clause
     /// 19775-1 5 Field type reference; 19776-1 5 (XML encoding of field values: 5.1.2
     /// commas, 5.15 SFString and MFString).
+    /// The field types fix the form of a value: one value of the type in an SF field, whole
+    /// values of the single type in an MF field, and in XML commas only between those values.
+    /// A value in another form breaks these sentences. Where the commas set the numbers of an
+    /// MF vector field apart in groups of another size (x y w triples in an MFVec2d), the help
+    /// says so and asks whether another type was meant, rather than regroup the numbers.
+    /// > "SFxxxx fields may only contain a single value of the type indicated by the name of the field type" (19775-1 5.2.3)
+    /// > "within MF arrays, commas may only be used as whitespace between values of individual base datatypes" (19776-1 5.1.2)
     pub static FIELD_VALUE_SYNTAX = {
         severity: Error,
         level: Fast,

@@ -31,6 +31,11 @@ crate::declare_rule! {
     /// ## Clause
     /// 19776-1 4.2 (X3D XML documents are XML 1.0); XML 1.0 §4.3.3 Character Encoding in
     /// Entities; WHATWG Encoding Standard §4.2 Names and labels.
+    /// X3D names one character encoding for its files; a document declared in an encoding
+    /// x3dcheck cannot decode is in none that X3D allows. The sentence is 7.2.5.2's list of
+    /// what the header identifies, read in a copy of the 19775-1 V4.0 text
+    /// (tools.realism.com, "Core Component", X3D Declarative Tag).
+    /// > "identification of the character encoding being supported (for this standard, this shall be \"UTF-8\")" (19775-1 V4.0 7.2.5.2)
     pub static XML_ENCODING_UNSUPPORTED = {
         severity: Error,
         level: Fast,

@@ -6,7 +6,7 @@ use std::collections::BTreeMap;
 use crate::diagnostic::{Applicability, Fix, Span};
 use crate::model::{Encoding, NodeId, NodeKind};
 use crate::report::Diagnostic;
-use crate::schema::profiles;
+use crate::schema::{profiles, Version};
 use crate::validate::{edits, Ctx};
 
 crate::declare_rule! {
@@ -50,6 +50,11 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 7.2.5.3 (PROFILE), 7.2.5.4 (COMPONENT) and each component's support levels.
+    /// A node whose component level neither the profile nor a `component` statement
+    /// provides is functionality the document uses without declaring it. The sentence was
+    /// added to 7.2.5.4 by 19775-1 V3.1 (Amendment 1) and read there, on the web3d.org
+    /// V3.1 `core.html` page that lists the amendment's changes.
+    /// > "A user shall declare all components and levels for the nodes and/or functionality being used either explicitly through the use of the COMPONENT statement or implicitly through the PROFILE statement" (19775-1 V3.1 7.2.5.4)
     pub static COMPONENT_LEVEL_INSUFFICIENT = {
         severity: Error,
         level: Fast,
@@ -71,7 +76,7 @@ fn check(ctx: &mut Ctx) {
             .head
             .components
             .iter()
-            .filter(|c| c.name.text == component)
+            .filter(|c| names(&c.name.text, component, ctx.version))
             .filter_map(|c| c.level.map(|(level, _)| level))
             .max()
             .unwrap_or(0)
@@ -146,6 +151,16 @@ fn check(ctx: &mut Ctx) {
         }
         ctx.report(diagnostic);
     }
+}
+
+/// Whether a `component` statement's `name` declares `component`: by its name, or in
+/// X3D 4 by `H-Anim`, the X3D 3 name of HAnim that the 4.x schemas keep as a legacy name
+/// (COMPONENT_UNKNOWN warns about it).
+fn names(name: &str, component: &str, version: Version) -> bool {
+    name == component
+        || (component == "HAnim"
+            && name == "H-Anim"
+            && matches!(version, Version::V4_0 | Version::V4_1))
 }
 
 /// A fix declaring `component` at `level` (see the rule's Fix safety).

@@ -25,6 +25,16 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19776-1 (XML encoding) 5.1.2 containerField; 19775-1 the parent's interface table.
+    /// A containerField names the parent's field that holds the child; a name that is no
+    /// SFNode or MFNode field of the parent is no container field by the definition of the
+    /// term (read in the 19776-1 V3.0 text at x3d.m2osw.com, Part01/definitions.html).
+    /// X3D 4 changed the default of the Metadata nodes from `metadata` to `value`;
+    /// x3d-4.0.xsd says the default is read as `metadata` under a node that is not a
+    /// MetadataSet ("Default containerField='metadata' when providing information about the
+    /// parent element itself, otherwise apply containerField='value' when this element contains
+    /// payload metadata inside a parent/ancestor MetadataSet element"), so a MetadataSet child
+    /// of a Group without containerField is the Group's metadata, not a finding.
+    /// > "container field: field name for contained SFNode/MFNode content" (19776-1 3.2)
     pub static CONTAINER_FIELD_INVALID = {
         severity: Error,
         level: Fast,

@@ -35,6 +35,11 @@ crate::declare_rule! {
     /// ## Clause
     /// The node's interface table in the version that defines the field; 7.2.5.2;
     /// for VRML97 files, the node's interface in 14772-1 clause 6.
+    /// A field the version does not define is functionality none of the version's components
+    /// has at any level, so the document cannot declare it (VRML97: 14772-1 clause 6 gives
+    /// each node's fields). The sentence was added to 7.2.5.4 by 19775-1 V3.1 (Amendment 1),
+    /// read on the web3d.org V3.1 `core.html` page.
+    /// > "A user shall declare all components and levels for the nodes and/or functionality being used either explicitly through the use of the COMPONENT statement or implicitly through the PROFILE statement" (19775-1 V3.1 7.2.5.4)
     pub static FIELD_NOT_IN_VERSION = {
         severity: Error,
         level: Fast,

@@ -30,6 +30,9 @@ crate::declare_rule! {
     /// (19775-1 3 Definitions: an inputOnly field "may only receive events", an
     /// outputOnly field "may only send events"). 29.4.1 Script and the shader nodes of
     /// clause 31 declare their fields with these access types.
+    /// The XML encoding gives such fields no place in a file; the ClassicVRML grammar gives
+    /// an `eventIn`/`eventOut` declaration no value.
+    /// > "Fields with accessType inputOnly or outputOnly are transient and are not explicitly specified in an .x3d file." (19776-1 V3.0 6.1)
     pub static FIELD_NOT_INITIALIZABLE = {
         severity: Error,
         level: Fast,

@@ -40,6 +40,11 @@ crate::declare_rule! {
     /// ## Clause
     /// 19775-1 the node's clause in the version that defines it; 7.2.5.2 (version);
     /// for VRML97 files, 14772-1 clause 6 (the node reference lists every VRML97 node).
+    /// A node type the version does not have is in none of the version's components, so the
+    /// document cannot declare it (VRML97: 14772-1 clause 6 lists every node a VRML97 file
+    /// may use). The sentence was added to 7.2.5.4 by 19775-1 V3.1 (Amendment 1), read on
+    /// the web3d.org V3.1 `core.html` page.
+    /// > "A user shall declare all components and levels for the nodes and/or functionality being used either explicitly through the use of the COMPONENT statement or implicitly through the PROFILE statement" (19775-1 V3.1 7.2.5.4)
     pub static NODE_NOT_IN_VERSION = {
         severity: Error,
         level: Fast,

@@ -27,6 +27,10 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 4.4.1 (node types); 19776-1 4.3 (element names).
+    /// A node type of no version is in no component, so the document cannot declare it (the
+    /// sentence added to 7.2.5.4 by 19775-1 V3.1, read on the web3d.org V3.1 `core.html`
+    /// page).
+    /// > "A user shall declare all components and levels for the nodes and/or functionality being used either explicitly through the use of the COMPONENT statement or implicitly through the PROFILE statement" (19775-1 V3.1 7.2.5.4)
     pub static NODE_UNKNOWN = {
         severity: Error,
         level: Fast,

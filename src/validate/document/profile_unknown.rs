@@ -31,6 +31,8 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 7.2.5.3 (PROFILE statement).
+    /// The profile is of type `profileNameChoices` in x3d-4.0.xsd, a closed list.
+    /// > "This list is bounded, no additional values are allowed." (x3d-4.0.xsd, profileNameChoices)
     pub static PROFILE_UNKNOWN = {
         severity: Error,
         level: Fast,

@@ -39,6 +39,10 @@ crate::declare_rule! {
     /// ## Clause
     /// 19775-1 7.2.5.5 UNIT statement (one conversion per base unit category, the
     /// categories of 4.3.6 Table 4.2); 19776-1 4.2.3.4, 19776-2 the UNIT statement.
+    /// The sentence as the X3D 3.3 Units proposal wrote it into 7.2.5.5, quoted by
+    /// D. Brutzman on x3d-public, 2011-06-19 ("important questions regarding Units
+    /// proposal"); a secondary copy of the clause's text.
+    /// > "At most one UNIT statement shall be provided for each base unit type." (19775-1 V3.3 7.2.5.5)
     pub static UNIT_CATEGORY_DUPLICATE = {
         severity: Error,
         level: Fast,

@@ -22,6 +22,10 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19776-1 4.2 (X3D element); 19775-1 7.2.5.2 (X3D header statement).
+    /// x3d-4.0.xsd declares the attribute `use="required"` on the X3D element, with the
+    /// appinfo quoted below (the same in 3.x and 4.1); the JSON schema's X3D object requires
+    /// `@version` likewise.
+    /// > "Warning: version is required and must be specified in source document." (x3d-4.0.xsd, X3D element, version attribute)
     pub static X3D_VERSION_MISSING = {
         severity: Error,
         level: Fast,

@@ -19,6 +19,9 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 7.2.5.2 (X3D header statement).
+    /// The version is of type `x3dVersionChoices` in x3d-4.0.xsd (3.0 to 4.0; 4.1 in
+    /// x3d-4.1.xsd), a closed list.
+    /// > "x3dVersionChoices enumeration string constants are used to identify the allowed versions for an X3D scene graph. This list is bounded, no additional values are allowed." (x3d-4.0.xsd)
     pub static X3D_VERSION_UNKNOWN = {
         severity: Error,
         level: Fast,

@@ -34,6 +34,10 @@ crate::declare_rule! {
     /// the statement as encoded: 19776-1 (XML) `EXPORT` element with `localDEF` and `AS`,
     /// 19776-2 4.3.2.15 (ClassicVRML) `EXPORT localDEF AS name`, 19776-5 (JSON)
     /// `{"EXPORT": {"@localDEF", "@AS"}}`.
+    /// In XML the schema makes `localDEF` an `xs:IDREF` (x3d-4.0.xsd, EXPORT), so a name
+    /// that no DEF (an `xs:ID`) of the document carries breaks the XML validity constraint
+    /// below; ClassicVRML and JSON carry the same statement, with the same meaning.
+    /// > "each Name MUST match the value of an ID attribute on some element in the XML document" (XML 1.0 3.3.1, Validity constraint: IDREF)
     pub static EXPORT_UNDEFINED = {
         severity: Error,
         level: Standard,

@@ -35,6 +35,11 @@ crate::declare_rule! {
     /// 19776-2 4.3.2.14 (ClassicVRML) `IMPORT inlineDEF.importedDEF AS name`, 19776-5
     /// (JSON) `@inlineDEF`. Until this code, IMPORT_UNRESOLVED reported these statements
     /// at the deep level only.
+    /// In XML the schema makes `inlineDEF` an `xs:IDREF` (x3d-4.0.xsd, IMPORT), so a name
+    /// that no DEF of the document carries breaks the XML validity constraint below; a DEF
+    /// that names no Inline breaks 4.9.2's reading of the name ("the DEF name of the Inline
+    /// node"). ClassicVRML and JSON carry the same statement, with the same meaning.
+    /// > "each Name MUST match the value of an ID attribute on some element in the XML document" (XML 1.0 3.3.1, Validity constraint: IDREF)
     pub static IMPORT_INLINE_UNDEFINED = {
         severity: Error,
         level: Standard,

@@ -47,8 +47,15 @@ crate::declare_rule! {
     /// statements as encoded: 19776-1 (XML) `IMPORT` element with `inlineDEF`, `importedDEF`
     /// and `AS`, 19776-2 4.3.2.14 (ClassicVRML) `IMPORT inlineDEF.importedDEF AS name`,
     /// 19776-5 (JSON) `{"IMPORT": {"@inlineDEF", "@importedDEF", "@AS"}}`.
+    /// A warning, not an error (issue 32): the IMPORT is right as written; what it finds
+    /// depends on another file, which the browser loads at run time like any url (9.2.x, as
+    /// URL_UNRESOLVED, a warning) and which may change independently, and no sentence
+    /// makes a name the loaded file does not export an error of the importing file. An
+    /// inlined VRML97 file with `EXPORT` lines (castle-demo-models-classic sound.wrl) is the
+    /// case the message names: VRML97 has no EXPORT, so the lines are VRML_MALFORMED in that
+    /// file, and the importing scene gets this warning saying why nothing is imported.
     pub static IMPORT_UNRESOLVED = {
-        severity: Error,
+        severity: Warning,
         level: Deep,
         clause: "4.9.2",
         versions: "all",

@@ -38,8 +38,12 @@ crate::declare_rule! {
     /// ## Clause
     /// 19775-1 4.4.5 External prototype semantics (4.4.5.3: the `#name` of the url names
     /// the prototype in the file; without it, the first prototype).
+    /// A warning, not an error (issue 32): the declaration is right as written; whether the
+    /// file its url names declares the prototype depends on that file, loaded at run time
+    /// like any url (9.2.x; URL_UNRESOLVED, a warning, when the file is missing), and no
+    /// sentence makes it an error of the declaring file.
     pub static EXTERNPROTO_NOT_FOUND = {
-        severity: Error,
+        severity: Warning,
         level: Deep,
         clause: "4.4.5",
         versions: "all",
