@@ -31,6 +31,7 @@ pub mod shape;
 pub mod sound;
 pub mod suggest;
 pub mod text;
+pub mod texture_projection;
 pub mod texturing;
 
 pub use crate::diagnostic::{Level, Rule, Severity};

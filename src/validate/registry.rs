@@ -7,7 +7,8 @@ use std::sync::LazyLock;
 use super::{
     document, environmental_effects, events, geometry2d, geometry3d, geospatial, grouping, hanim,
     interpolation, lighting, navigation, networking, nurbs, particles, picking, prototypes,
-    rendering, rigid_body, scripting, sensors, shaders, shape, sound, text, texturing, Check, Rule,
+    rendering, rigid_body, scripting, sensors, shaders, shape, sound, text, texture_projection,
+    texturing, Check, Rule,
 };
 
 /// Every rule with its check function (None for those reported while reading).
@@ -38,6 +39,7 @@ pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {
         particles::RULES,
         rigid_body::RULES,
         picking::RULES,
+        texture_projection::RULES,
     ]
     .concat()
 });
