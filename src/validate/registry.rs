@@ -5,9 +5,10 @@
 use std::sync::LazyLock;
 
 use super::{
-    document, environmental_effects, events, geometry2d, geometry3d, geospatial, hanim,
-    interpolation, lighting, navigation, networking, nurbs, particles, prototypes, rendering,
-    rigid_body, scripting, sensors, shaders, shape, sound, texturing, Check, Rule,
+    document, environmental_effects, events, geometry2d, geometry3d, geospatial, grouping, hanim,
+    interpolation, lighting, navigation, networking, nurbs, particles, picking, prototypes,
+    rendering, rigid_body, scripting, sensors, shaders, shape, sound, text, texture_projection,
+    texturing, Check, Rule,
 };
 
 /// Every rule with its check function (None for those reported while reading).
@@ -18,12 +19,14 @@ pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {
         rendering::RULES,
         geometry2d::RULES,
         geometry3d::RULES,
+        text::RULES,
         lighting::RULES,
         texturing::RULES,
         events::RULES,
         prototypes::RULES,
         shaders::RULES,
         networking::RULES,
+        grouping::RULES,
         scripting::RULES,
         interpolation::RULES,
         sensors::RULES,
@@ -35,6 +38,8 @@ pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {
         sound::RULES,
         particles::RULES,
         rigid_body::RULES,
+        picking::RULES,
+        texture_projection::RULES,
     ]
     .concat()
 });

@@ -183,7 +183,8 @@ mod tests {
             Version::Vrml97,
             &[
                 ("Collision", vec![("collide", Value::Bools(vec![false]))]),
-                ("LOD", vec![("range", Value::Floats(vec![10.0, 20.0]))]),
+                // No levels, so no ranges either (LOD_LEVEL_COUNT_MISMATCH).
+                ("LOD", vec![("range", Value::Floats(vec![]))]),
                 ("SpotLight", vec![("radius", Value::Floats(vec![5.0]))]),
                 (
                     "Viewpoint",

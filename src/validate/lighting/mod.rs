@@ -26,8 +26,9 @@ fn is_positional_light(node: &Node) -> bool {
 }
 
 /// Lights that `accepts` and that set `field` themselves (not through `IS`) to a value
-/// `matches` holds for: each with the value's span and the light's type name.
-fn lights_setting<'a>(
+/// `matches` holds for: each with the value's span and the light's type name. The
+/// texture projectors (clause 42), lights of images, use it too.
+pub(crate) fn lights_setting<'a>(
     doc: &'a Document,
     accepts: impl Fn(&Node) -> bool,
     field: &str,
@@ -44,6 +45,6 @@ fn lights_setting<'a>(
 }
 
 /// Every component zero (-0 included).
-fn all_zero(values: &[f32]) -> bool {
+pub(crate) fn all_zero(values: &[f32]) -> bool {
     values.len() == 3 && values.iter().all(|c| *c == 0.0)
 }

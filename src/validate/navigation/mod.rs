@@ -2,6 +2,7 @@
 //! binding stacks of NavigationInfo, Background and Fog (7.2.2).
 
 pub mod bindable_never_bound;
+pub mod lod_level_count_mismatch;
 pub mod lod_range_not_increasing;
 pub mod navigation_type_malformed;
 pub mod ortho_field_of_view_invalid;
@@ -15,5 +16,6 @@ pub static RULES: &[&Check] = &[
     &bindable_never_bound::CHECK,
     &navigation_type_malformed::CHECK,
     &lod_range_not_increasing::CHECK,
+    &lod_level_count_mismatch::CHECK,
     &ortho_field_of_view_invalid::CHECK,
 ];

@@ -2,7 +2,8 @@
 //! ProgramShader compiled by glslang (`glsl`), from CDATA, `data:` URLs, source text in
 //! url entries and, at the deep level, local files (`source`); their fields compared
 //! with the uniforms the source declares (`uniforms`, Annex I). Nothing runs for a
-//! document without shader nodes, and glslang is initialised on the first shader.
+//! document without shader nodes, and glslang is initialised on the first shader. Also
+//! FloatVertexAttribute's value count (31.4.1).
 
 use std::rc::Rc;
 
@@ -18,6 +19,7 @@ pub mod shader_field_type_mismatch;
 pub mod shader_field_undeclared;
 pub(crate) mod source;
 mod uniforms;
+pub mod vertex_attribute_count_not_multiple;
 
 pub use shader_compile_error::SHADER_COMPILE_ERROR;
 pub use shader_field_type_mismatch::SHADER_FIELD_TYPE_MISMATCH;
@@ -28,6 +30,7 @@ pub static RULES: &[&Check] = &[
     &shader_compile_error::CHECK,
     &shader_field_undeclared::CHECK,
     &shader_field_type_mismatch::CHECK,
+    &vertex_attribute_count_not_multiple::CHECK,
 ];
 
 /// The document's shader analysis, made on first use (standard level and above: below it
