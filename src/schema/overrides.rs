@@ -103,6 +103,7 @@ const V4_1: &[Version] = &[Version::V4_1];
 const ALL: &[Version] = &Version::X3D;
 const V3_2_ON: &[Version] = &[Version::V3_2, Version::V3_3, Version::V4_0, Version::V4_1];
 const V4_1_AND_3_X: &[Version] = &[Version::V3_2, Version::V3_3, Version::V4_1];
+const V3_1_TO_3_3: &[Version] = &[Version::V3_1, Version::V3_2, Version::V3_3];
 
 const fn incl(value: f64) -> Option<Bound> {
     Some(Bound {
@@ -413,6 +414,14 @@ pub static FIELD_OVERRIDES: &[FieldOverride] = &[
         change: Change::Min(excl(0.0)),
         clause: "14.4.8 Rectangle2D",
         why: "the table gives (0,∞), as the 3.x UOMs do; the 4.x UOMs give no range",
+    },
+    FieldOverride {
+        versions: V3_1_TO_3_3,
+        node: "CADPart",
+        field: "scale",
+        change: Change::Min(excl(0.0)),
+        clause: "32.4.4 CADPart",
+        why: "the 3.x table gives `scale 1 1 1 (0,∞)`, as for HAnimJoint and GeoTransform (3.2–3.3 UOMs); the UOMs give no range. Not 4.x: the 4.x table was not read, and a copy of the 4.x CADPart prose says scale values may be positive, negative or zero, as Transform's does",
     },
     // ---- 15 Text ----
     FieldOverride {
