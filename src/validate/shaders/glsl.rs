@@ -64,16 +64,14 @@ pub enum Unversioned {
 }
 
 /// Compiles each part for its stage and, when `link` and all compile, links them into one
-/// program. Sources must not contain NUL (the caller reports those). None when there is no
-/// compiler: glslang could not be initialised, or this build has none ([`UNAVAILABLE`]).
-pub fn compile(parts: &[(Stage, &str)], link: bool, unversioned: Unversioned) -> Option<Program> {
-    #[cfg(feature = "glsl")]
-    return super::glslang::compile(parts, link, unversioned);
-    #[cfg(not(feature = "glsl"))]
-    {
-        let _ = (parts, link, unversioned);
-        None
-    }
+/// program; None when there is no compiler ([`UNAVAILABLE`]).
+#[cfg(feature = "glsl")]
+pub use super::glslang::compile;
+
+/// This build has no compiler: nothing is compiled.
+#[cfg(not(feature = "glsl"))]
+pub fn compile(_: &[(Stage, &str)], _link: bool, _: Unversioned) -> Option<Program> {
+    None
 }
 
 /// Why [`compile`] gave None, for VALIDATION_INCOMPLETE.

@@ -1,6 +1,6 @@
-//! The GLSL compiler (the `glsl` feature): Khronos glslang (the reference compiler, through `glslang-sys`,
-//! the raw bindings of the `glslang` crate), compiling each shader part for its stage and linking
-//! the parts of one program, as an OpenGL driver does.
+//! The GLSL compiler (the `glsl` feature): Khronos glslang (the reference compiler, through
+//! `glslang-sys`, the raw bindings of the `glslang` crate), compiling each shader part for
+//! its stage and linking the parts of one program, as an OpenGL driver does.
 //!
 //! Why the raw bindings and not the `glslang` crate: its safe `Shader` compiles a source without
 //! `#version` as GLSL ES 1.00 (its default version is 100) and links with Vulkan rules,
