@@ -32,7 +32,7 @@ use crate::config_file::{Resolver, Settings};
 use crate::library::Libraries;
 use crate::limits::MAX_INPUT_BYTES;
 use crate::read::{read_path, Contents};
-use crate::report::FileReport;
+use crate::report::{sarif, FileReport};
 use crate::validate::{Rule, RULES};
 
 pub use crate::report::json::{Diagnostic, Edit, File, Fix, RelatedPlace, Report};
@@ -70,7 +70,7 @@ pub fn check(source: &[u8], options: &Options) -> Result<Report, Error> {
 
 /// Checks `source` as [`check`] does, into the SARIF 2.1.0 log `--format sarif` prints.
 pub fn check_sarif(source: &[u8], options: &Options) -> Result<String, Error> {
-    Ok(crate::report::sarif::render(&check_reports(source, options)?))
+    Ok(sarif::render(&check_reports(source, options)?))
 }
 
 fn check_reports(source: &[u8], options: &Options) -> Result<Vec<FileReport>, Error> {

@@ -139,9 +139,7 @@ pub fn check(
         config: None,
     };
     let text = match format.as_deref() {
-        None | Some("json") => api::check(&source, &api_options)
-            .map_err(to_js)?
-            .to_json(),
+        None | Some("json") => api::check(&source, &api_options).map_err(to_js)?.to_json(),
         Some("sarif") => api::check_sarif(&source, &api_options).map_err(to_js)?,
         Some(other) => {
             return Err(JsError::new(&format!(
