@@ -32,6 +32,7 @@ use crate::config_file::{Resolver, Settings};
 use crate::library::Libraries;
 use crate::limits::MAX_INPUT_BYTES;
 use crate::read::{read_path, Contents};
+use crate::report::{sarif, FileReport};
 use crate::validate::{Rule, RULES};
 
 pub use crate::report::json::{Diagnostic, Edit, File, Fix, RelatedPlace, Report};
@@ -64,6 +65,15 @@ pub struct Error(String);
 
 /// Checks `source` (a scene in any encoding x3dcheck reads, compressed or not).
 pub fn check(source: &[u8], options: &Options) -> Result<Report, Error> {
+    Ok(Report::of(&check_reports(source, options)?, None))
+}
+
+/// Checks `source` as [`check`] does, into the SARIF 2.1.0 log `--format sarif` prints.
+pub fn check_sarif(source: &[u8], options: &Options) -> Result<String, Error> {
+    Ok(sarif::render(&check_reports(source, options)?))
+}
+
+fn check_reports(source: &[u8], options: &Options) -> Result<Vec<FileReport>, Error> {
     if source.len() > MAX_INPUT_BYTES {
         check_input(Input::TooLarge, options)
     } else {
@@ -95,10 +105,11 @@ pub fn check_file(path: impl AsRef<Path>, options: &Options) -> Result<Report, E
         path: Some(path.to_path_buf()),
         ..options.clone()
     };
-    match read_path(path, MAX_INPUT_BYTES).map_err(Error)? {
+    let files = match read_path(path, MAX_INPUT_BYTES).map_err(Error)? {
         Contents::Bytes(bytes) => check_input(Input::Bytes(&bytes), &options),
         Contents::TooLarge => check_input(Input::TooLarge, &options),
-    }
+    }?;
+    Ok(Report::of(&files, None))
 }
 
 /// `level` by its name: `fast`, `standard` or `deep`, in any case.
@@ -157,7 +168,8 @@ enum Input<'a> {
     TooLarge,
 }
 
-fn check_input(input: Input, options: &Options) -> Result<Report, Error> {
+/// The reports of the input and of the files its Inlines load.
+fn check_input(input: Input, options: &Options) -> Result<Vec<FileReport>, Error> {
     let config_error = |e: crate::config_file::ConfigError| Error(e.to_string());
     let mut resolver =
         Resolver::new(options.config.as_deref(), settings(options)?).map_err(config_error)?;
@@ -182,7 +194,7 @@ fn check_input(input: Input, options: &Options) -> Result<Report, Error> {
     for inlined in cli::check_inlined_files(&libraries, &listed, &mut resolver) {
         files.push(inlined.map_err(Error)?);
     }
-    Ok(Report::of(&files, None))
+    Ok(files)
 }
 
 /// The command line's settings of `options`.

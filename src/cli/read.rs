@@ -1,7 +1,6 @@
 //! The command line's side of reading: the input files are read by [`crate::read`]; here
 //! standard output is guarded so that a report is never written into nothing.
 
-use std::fs;
 use std::sync::OnceLock;
 
 pub use crate::read::{open, read_path, read_source, read_stdin, Contents, Source};
@@ -29,7 +28,7 @@ fn stdout_is_runtime_null() -> bool {
         )
     };
     let read_write = flags != -1 && flags & libc::O_ACCMODE == libc::O_RDWR;
-    let null = fs::metadata("/dev/null").ok();
+    let null = std::fs::metadata("/dev/null").ok();
     match (stat, null) {
         // st_rdev is u64 on Linux but narrower on some other unixes.
         #[allow(clippy::unnecessary_cast)]

@@ -219,7 +219,7 @@ fn check_program(ctx: &Ctx, program: &Program, resolver: Option<&Resolver>, out:
         out.notes.push((
             doc.node(program.owner).name_span,
             program.owner,
-            "shader source is not checked: the GLSL compiler could not be started".to_string(),
+            format!("shader source is not checked: {}", glsl::UNAVAILABLE),
         ));
         return;
     };

@@ -12,6 +12,9 @@ use crate::diagnostic::Level;
 
 pub mod analysis;
 pub(crate) mod glsl;
+#[cfg(feature = "glsl")]
+mod glslang;
+#[cfg(feature = "glsl")]
 mod limits;
 mod macros;
 pub mod shader_compile_error;
