@@ -3,7 +3,7 @@
 #   target/wasm/web/  the ES module for a web page (`import init, { check, rules, version }
 #                     from './x3dcheck_wasm.js'; await init();`)
 #   target/wasm/npm/  the npm package `x3dcheck` (Node >= 18 and browsers; `npm pack` it)
-# wasm-bindgen's CLI must be the version of the wasm-bindgen crate in Cargo.lock: it is
+# wasm-bindgen's CLI must be the version of the wasm-bindgen crate in bindings/wasm/Cargo.lock: it is
 # built from crates.io into target/tools when missing (no prebuilt download).
 # Run from anywhere; CARGO_TARGET_DIR is respected.
 set -eu
@@ -14,7 +14,7 @@ cd "$root"
 
 seconds() { date +%s; }
 
-version=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/version = |"/, ""); print; exit }' Cargo.lock)
+version=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/version = |"/, ""); print; exit }' "$here/Cargo.lock")
 bindgen=$target/tools/bin/wasm-bindgen
 if ! [ -x "$bindgen" ] || [ "$("$bindgen" --version)" != "wasm-bindgen $version" ]; then
     start=$(seconds)
@@ -26,7 +26,7 @@ if ! [ -x "$bindgen" ] || [ "$("$bindgen" --version)" != "wasm-bindgen $version"
 fi
 
 start=$(seconds)
-cargo build --release --target wasm32-unknown-unknown -p x3dcheck-wasm
+cargo build --release --locked --target wasm32-unknown-unknown --manifest-path "$here/Cargo.toml" --target-dir "$target"
 echo "wasm built in $(( $(seconds) - start )) s"
 wasm=$target/wasm32-unknown-unknown/release/x3dcheck_wasm.wasm
 
