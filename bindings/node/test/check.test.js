@@ -80,7 +80,7 @@ test("the README's example runs", (t) => {
   const lines = [];
   t.mock.method(console, 'log', (line) => lines.push(line));
   try {
-    const load = (name) => (name === 'x3dcheck' ? x3dcheck : require(name));
+    const load = (name) => (name === 'x3dcheck-native' ? x3dcheck : require(name));
     new Function('require', example)(load);
   } finally {
     process.chdir(cwd);

@@ -3,9 +3,9 @@
 //! JavaScript, built by `build.sh` into the npm package and the web page's module.
 //!
 //! Nothing here touches a file system or spawns a thread: the caller hands in the scene;
-//! the files its Inlines name are not read (the `resolve` callback is not written yet). This
-//! build has no GLSL compiler (glslang is C++): shaders are reported as
-//! VALIDATION_INCOMPLETE.
+//! the files its url fields name (Inlines, textures, external prototypes) are not read, and
+//! each relative url is reported as VALIDATION_INCOMPLETE at the deep level. This build has
+//! no GLSL compiler (glslang is C++): shaders are reported as VALIDATION_INCOMPLETE too.
 
 use std::path::PathBuf;
 
@@ -124,8 +124,11 @@ pub fn check(
     };
     let options = options.map(JsValue::from).unwrap_or(JsValue::UNDEFINED);
     let format = string_option(&options, "format")?;
+    // An option this build cannot honour is refused, not ignored.
     if get(&options, "resolve")?.is_some() {
-        return Err(JsError::new("options.resolve is not supported yet"));
+        return Err(JsError::new(
+            "check: options.resolve: this build reads no other file (Inlines, textures, external prototypes)",
+        ));
     }
     let api_options = api::Options {
         path: string_option(&options, "path")?.map(PathBuf::from),

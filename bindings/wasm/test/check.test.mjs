@@ -79,25 +79,17 @@ test('a shader is VALIDATION_INCOMPLETE: this build has no GLSL compiler', () =>
   assert.ok(!codes(report).includes('SHADER_COMPILE_ERROR'));
 });
 
-// The core reads Inlines through the file system, which WebAssembly has not; the hook
-// that hands `resolve` to it is not written yet.
-test('Inlines are loaded through resolve, at the deep level', { skip: 'options.resolve is not implemented' }, () => {
+// WebAssembly has no file system: the files url fields name are not read, and the deep level
+// says so for each relative url instead of calling it unresolved.
+test('url fields are not followed: VALIDATION_INCOMPLETE, never URL_UNRESOLVED', () => {
   const parent =
     "<X3D profile='Immersive' version='4.0'><Scene><Inline url='\"parts/child.x3d\"'/></Scene></X3D>";
-  const child =
-    "<X3D profile='Interchange' version='4.0'><Scene><Shape><Box size='-1 1 1'/></Shape></Scene></X3D>";
-  const asked = [];
-  const resolve = (p) => {
-    asked.push(p);
-    return p === 'scenes/parts/child.x3d' ? new TextEncoder().encode(child) : null;
-  };
-  const report = check(parent, { path: 'scenes/main.x3d', level: 'deep', resolve });
-  assert.deepEqual(asked, ['scenes/parts/child.x3d']);
-  assert.deepEqual(report.files.map((f) => f.path), ['scenes/main.x3d', 'scenes/parts/child.x3d']);
-  assert.ok(report.files[1].diagnostics.length > 0);
-  const missing = check(parent, { path: 'scenes/main.x3d', level: 'deep', resolve: () => null });
-  assert.equal(missing.files.length, 1);
-  assert.ok(codes(missing).includes('URL_UNRESOLVED'), JSON.stringify(codes(missing)));
+  const report = check(parent, { path: 'scenes/main.x3d', level: 'deep' });
+  assert.deepEqual(report.files.map((f) => f.path), ['scenes/main.x3d']);
+  const found = codes(report);
+  assert.ok(found.includes('VALIDATION_INCOMPLETE'), JSON.stringify(found));
+  assert.ok(!found.includes('URL_UNRESOLVED'), JSON.stringify(found));
+  assert.throws(() => check(parent, { resolve: () => null }), /reads no other file/);
 });
 
 test('bad input throws', () => {
