@@ -655,6 +655,7 @@ impl Importer {
             library: Some(LibraryPlace {
                 body: self.body,
                 line,
+                version: library.schema_version(),
             }),
         });
         // An instance of a library prototype: instantiated below from the library, never

@@ -161,6 +161,8 @@ pub struct Copied {
 pub struct LibraryPlace {
     pub body: u32,
     pub line: u32,
+    /// The version of the library file, which its body's nodes are written for.
+    pub version: Version,
 }
 
 /// What the ProtoInstances of one ProtoDeclare with the same values build (19775-1

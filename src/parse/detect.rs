@@ -20,7 +20,7 @@ pub fn detect(source: &[u8]) -> Detected {
             Diagnostic::new(
                 &ENCODING_UNSUPPORTED,
                 Span::new(0, 0),
-                format!("this is {what}, not X3D XML or X3D JSON"),
+                format!("this is {what}, not an X3D or VRML97 encoding"),
             )
             .help(help.to_string()),
         )
@@ -69,15 +69,15 @@ pub fn detect(source: &[u8]) -> Detected {
         Some(b'{') | Some(b'[') => Detected::Json,
         None => unsupported(
             "an empty file",
-            "an X3D document starts with `<X3D` (XML) or `{ \"X3D\"` (JSON)",
+            "an X3D document starts with `<X3D` (XML), `{ \"X3D\"` (JSON) or `#X3D V4.0 utf8` (ClassicVRML), a VRML97 one with `#VRML V2.0 utf8`",
         ),
         Some(_) if looks_binary(text) => unsupported(
             "binary data",
-            "x3dcheck reads the XML (.x3d) and JSON (.x3dj, .json) encodings",
+            "x3dcheck reads the XML (.x3d), JSON (.x3dj, .json), ClassicVRML (.x3dv) and VRML97 (.wrl) encodings",
         ),
         Some(_) => unsupported(
             "text in no X3D encoding",
-            "an X3D document starts with `<X3D` (XML) or `{ \"X3D\"` (JSON)",
+            "an X3D document starts with `<X3D` (XML), `{ \"X3D\"` (JSON) or `#X3D V4.0 utf8` (ClassicVRML), a VRML97 one with `#VRML V2.0 utf8`",
         ),
     }
 }

@@ -6,7 +6,8 @@ use super::line_index::LineIndex;
 use super::path::{NodePaths, ROOT};
 use super::Diagnostic;
 use crate::diagnostic::Applicability;
-use crate::model::{Document, NodeKind, Span};
+use crate::model::{Document, Encoding, NodeKind, Span};
+use crate::parse::rules::vrml_malformed::VRML_MALFORMED;
 use crate::parse::Progress;
 use crate::schema::clauses;
 use crate::validate::Severity;
@@ -183,6 +184,12 @@ pub fn resolve(
 /// subclause, the subclause of the node type it concerns (a SpotLight's direction cites
 /// SpotLight's, a QuadSet's count CADGeometry's).
 fn clause_of(d: &Diagnostic, doc: Option<&Document>) -> &'static str {
+    // A VRML97 file breaks 14772-1's grammar, not the ClassicVRML one of 19776-2.
+    if std::ptr::eq(d.rule, &VRML_MALFORMED)
+        && doc.is_some_and(|doc| doc.encoding == Encoding::Vrml97)
+    {
+        return "14772-1 A";
+    }
     if !clauses::is_node_subclause(d.rule.clause) {
         return d.rule.clause;
     }

@@ -2,17 +2,20 @@
 
 crate::declare_rule! {
     /// ## What it does
-    /// Reports an input that is neither X3D XML nor X3D JSON, and says what it looks like:
-    /// ClassicVRML (`#X3D`), VRML97 (`#VRML`), gzip-compressed, UTF-16, binary, or other text.
+    /// Reports an input in none of the encodings x3dcheck reads (X3D XML, X3D JSON,
+    /// ClassicVRML `#X3D`, VRML97 `#VRML V2.0`), and says what it looks like: VRML 1.0,
+    /// gzip-compressed data (inside another gzip stream), UTF-32, binary data, an empty
+    /// file, or other text.
     ///
     /// ## Why it matters
-    /// x3dcheck reads the XML and JSON encodings. Saying what the file is instead tells
-    /// the user how to convert it, rather than reporting a confusing parse error.
+    /// x3dcheck reads the XML, JSON, ClassicVRML and VRML97 encodings (gzip-compressed or
+    /// not, UTF-8 or UTF-16). Saying what the file is instead tells the user how to convert
+    /// it, rather than reporting a confusing parse error.
     ///
     /// ## Example
     /// ```text
-    /// #X3D V3.3 utf8
-    /// PROFILE Interchange
+    /// #VRML V1.0 ascii
+    /// Separator { Cube { } }
     /// ```
     ///
     /// ## Clause

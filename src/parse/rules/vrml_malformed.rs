@@ -28,7 +28,8 @@ crate::declare_rule! {
     /// ```
     ///
     /// ## Clause
-    /// 19776-2 (ClassicVRML encoding) Annex A Grammar; ISO/IEC 14772-1 (VRML97) Annex A.
+    /// 19776-2 (ClassicVRML encoding) Annex A Grammar; ISO/IEC 14772-1 (VRML97) Annex A,
+    /// which a finding in a VRML97 file cites (`14772-1 A`).
     /// > "vrmlScene ::= statements ;" (14772-1 A.2, the grammar the text does not match; 19776-2 Annex A likewise)
     pub static VRML_MALFORMED = {
         severity: Error,

@@ -127,14 +127,11 @@ fn check(ctx: &mut Ctx) {
         .node(id)
         .help(if declared(needed.component) > 0 {
             format!(
-                "raise the component statement to <component name='{}' level='{}'/>, or use a larger profile",
-                needed.component, needed.level
+                "raise the component statement to {}, or use a larger profile",
+                statement_text(ctx.doc.encoding, needed.component, needed.level)
             )
         } else {
-            format!(
-                "add <component name='{}' level='{}'/> to the head, or use a larger profile",
-                needed.component, needed.level
-            )
+            add_help(ctx.doc.encoding, needed.component, needed.level)
         });
         diagnostic.count = count;
         findings.push((diagnostic, needed.component, needed.level));
@@ -167,14 +164,7 @@ fn names(name: &str, component: &str, version: Version) -> bool {
 fn declare(ctx: &Ctx, component: &str, level: u8) -> Option<Fix> {
     let (doc, source) = (ctx.doc, ctx.source);
     let statements = &doc.head.components;
-    let title = match doc.encoding {
-        Encoding::Xml | Encoding::Json => {
-            format!("Declare <component name='{component}' level='{level}'/>")
-        }
-        Encoding::ClassicVrml | Encoding::Vrml97 => {
-            format!("Declare COMPONENT {component}:{level}")
-        }
-    };
+    let title = format!("Declare {}", statement_text(doc.encoding, component, level));
     let fix = |edit| Some(edits::fix(title.clone(), Applicability::Safe, vec![edit]));
     if let Some(existing) = statements.iter().rev().find(|c| c.name.text == component) {
         let (_, span) = existing.level?;
@@ -240,6 +230,27 @@ fn declare(ctx: &Ctx, component: &str, level: u8) -> Option<Fix> {
     }
 }
 
+/// The component statement declaring `component` at `level`, written as the document's
+/// encoding writes it (19776-1 `<component>`, 19776-2 `COMPONENT`, 19776-5 JSON).
+fn statement_text(encoding: Encoding, component: &str, level: impl std::fmt::Display) -> String {
+    match encoding {
+        Encoding::Xml => format!("<component name='{component}' level='{level}'/>"),
+        Encoding::Json => format!("{{\"@name\": \"{component}\", \"@level\": {level}}}"),
+        Encoding::ClassicVrml | Encoding::Vrml97 => format!("COMPONENT {component}:{level}"),
+    }
+}
+
+/// The help for a component the document does not declare: where its statement goes.
+fn add_help(encoding: Encoding, component: &str, level: u8) -> String {
+    let statement = statement_text(encoding, component, level);
+    let place = match encoding {
+        Encoding::Xml => "to the head",
+        Encoding::Json => "to the head's \"component\" list",
+        Encoding::ClassicVrml | Encoding::Vrml97 => "after the PROFILE statement",
+    };
+    format!("add {statement} {place}, or use a larger profile")
+}
+
 /// What the document provides of `component`: the profile's level and every `component`
 /// statement that names it, each with its level ("profile Immersive has no HAnim and
 /// `<component name='HAnim' level='1'/>` provides level 1").
@@ -257,10 +268,11 @@ fn provided_text(ctx: &Ctx, profile: &str, from_profile: u8, component: &str) ->
         .filter(|c| c.name.text == component)
     {
         parts.push(match statement.level {
-            Some((level, _)) => {
-                format!("<component name='{component}' level='{level}'/> provides level {level}")
-            }
-            None => format!("<component name='{component}'/> gives no level"),
+            Some((level, _)) => format!(
+                "{} provides level {level}",
+                statement_text(ctx.doc.encoding, component, level)
+            ),
+            None => format!("the {component} component statement gives no level"),
         });
     }
     parts.join(" and ")
@@ -326,9 +338,7 @@ fn statements(ctx: &Ctx, profile: &profiles::Profile) -> Vec<(Diagnostic, &'stat
             span,
             format!("the {kind} statement needs {component} level {level}, but {has}{times}"),
         )
-        .help(format!(
-            "add <component name='{component}' level='{level}'/> to the head, or use a larger profile"
-        ));
+        .help(add_help(doc.encoding, component, level));
         diagnostic.count = count;
         findings.push((diagnostic, component, level));
     }

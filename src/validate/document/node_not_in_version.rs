@@ -1,7 +1,9 @@
 //! NODE_NOT_IN_VERSION: a node type of another X3D version (or one X3D added to VRML97).
 
+use std::collections::HashSet;
+
 use crate::diagnostic::{Applicability, Fix, Span};
-use crate::model::{Encoding, NodeKind};
+use crate::model::{Encoding, LibraryPlace, NodeId, NodeKind};
 use crate::report::Diagnostic;
 use crate::schema::{self, versions, Version};
 use crate::validate::{edits, Ctx};
@@ -12,7 +14,11 @@ crate::declare_rule! {
     /// another, such as PhysicalMaterial or UnlitMaterial in a 3.3 scene, or an X3D node
     /// (TriangleSet, Switch's X3D siblings such as StaticGroup, any node X3D added) in a
     /// VRML97 file (`#VRML V2.0 utf8`), whose 54 nodes are those of 14772-1 clause 6; and a
-    /// `unit` statement in a version before 3.3, which introduced it (7.2.5.5).
+    /// `unit` statement in a version before 3.3, which introduced it (7.2.5.5). A node of
+    /// an external prototype's body read from another file is judged against that file's
+    /// version, once per node of the body (not at every instance), with no fix: a VRML97
+    /// scene may use a prototype an X3D file declares, and its KeySensor is no fault of
+    /// the VRML97 scene's.
     ///
     /// ## Why it matters
     /// A browser of the declared version does not know the node and skips it.
@@ -57,9 +63,23 @@ crate::declare_rule! {
 fn check(ctx: &mut Ctx) {
     units_before_3_3(ctx);
     let mut found = Vec::new();
+    let mut found_in_library = Vec::new();
     // The version every node reported has, when there is one: what the fix raises to.
     let mut target = Some(ctx.version);
+    // The library bodies' nodes already reported, by body, line and type: a body is
+    // copied at every instance, and its defect is one.
+    let mut library_seen = HashSet::new();
     for (id, node) in ctx.doc.iter() {
+        if let Some(place) = node.copy_of.and_then(|c| c.library) {
+            if let NodeKind::Known { def, .. } = node.kind {
+                if schema::schema(place.version).node(def.name).is_none()
+                    && library_seen.insert((place.body, place.line, def.name))
+                {
+                    found_in_library.push(library_finding(id, node.name_span, def.name, place));
+                }
+            }
+            continue;
+        }
         if let NodeKind::Known { def, version } = node.kind {
             if version != ctx.version {
                 let message = if ctx.version == Version::Vrml97 {
@@ -91,6 +111,27 @@ fn check(ctx: &mut Ctx) {
         }
         ctx.report(diagnostic);
     }
+    // Raising this document's version does not change the library file's.
+    for diagnostic in found_in_library {
+        ctx.report(diagnostic);
+    }
+}
+
+/// A node of an external prototype's body that its own file's version lacks.
+fn library_finding(id: NodeId, span: Span, name: &str, place: LibraryPlace) -> Diagnostic {
+    let message = if place.version == Version::Vrml97 {
+        format!(
+            "VRML97 (the version of the prototype's file) has no node {name}; {} added it",
+            first_with(|v| schema::schema(v).node(name).is_some()).name()
+        )
+    } else {
+        format!(
+            "{name} is not in {} (the version of the prototype's file); it is in {}",
+            place.version.name(),
+            versions::describe(&versions::with_node(name))
+        )
+    };
+    Diagnostic::new(&NODE_NOT_IN_VERSION, span, message).node(id)
 }
 
 /// Replaces the version as written with `target`'s number, and the number in the names of

@@ -6,10 +6,11 @@ use crate::validate::Ctx;
 
 crate::declare_rule! {
     /// ## What it does
-    /// Reports a SpotLight whose effective `beamWidth` is greater than its effective
-    /// `cutOffAngle` (defaults π/4 and π/2), compared as the f32 values the fields hold.
-    /// Only SpotLights that set at least one of the two fields are checked; NaN and
-    /// infinities are left to FIELD_VALUE_NONFINITE.
+    /// Reports a SpotLight whose written `beamWidth` is greater than its effective
+    /// `cutOffAngle` (default π/2), compared as the f32 values the fields hold. A
+    /// `beamWidth` left at its default (π/4 in X3D 3.x and 4.0) is not reported: a small
+    /// written cutOffAngle then asks for a hard-edged beam, which is what 17.4.4 gives.
+    /// NaN and infinities are left to FIELD_VALUE_NONFINITE.
     ///
     /// ## Why it matters
     /// 17.4.4: "If the beamWidth is greater than the cutOffAngle, beamWidth is defined to be
@@ -41,10 +42,11 @@ fn check(ctx: &mut Ctx) {
     for id in doc.nodes_of_type("SpotLight") {
         let node = doc.node(id);
         let (beam_entry, cutoff_entry) = (node.entry("beamWidth"), node.entry("cutOffAngle"));
-        if (beam_entry.is_none() && cutoff_entry.is_none())
-            || node.is_connected("beamWidth")
-            || node.is_connected("cutOffAngle")
-        {
+        // Only a written beamWidth is a soft edge the author asked for.
+        let Some(beam_entry) = beam_entry else {
+            continue;
+        };
+        if node.is_connected("beamWidth") || node.is_connected("cutOffAngle") {
             continue;
         }
         let (Some(beam), Some(cutoff)) =
@@ -54,12 +56,9 @@ fn check(ctx: &mut Ctx) {
         };
         // A non-finite value is FIELD_VALUE_NONFINITE's: it has no order to judge.
         if beam > cutoff && beam.is_finite() && cutoff.is_finite() {
-            let span = beam_entry
-                .or(cutoff_entry)
-                .map_or(node.name_span, |e| e.span);
             let mut diagnostic = Diagnostic::new(
                 &SPOT_BEAM_EXCEEDS_CUTOFF,
-                span,
+                beam_entry.span,
                 format!(
                     "SpotLight.beamWidth {} is greater than cutOffAngle {}: it is treated as equal, so the light has no soft edge",
                     readable(beam.into()),
@@ -67,7 +66,7 @@ fn check(ctx: &mut Ctx) {
                 ),
             )
             .node(id);
-            if let (Some(_), Some(cutoff_entry)) = (beam_entry, cutoff_entry) {
+            if let Some(cutoff_entry) = cutoff_entry {
                 diagnostic = diagnostic.related(cutoff_entry.span, "cutOffAngle");
             }
             ctx.report(diagnostic);

@@ -6,9 +6,11 @@ use crate::validate::Ctx;
 
 crate::declare_rule! {
     /// ## What it does
-    /// Reports a field a Script declares `inputOnly` whose ECMAScript code has no function
-    /// of the field's name, and one declared `inputOutput` that other nodes route events
-    /// to whose code has neither a function of its name nor one named `set_` + its name.
+    /// Reports a field a Script declares `inputOnly` that receives events (a ROUTE sends
+    /// events to it, or it is connected by `IS` to a prototype's interface) whose
+    /// ECMAScript code has no function of the field's name, and one declared `inputOutput`
+    /// that other nodes route events to whose code has neither a function of its name nor
+    /// one named `set_` + its name. A field no event reaches loses nothing.
     ///
     /// What was read, and where: ISO/IEC 19777-1 (the ECMAScript binding; VRML97's Annex C.4
     /// "eventIn handling" before it, C.4.1 "Receiving eventIns") has an input event passed
@@ -36,6 +38,8 @@ crate::declare_rule! {
     ///   <field name='set_fraction' type='SFFloat' accessType='inputOnly'/>
     ///   <![CDATA[ecmascript: function fraction(value) { } ]]>
     /// </Script>
+    /// <TimeSensor DEF='Clock' loop='true'/>
+    /// <ROUTE fromNode='Clock' fromField='fraction_changed' toNode='S' toField='set_fraction'/>
     /// ```
     ///
     /// ## Use instead
@@ -73,9 +77,13 @@ fn check(ctx: &mut Ctx) {
             let name = field.name.text.as_str();
             let setter = format!("set_{name}");
             let message = match field.access {
-                Some(AccessType::InputOnly) if !bound(name) => format!(
-                    "Script field `{name}` (inputOnly) has no function `{name}` in the code to receive its events"
-                ),
+                Some(AccessType::InputOnly)
+                    if !bound(name) && (routed_to(ctx, def, name) || node.is_connected(name)) =>
+                {
+                    format!(
+                    "Script field `{name}` (inputOnly) gets events but the code has no function `{name}` to receive them"
+                    )
+                }
                 Some(AccessType::InputOutput)
                     if !bound(name)
                         && !bound(&setter)

@@ -2,6 +2,7 @@
 
 use super::analysis::shape_pairs;
 use crate::report::Diagnostic;
+use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::Ctx;
 
 /// The geometries 11.4 colours with the Material's emissiveColor when they have no Color.
@@ -15,7 +16,8 @@ crate::declare_rule! {
     /// reported when the geometry has normals in X3D 4.x (17.2.2: "Geometry nodes that
     /// represent lines or points do not support lighting if the normal vectors for them
     /// are not provided", so with normals they are lit), or the Appearance has `shaders`
-    /// or a `texture` (point sprites, 12.4.7), or a field involved is connected by `IS`.
+    /// or a `texture` (point sprites, 12.4.7), or a field involved is connected by `IS` or
+    /// is the destination of a ROUTE (the scene sets the colour at run time).
     ///
     /// ## Why it matters
     /// 11.4: "If the color field is NULL and there is a Material defined for the Appearance
@@ -44,6 +46,8 @@ crate::declare_rule! {
 
 fn check(ctx: &mut Ctx) {
     let doc = ctx.doc;
+    let routed = routed_fields(doc);
+    let changed = |id, field| set_elsewhere(doc, &routed, id, field);
     let mut found = Vec::new();
     for pair in shape_pairs(doc) {
         let geometry = doc.node(pair.geometry);
@@ -52,9 +56,9 @@ fn check(ctx: &mut Ctx) {
         };
         if !LINE_AND_POINT_SETS.contains(&geometry.type_name())
             || geometry.child("color").is_some()
-            || geometry.is_connected("color")
+            || changed(pair.geometry, "color")
             || (ctx.version.is_4x()
-                && (geometry.child("normal").is_some() || geometry.is_connected("normal")))
+                && (geometry.child("normal").is_some() || changed(pair.geometry, "normal")))
             || !appearance.children("shaders").is_empty()
             || appearance.child("texture").is_some()
         {
@@ -64,7 +68,7 @@ fn check(ctx: &mut Ctx) {
             continue;
         };
         let m = doc.node(material.node);
-        if !m.is_a("Material") || m.is_connected("emissiveColor") {
+        if !m.is_a("Material") || changed(material.node, "emissiveColor") {
             continue;
         }
         let black = |field: &str| {
@@ -75,7 +79,10 @@ fn check(ctx: &mut Ctx) {
                 })
                 .unwrap_or(false)
         };
-        if black("emissiveColor") && !black("diffuseColor") && !m.is_connected("diffuseColor") {
+        if black("emissiveColor")
+            && !black("diffuseColor")
+            && !changed(material.node, "diffuseColor")
+        {
             found.push((
                 pair.shape,
                 pair.geometry_ref.span,
