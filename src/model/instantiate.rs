@@ -26,6 +26,7 @@
 //! the remaining nodes are checked as written.
 
 use std::collections::HashMap;
+use std::path::PathBuf;
 
 use super::builder::{Builder, Limit};
 use super::*;
@@ -41,6 +42,8 @@ pub struct LibraryFile<'a> {
     pub text: &'a [u8],
     /// Its name in messages (a path relative to the checked document's directory).
     pub name: String,
+    /// The path it was read from: its body's relative urls are relative to it.
+    pub path: PathBuf,
 }
 
 /// What the ExternProtoDeclares of a document and of the library files it reaches resolve
@@ -416,7 +419,10 @@ impl State<'_> {
             library.doc.protos[key.1].name.text, library.name
         );
         let bodies = &mut builder.doc_mut().library_bodies;
-        bodies.push(label);
+        bodies.push(LibraryBody {
+            label,
+            path: library.path.clone(),
+        });
         let index = (bodies.len() - 1) as u32;
         self.bodies.insert(key, index);
         index

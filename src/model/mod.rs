@@ -24,6 +24,7 @@ pub use instantiate::{instantiate_with, is_instantiation_limit, ExternalPrototyp
 pub use value::{range_applies, ChildRef, Image, Sink, Summarized, Summarizer, Summary, Value};
 
 use std::collections::HashMap;
+use std::path::{Path, PathBuf};
 
 use crate::schema::{AccessType, FieldDef, FieldType, NodeDef, Version};
 
@@ -163,6 +164,16 @@ pub struct LibraryPlace {
     pub line: u32,
     /// The version of the library file, which its body's nodes are written for.
     pub version: Version,
+}
+
+/// A prototype body in a library file that copies were made from.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LibraryBody {
+    /// How notes name it: `` `Lamp` in lib/lamps.x3d ``.
+    pub label: String,
+    /// The file it is written in, as it was read: the base of the relative urls its nodes
+    /// hold.
+    pub path: PathBuf,
 }
 
 /// What the ProtoInstances of one ProtoDeclare with the same values build (19775-1
@@ -496,9 +507,8 @@ pub struct Document {
     pub copies: usize,
     /// The prototype instantiations, shared by ProtoInstances with identical values.
     pub instantiations: Vec<Instantiation>,
-    /// The library prototype bodies copies were made from, as notes name them
-    /// (`` `Lamp` in lib/lamps.x3d ``); see [`LibraryPlace`].
-    pub library_bodies: Vec<String>,
+    /// The library prototype bodies copies were made from; see [`LibraryPlace`].
+    pub library_bodies: Vec<LibraryBody>,
     /// The comments addressed to x3dcheck, in document order.
     pub directives: Vec<Directive>,
 }
@@ -563,6 +573,15 @@ impl Document {
             library_bodies: Vec::new(),
             directives: Vec::new(),
         }
+    }
+
+    /// The library file `node` is written in, when it is a copy of a node of an external
+    /// prototype's body (None for the document's own nodes and for nodes an instance
+    /// passes in).
+    pub fn library_file_of(&self, node: NodeId) -> Option<&Path> {
+        let place = self.nodes.get(node.index())?.copy_of?.library?;
+        let body = self.library_bodies.get(place.body as usize)?;
+        Some(&body.path)
     }
 
     /// The nodes the document writes, without the copies instantiation made.

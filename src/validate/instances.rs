@@ -108,7 +108,7 @@ fn note_library(doc: &Document, d: &mut Diagnostic) {
         let body = doc
             .library_bodies
             .get(place.body as usize)
-            .map_or("", String::as_str);
+            .map_or("", |body| body.label.as_str());
         d.related
             .push((d.span, format!("in the body of {body} line {}", place.line)));
     }

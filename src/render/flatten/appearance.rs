@@ -5,6 +5,8 @@
 //! the rule that picks its texture coordinates (12.2.4, or the MultiTexture stage order of
 //! 18.4.4 and 18.4.5), resolved per Shape in `shape.rs`.
 
+use std::path::Path;
+
 use super::{Context, Walker};
 use crate::limits::MAX_RENDER_TEXTURE_BYTES as MAX_TEXTURE_BYTES;
 use crate::model::NodeId;
@@ -386,12 +388,11 @@ impl Walker<'_> {
 
     /// A single-image texture in the draw list (loaded once per node), or None, noted.
     fn texture(&mut self, context: Context, texture: NodeId) -> Option<LoadedTexture> {
-        let doc = context.doc;
         let key = (context.serial, texture);
         if let Some(entry) = self.texture_cache.get(&key) {
             return *entry;
         }
-        let loaded = match textures::load(doc, texture, context.base, &self.options.root) {
+        let loaded = match self.load_texture(context, texture) {
             Ok(loaded) => {
                 let bytes: usize = loaded.texture.levels.iter().map(Vec::len).sum();
                 if self.spent.texture_bytes + bytes > MAX_TEXTURE_BYTES {
@@ -419,6 +420,42 @@ impl Walker<'_> {
         };
         self.texture_cache.insert(key, loaded);
         loaded
+    }
+
+    /// The image of `texture`. A texture of an external prototype's body (another file) is
+    /// looked for next to that file first, as browsers do, then next to the document that
+    /// instantiates the prototype (the base VRML97 14772-1 4.5.3 names), noted when only
+    /// there: browsers differ on it.
+    fn load_texture(
+        &mut self,
+        context: Context,
+        texture: NodeId,
+    ) -> Result<textures::Loaded, textures::NotDrawn> {
+        let doc = context.doc;
+        let root = &self.options.root;
+        let Some(library) = doc.library_file_of(texture) else {
+            return textures::load(doc, texture, context.base, root);
+        };
+        let library_dir = library.parent().unwrap_or(Path::new("."));
+        let first = match textures::load(doc, texture, library_dir, root) {
+            Ok(loaded) => return Ok(loaded),
+            Err(first) => first,
+        };
+        match textures::load(doc, texture, context.base, root) {
+            Ok(loaded) => {
+                let file = library.file_name().unwrap_or_default().to_string_lossy();
+                self.note(
+                    context,
+                    texture,
+                    format!(
+                        "{} found only relative to the scene that instantiates the prototype, not to the prototype's file {file}: browsers that resolve it against the prototype's file draw no texture",
+                        doc.node(texture).type_name()
+                    ),
+                );
+                Ok(loaded)
+            }
+            Err(_) => Err(first),
+        }
     }
 
     /// The front material and, for TwoSidedMaterial, the back one.

@@ -275,6 +275,7 @@ impl Reached {
                         doc: library.document.as_ref()?,
                         text: &library.text,
                         name: display_path(base, &library.path),
+                        path: library.path.clone(),
                     })
                 })
                 .collect(),

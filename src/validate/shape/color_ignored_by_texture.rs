@@ -117,22 +117,27 @@ fn rgb_components(ctx: &Ctx, texture: NodeId) -> Option<i32> {
             node.value("image")?.as_images()?.first()?.components
         }
         "ImageTexture" if ctx.config.level >= Level::Deep && !node.is_connected("url") => {
-            i32::from(image_channels(ctx, node.value("url")?.as_strings()?)?)
+            i32::from(image_channels(
+                ctx,
+                texture,
+                node.value("url")?.as_strings()?,
+            )?)
         }
         _ => return None,
     };
     matches!(components, 3 | 4).then_some(components)
 }
 
-/// The channels of the image a browser would load from `urls`: the first local file or
-/// `data:` URL, skipping missing files; None when an entry before it cannot be judged.
-fn image_channels(ctx: &Ctx, urls: &[String]) -> Option<u8> {
+/// The channels of the image a browser would load from `urls` of `texture`: the first
+/// local file or `data:` URL, skipping missing files; None when an entry before it cannot
+/// be judged.
+fn image_channels(ctx: &Ctx, texture: NodeId, urls: &[String]) -> Option<u8> {
     let resolver = Resolver::new(ctx.base, ctx.config.root.as_deref());
     for url in urls {
         if let Some(data) = data_url::decode(url) {
             return bytes_channels(&data.ok()?.bytes);
         }
-        match resolver.resolve(url) {
+        match resolver.resolve_node(ctx.doc, texture, url) {
             Resolution::Local(path) => return file_channels(&path),
             Resolution::Missing { .. } => continue,
             _ => return None,

@@ -12,6 +12,10 @@
 //! - Nothing is read outside the allowed tree: `CheckConfig::root` when set, else the
 //!   document's directory. `..` is resolved lexically before the file system is touched,
 //!   and symlinks by canonicalizing after; a path leaving the tree is not read.
+//! - A node copied from an external prototype's body (another file) resolves its urls
+//!   against that file's directory, as browsers do, and falls back to the document's,
+//!   which VRML97 14772-1 4.5.3 names ("The file in which the prototype is instantiated,
+//!   if the statement is part of a prototype definition"): see [`Resolver::for_node`].
 
 use std::collections::HashMap;
 use std::ffi::OsString;
@@ -147,6 +151,33 @@ impl Resolver {
         Resolver { base, root }
     }
 
+    /// The resolver of the external prototype file `node` is copied from (its body's
+    /// relative urls are relative to that file, as browsers read them), within the same
+    /// tree; None for a node this document writes or passes to an instance.
+    pub fn for_node(&self, doc: &Document, node: NodeId) -> Option<Resolver> {
+        let dir = doc.library_file_of(node)?.parent()?;
+        let base = std::path::absolute(dir).ok().map(|b| normalize(&b));
+        Some(Resolver {
+            base,
+            root: self.root.clone(),
+        })
+    }
+
+    /// How `url`, an entry of a url field of `node`, resolves: against the external
+    /// prototype file `node` is copied from first, then against the document's directory.
+    pub fn resolve_node(&self, doc: &Document, node: NodeId, url: &str) -> Resolution {
+        let Some(library) = self.for_node(doc, node) else {
+            return self.resolve(url);
+        };
+        match library.resolve(url) {
+            Resolution::Local(path) => Resolution::Local(path),
+            first => match self.resolve(url) {
+                Resolution::Local(path) => Resolution::Local(path),
+                _ => first,
+            },
+        }
+    }
+
     pub fn resolve(&self, url: &str) -> Resolution {
         let url = url.trim();
         let Some(path) = local_path(url) else {
@@ -201,7 +232,8 @@ impl Resolver {
         let Some((lexical_root, canonical_root)) = &self.root else {
             return Resolution::Outside(joined);
         };
-        if !joined.starts_with(lexical_root) {
+        // A library file's directory (the base of its body's urls) is canonical.
+        if !joined.starts_with(lexical_root) && !joined.starts_with(canonical_root) {
             return Resolution::Outside(joined);
         }
         let Ok(canonical) = joined.canonicalize() else {

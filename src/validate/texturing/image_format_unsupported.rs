@@ -51,7 +51,7 @@ fn check(ctx: &mut Ctx) {
             continue;
         }
         for url in field.entry.value.as_strings().unwrap_or_default() {
-            let Resolution::Local(path) = resolver.resolve(url) else {
+            let Resolution::Local(path) = resolver.resolve_node(ctx.doc, field.node, url) else {
                 continue;
             };
             // The header tells PNG, JPEG and GIF apart without a full decode.

@@ -59,7 +59,7 @@ fn check(ctx: &mut Ctx) {
             let probe = match data_url::decode(url) {
                 Some(Ok(data)) => probe_bytes(&data.bytes),
                 Some(Err(why)) => Probe::Broken(why),
-                None => match resolver.resolve(url) {
+                None => match resolver.resolve_node(ctx.doc, field.node, url) {
                     Resolution::Local(path) => prober.decode(&path),
                     _ => continue,
                 },

@@ -56,7 +56,7 @@ fn check(ctx: &mut Ctx) {
             continue;
         }
         for url in field.entry.value.as_strings().unwrap_or_default() {
-            let Resolution::Local(path) = resolver.resolve(url) else {
+            let Resolution::Local(path) = resolver.resolve_node(ctx.doc, field.node, url) else {
                 continue;
             };
             let Some(head) = head_of(&path) else {

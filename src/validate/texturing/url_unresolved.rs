@@ -3,7 +3,7 @@
 use super::files::{not_fetched, url_fields, Resolution, Resolver};
 use crate::report::Diagnostic;
 use crate::validate::document::validation_incomplete::VALIDATION_INCOMPLETE;
-use crate::validate::prototypes::externs::Resolved;
+use crate::validate::prototypes::externs::{display_path, Resolved};
 use crate::validate::shaders::source::is_source_text;
 use crate::validate::Ctx;
 
@@ -32,6 +32,11 @@ crate::declare_rule! {
     ///   not read and gets VALIDATION_INCOMPLETE.
     /// - When the only match differs in letter case, the message says so: it loads on
     ///   Windows and macOS but not from a case-sensitive file system or web server.
+    /// - A node of an external prototype's body (another file) resolves its relative urls
+    ///   against that file's directory, as browsers do. VRML97 14772-1 4.5.3 names
+    ///   another base for them: "The file in which the prototype is instantiated, if the
+    ///   statement is part of a prototype definition", the checked document. A url found
+    ///   only there is reported too (the message says so): browsers differ on it.
     ///
     /// ## Why it matters
     /// 9.2.1 (URLs): a browser tries the entries in order and uses the first it can load;
@@ -43,7 +48,7 @@ crate::declare_rule! {
     /// ```
     ///
     /// ## Clause
-    /// 19775-1 9.2.1 URLs, URNs and URIs; 18.4.1 ImageTexture.
+    /// 19775-1 9.2.1 URLs, URNs and URIs; 18.4.1 ImageTexture; 14772-1 4.5.3 Relative URLs.
     pub static URL_UNRESOLVED = {
         severity: Warning,
         level: Deep,
@@ -66,13 +71,15 @@ fn check(ctx: &mut Ctx) {
         // GLSL written straight into a shader part's url entry is its content too.
         let node = ctx.doc.node(field.node);
         let shader = node.is_a("ShaderPart") || node.is_a("ShaderProgram");
+        // A node of an external prototype's body: its urls are relative to its file.
+        let library = resolver.for_node(ctx.doc, field.node);
         let resolutions: Vec<Resolution> = urls
             .iter()
             .map(|u| {
                 if shader && is_source_text(u) {
                     Resolution::Inline
                 } else {
-                    resolver.resolve(u)
+                    library.as_ref().unwrap_or(&resolver).resolve(u)
                 }
             })
             .collect();
@@ -82,8 +89,27 @@ fn check(ctx: &mut Ctx) {
         {
             continue;
         }
+        let library_file = ctx
+            .doc
+            .library_file_of(field.node)
+            .map(|path| display_path(ctx.base, path));
         let type_name = ctx.doc.node(field.node).type_name();
         let what = format!("{type_name}.{}", field.entry.name());
+        if let Some(file) = &library_file {
+            let beside_document = urls
+                .iter()
+                .find(|u| matches!(resolver.resolve(u), Resolution::Local(_)));
+            if let Some(url) = beside_document {
+                found.push(
+                    Diagnostic::new(&URL_UNRESOLVED, field.entry.span, format!(
+                        "{what}: \"{url}\" is found next to the document that instantiates the prototype, not next to the prototype's file {file}: browsers that resolve it against the prototype's file do not load it"
+                    ))
+                    .help("put the file next to the prototype's file, or write a url relative to it")
+                    .node(field.node),
+                );
+                continue;
+            }
+        }
         let unchecked = urls.iter().zip(&resolutions).find_map(|(url, r)| match r {
             Resolution::Network(_) => Some(format!("{what}: {}", not_fetched(url))),
             Resolution::Outside(_) => Some(format!(
@@ -111,8 +137,12 @@ fn check(ctx: &mut Ctx) {
                         listed.join(" or ")
                     ),
                     None => format!(
-                        "{what}: no readable file {} next to the document",
-                        listed.join(" or ")
+                        "{what}: no readable file {} next to {}",
+                        listed.join(" or "),
+                        library_file.as_ref().map_or_else(
+                            || "the document".to_string(),
+                            |file| format!("the prototype's file {file} or the document")
+                        )
                     ),
                 };
                 Diagnostic::new(&URL_UNRESOLVED, field.entry.span, message)
