@@ -231,10 +231,7 @@ fn junit_is_well_formed_and_counts_failures() {
     // One passing case for the clean file, one failing case per error.
     assert_eq!(cases, 3);
     let types: Vec<&str> = failures.iter().map(|(t, _)| t.as_str()).collect();
-    assert_eq!(
-        types,
-        ["ROUTE_FIELD_UNKNOWN", "ROUTE_TYPE_MISMATCH"]
-    );
+    assert_eq!(types, ["ROUTE_FIELD_UNKNOWN", "ROUTE_TYPE_MISMATCH"]);
     assert!(failures[1]
         .1
         .contains("`Clock.fraction_changed` (TimeSensor, SFFloat)"));
