@@ -50,6 +50,26 @@ const LOWERED: &[(&str, Severity, &str)] = &[
         Severity::Warning,
         "issue 32: whether the url's file declares the prototype depends on that file, loaded at run time like any url",
     ),
+    (
+        "FIELD_DUPLICATE",
+        Severity::Warning,
+        "issue 32: JSON only says member names SHOULD be unique (RFC 8259 4); no 'shall' found against two fieldValue or field statements of one name",
+    ),
+    (
+        "PROTO_FIELD_UNKNOWN",
+        Severity::Warning,
+        "issue 32: 14772-1 4.8.3 makes an IS to an undeclared field an error, but no sentence was found for a field set on an instance",
+    ),
+    (
+        "SHADER_FIELD_TYPE_MISMATCH",
+        Severity::Warning,
+        "issue 32: Annex I maps field types to GLSL types without a 'shall' on the file; OpenGL refusing the uniform is run-time",
+    ),
+    (
+        "USE_TYPE_MISMATCH",
+        Severity::Warning,
+        "issue 32: USE is an xs:IDREF; no sentence was found that the USE element's name shall be the DEF node's type",
+    ),
 ];
 
 /// The table rows of RULES.md: `| CODE | sev | …`. §1 and §7 are the fast level; a

@@ -80,24 +80,9 @@ fn every_rule_has_docs() {
     );
 }
 
-/// Error-severity rules whose `## Clause` section does not quote yet the sentence the file
-/// breaks (issue 32). A code leaves this list when its quote lands (the test fails until
-/// it does).
-const QUOTE_PENDING: &[&str] = &[
-    "FIELD_DUPLICATE",
-    "FIELD_UNKNOWN",
-    "NODE_TYPE_NOT_ALLOWED",
-    "PROTO_FIELD_UNKNOWN",
-    "ROOT_CONTENT_IGNORED",
-    "ROOT_NOT_X3D",
-    "SHADER_COMPILE_ERROR",
-    "SHADER_FIELD_TYPE_MISMATCH",
-    "USE_TYPE_MISMATCH",
-    "USE_WITH_FIELDS",
-];
-
 /// An error says which "shall" it enforces: the `## Clause` section of every rule whose
-/// default severity is Error quotes the sentence, as a line `> "…" (document clause)`.
+/// default severity is Error quotes the sentence, as a line `> "…" (document clause)`
+/// (issue 32).
 #[test]
 fn every_error_quotes_its_clause() {
     let mut problems = Vec::new();
@@ -109,16 +94,8 @@ fn every_error_quotes_its_clause() {
         let quoted = clause
             .lines()
             .any(|line| line.trim_start().starts_with("> \""));
-        let pending = QUOTE_PENDING.contains(&rule.code);
-        match (rule.severity == Severity::Error && !quoted, pending) {
-            (true, false) => {
-                problems.push(format!("{}: no `> \"…\"` line in `## Clause`", rule.code))
-            }
-            (false, true) => problems.push(format!(
-                "{}: quoted or not an error: take it off QUOTE_PENDING",
-                rule.code
-            )),
-            _ => {}
+        if rule.severity == Severity::Error && !quoted {
+            problems.push(format!("{}: no `> \"…\"` line in `## Clause`", rule.code));
         }
     }
     assert!(problems.is_empty(), "{}", problems.join("\n"));

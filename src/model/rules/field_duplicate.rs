@@ -19,8 +19,14 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 4.4.2 Field semantics; 19776-5 (JSON encoding).
+    ///
+    /// A warning (issue 32): JSON itself only recommends unique member names ("The names
+    /// within an object SHOULD be unique", RFC 8259 4), the X3D JSON schema cannot say
+    /// it, and no sentence was found that forbids two `fieldValue` statements or two
+    /// `field` declarations of one name. (The XML attribute case is XML 1.0's
+    /// well-formedness constraint Unique Att Spec, reported as XML_MALFORMED.)
     pub static FIELD_DUPLICATE = {
-        severity: Error,
+        severity: Warning,
         level: Fast,
         clause: "4.4.2",
         versions: "all",

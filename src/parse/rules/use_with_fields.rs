@@ -17,6 +17,13 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 4.4.3 DEF/USE semantics; 19776-1 4.3.
+    /// > "USE means reuse an already DEF-ed node ID, excluding all child nodes and all other attributes (except for containerField, which can have a different value)." (x3d-4.0.xsd, attribute group DEF_USE, the USE attribute)
+    ///
+    /// That annotation of the X3D XML Schema (the XML encoding's schema, 19776-1 V3.0
+    /// 6.1) is the only wording found; a USE element with a field, a DEF or children
+    /// breaks it. ClassicVRML has no syntax for it (`USE name` takes nothing after it), and
+    /// the X3D JSON schema's USE form of each node admits `@USE`, `@class` and comments only
+    /// (`additionalProperties: false`).
     pub static USE_WITH_FIELDS = {
         severity: Error,
         level: Fast,

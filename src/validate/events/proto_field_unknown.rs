@@ -32,8 +32,12 @@ crate::declare_rule! {
     /// ## Clause
     /// 19775-1 4.4.4.4 Prototype instantiation semantics (an instance sets the fields its
     /// prototype declares).
+    ///
+    /// A warning (issue 32): 14772-1 4.8.3 makes an IS to an undeclared field an error
+    /// (IS_FIELD_UNKNOWN), but no sentence was found that says the same of a field set
+    /// on an instance, and the X3D XML Schema types a `fieldValue` name as any string.
     pub static PROTO_FIELD_UNKNOWN = {
-        severity: Error,
+        severity: Warning,
         level: Standard,
         clause: "4.4.4",
         versions: "all",

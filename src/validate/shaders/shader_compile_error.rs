@@ -67,6 +67,12 @@ crate::declare_rule! {
     /// 19775-1 31.2.2 Shader language support, 31.4.7 ShaderPart, 31.4.8 ShaderProgram,
     /// Annex I (OpenGL shading language binding); the OpenGL Shading Language 1.10–4.60
     /// and OpenGL ES Shading Language 1.00–3.20 specifications.
+    /// > "Compile-time errors must be returned for lexically or grammatically incorrect shaders." (The OpenGL Shading Language 4.60, 1 Introduction, Error Handling)
+    /// > "Where the specification uses the terms required, must/must not, does/does not, disallowed, or not supported, the compiler or linker is required to detect and report any violations." (The OpenGL ES Shading Language 3.20, 1 Introduction, Error Handling)
+    ///
+    /// A part that glslang rejects breaks the language its `#version` names, which is
+    /// the language 31.2.2 and Annex I bind the ShaderPart to. (Read in the
+    /// KhronosGroup/GLSL sources, chapters/introduction.adoc.)
     pub static SHADER_COMPILE_ERROR = {
         severity: Error,
         level: Standard,
