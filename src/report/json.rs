@@ -10,6 +10,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::resolve::VRML97_GRAMMAR;
 use super::{FileReport, Related, Resolved, ResolvedEdit, ResolvedFix, Stats, Summary};
 use crate::diagnostic::Applicability;
 use crate::model::{Encoding, Span};
@@ -319,8 +320,11 @@ fn file_report(file: File) -> Result<FileReport, ReadError> {
                 end_line: d.end_line,
                 end_column: d.end_column,
                 path: d.path,
-                // A finding on a node cites that node type's subclause.
-                clause: crate::schema::clauses::known_subclause(&d.clause).unwrap_or(rule.clause),
+                // A finding on a node cites that node type's subclause; a VRML97 syntax
+                // finding, 14772-1's grammar.
+                clause: crate::schema::clauses::known_subclause(&d.clause)
+                    .or((d.clause == VRML97_GRAMMAR).then_some(VRML97_GRAMMAR))
+                    .unwrap_or(rule.clause),
                 index: d.index,
                 indices: d.indices,
                 value: d.value,

@@ -180,6 +180,9 @@ pub fn resolve(
         .collect()
 }
 
+/// What a VRML97 file's syntax finding cites: the grammar of ISO/IEC 14772-1, Annex A.
+pub(crate) const VRML97_GRAMMAR: &str = "14772-1 A";
+
 /// The clause a diagnostic cites: its rule's, or, when the rule cites a node type's
 /// subclause, the subclause of the node type it concerns (a SpotLight's direction cites
 /// SpotLight's, a QuadSet's count CADGeometry's).
@@ -188,7 +191,7 @@ fn clause_of(d: &Diagnostic, doc: Option<&Document>) -> &'static str {
     if std::ptr::eq(d.rule, &VRML_MALFORMED)
         && doc.is_some_and(|doc| doc.encoding == Encoding::Vrml97)
     {
-        return "14772-1 A";
+        return VRML97_GRAMMAR;
     }
     if !clauses::is_node_subclause(d.rule.clause) {
         return d.rule.clause;
