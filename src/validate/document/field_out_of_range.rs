@@ -45,8 +45,8 @@ crate::declare_rule! {
     /// ## Clause
     /// 19775-1 the node's interface table; 4.4.2.2 Field semantics.
     /// The range column of the interface table is the constraint, stated per field: e.g.
-    /// DirectionalLight's `ambientIntensity` row, whose value outside [0,1] the file breaks.
-    /// > "SFFloat [in,out] ambientIntensity 0 [0,1]" (19775-1 17.4.1, an interface table row; every field's row states its range likewise)
+    /// DirectionalLight's `ambientIntensity` row, whose value outside `[0,1]` the file breaks.
+    /// > "SFFloat `[in,out]` ambientIntensity 0 `[0,1]`" (19775-1 17.4.1, an interface table row; every field's row states its range likewise)
     pub static FIELD_OUT_OF_RANGE = {
         severity: Error,
         level: Fast,

@@ -25,7 +25,7 @@ crate::declare_rule! {
     /// 19775-1 5.3.4 SFFloat and MFFloat, 5.3.2 SFDouble (IEEE 754 finite values).
     /// The widest range an interface table gives a float field is the open interval (-∞,∞):
     /// an infinity is outside it, and NaN is in no range.
-    /// > "SFVec3f [in,out] direction 0 0 -1 (-∞,∞)" (19775-1 17.4.1, an interface table row; unbounded fields are stated so throughout)
+    /// > "SFVec3f `[in,out]` direction 0 0 -1 (-∞,∞)" (19775-1 17.4.1, an interface table row; unbounded fields are stated so throughout)
     pub static FIELD_VALUE_NONFINITE = {
         severity: Error,
         level: Fast,

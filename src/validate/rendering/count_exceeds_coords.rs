@@ -29,7 +29,7 @@ crate::declare_rule! {
     /// A warning, not an error (issue 32): the clauses constrain each count ("Each value
     /// of the vertexCount array shall be greater than or equal to two", 11.4.5; three for
     /// fanCount and stripCount) but no sentence requires the coordinates to suffice for
-    /// their sum; "Coordinates are assigned to each line by taking vertexCount[n] vertices
+    /// their sum; "Coordinates are assigned to each line by taking `vertexCount[n]` vertices
     /// from the coordinate field" describes the reading, and what a browser draws when the
     /// coordinates run out is left undefined.
     pub static COUNT_EXCEEDS_COORDS = {
