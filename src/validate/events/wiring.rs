@@ -207,3 +207,15 @@ pub(crate) fn set_elsewhere(
 ) -> bool {
     doc.node(id).is_connected(field) || routed.contains(&(id, field.to_string()))
 }
+
+/// Whether any of `fields` of node `id` is set other than by its written value.
+pub(crate) fn any_set_elsewhere(
+    doc: &Document,
+    routed: &HashSet<(NodeId, String)>,
+    id: NodeId,
+    fields: &[&str],
+) -> bool {
+    fields
+        .iter()
+        .any(|field| set_elsewhere(doc, routed, id, field))
+}

@@ -1,7 +1,7 @@
 //! DISK2D_RADII_INVERTED: a Disk2D whose inner radius is greater than its outer radius.
 
 use crate::report::Diagnostic;
-use crate::validate::events::wiring::{routed_fields, set_elsewhere};
+use crate::validate::events::wiring::{any_set_elsewhere, routed_fields};
 use crate::validate::numbers::readable;
 use crate::validate::Ctx;
 
@@ -52,10 +52,7 @@ fn check(ctx: &mut Ctx) {
     let routed = routed_fields(doc);
     let mut found = Vec::new();
     for id in doc.nodes_of_type("Disk2D") {
-        if ["innerRadius", "outerRadius"]
-            .iter()
-            .any(|field| set_elsewhere(doc, &routed, id, field))
-        {
+        if any_set_elsewhere(doc, &routed, id, &["innerRadius", "outerRadius"]) {
             continue;
         }
         let (Some(inner), Some(outer)) =

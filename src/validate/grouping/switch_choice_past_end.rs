@@ -2,7 +2,7 @@
 
 use crate::model::{Document, NodeId};
 use crate::report::Diagnostic;
-use crate::validate::events::wiring::{routed_fields, set_elsewhere};
+use crate::validate::events::wiring::{any_set_elsewhere, routed_fields};
 use crate::validate::numbers::plural;
 use crate::validate::Ctx;
 
@@ -65,10 +65,7 @@ fn check(ctx: &mut Ctx) {
     let routed = routed_fields(doc);
     let mut found = Vec::new();
     for id in doc.nodes_of_type("Switch") {
-        if CHOICE_FIELDS
-            .iter()
-            .any(|field| set_elsewhere(doc, &routed, id, field))
-        {
+        if any_set_elsewhere(doc, &routed, id, &CHOICE_FIELDS) {
             continue;
         }
         let node = doc.node(id);

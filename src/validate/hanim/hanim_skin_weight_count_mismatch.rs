@@ -2,7 +2,7 @@
 //! per skinCoordIndex entry.
 
 use crate::report::Diagnostic;
-use crate::validate::events::wiring::{routed_fields, set_elsewhere};
+use crate::validate::events::wiring::{any_set_elsewhere, routed_fields};
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -54,10 +54,7 @@ fn check(ctx: &mut Ctx) {
     let routed = routed_fields(doc);
     let mut found = Vec::new();
     for id in doc.nodes_of_type("HAnimJoint") {
-        if ["skinCoordIndex", "skinCoordWeight"]
-            .iter()
-            .any(|f| set_elsewhere(doc, &routed, id, f))
-        {
+        if any_set_elsewhere(doc, &routed, id, &["skinCoordIndex", "skinCoordWeight"]) {
             continue;
         }
         let node = doc.node(id);

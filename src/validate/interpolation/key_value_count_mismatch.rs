@@ -3,7 +3,7 @@
 
 use crate::model::{NodeId, Span, Value};
 use crate::report::Diagnostic;
-use crate::validate::events::wiring::{routed_fields, set_elsewhere};
+use crate::validate::events::wiring::{any_set_elsewhere, routed_fields, set_elsewhere};
 use crate::validate::numbers::plural;
 use crate::validate::Ctx;
 
@@ -87,10 +87,7 @@ fn check(ctx: &mut Ctx) {
         if !(node.is_a("X3DInterpolatorNode") || node.is_a("X3DSequencerNode")) {
             continue;
         }
-        if ["key", "keyValue"]
-            .iter()
-            .any(|f| set_elsewhere(doc, &routed, id, f))
-        {
+        if any_set_elsewhere(doc, &routed, id, &["key", "keyValue"]) {
             continue;
         }
         let Some(keys) = doc.value_of(id, "key").map(|v| v.len()) else {

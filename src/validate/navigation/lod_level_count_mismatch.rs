@@ -1,7 +1,7 @@
 //! LOD_LEVEL_COUNT_MISMATCH: an LOD without one level more than it has ranges.
 
 use crate::report::Diagnostic;
-use crate::validate::events::wiring::{routed_fields, set_elsewhere};
+use crate::validate::events::wiring::{any_set_elsewhere, routed_fields};
 use crate::validate::numbers::plural;
 use crate::validate::Ctx;
 
@@ -69,10 +69,7 @@ fn check(ctx: &mut Ctx) {
     let routed = routed_fields(doc);
     let mut found = Vec::new();
     for id in doc.nodes_of_type("LOD") {
-        if LEVEL_FIELDS
-            .iter()
-            .any(|field| set_elsewhere(doc, &routed, id, field))
-        {
+        if any_set_elsewhere(doc, &routed, id, &LEVEL_FIELDS) {
             continue;
         }
         let node = doc.node(id);

@@ -9,7 +9,7 @@ pub mod nurbs_weight_count_mismatch;
 
 use std::collections::HashSet;
 
-use super::events::wiring::{routed_fields, set_elsewhere};
+use super::events::wiring::{any_set_elsewhere, routed_fields, set_elsewhere};
 use super::numbers::plural;
 use super::{Check, Ctx, Rule};
 use crate::model::{Document, NodeId, Span};
@@ -105,7 +105,7 @@ fn directions(
     } else {
         return None;
     };
-    if fields.iter().any(|f| set_elsewhere(doc, routed, id, f)) {
+    if any_set_elsewhere(doc, routed, id, fields) {
         return None;
     }
     let direction = |knot: &'static str, order: &str, points: usize, dimension| {

@@ -2,7 +2,7 @@
 //! whole vertices.
 
 use crate::report::Diagnostic;
-use crate::validate::events::wiring::{routed_fields, set_elsewhere};
+use crate::validate::events::wiring::{any_set_elsewhere, routed_fields};
 use crate::validate::numbers::plural;
 use crate::validate::Ctx;
 
@@ -48,10 +48,7 @@ fn check(ctx: &mut Ctx) {
     let routed = routed_fields(doc);
     let mut found = Vec::new();
     for id in doc.nodes_of_type("FloatVertexAttribute") {
-        if ["value", "numComponents"]
-            .iter()
-            .any(|field| set_elsewhere(doc, &routed, id, field))
-        {
+        if any_set_elsewhere(doc, &routed, id, &["value", "numComponents"]) {
             continue;
         }
         let Some(components) = doc

@@ -1,7 +1,7 @@
 //! TEXT_LENGTH_EXTRA_VALUES: a Text with more length values than strings.
 
 use crate::report::Diagnostic;
-use crate::validate::events::wiring::{routed_fields, set_elsewhere};
+use crate::validate::events::wiring::{any_set_elsewhere, routed_fields};
 use crate::validate::numbers::plural;
 use crate::validate::Ctx;
 
@@ -49,10 +49,7 @@ fn check(ctx: &mut Ctx) {
     let routed = routed_fields(doc);
     let mut found = Vec::new();
     for id in doc.nodes_of_type("Text") {
-        if ["string", "length"]
-            .iter()
-            .any(|field| set_elsewhere(doc, &routed, id, field))
-        {
+        if any_set_elsewhere(doc, &routed, id, &["string", "length"]) {
             continue;
         }
         let (Some(strings), Some(lengths)) = (
