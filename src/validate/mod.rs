@@ -13,6 +13,8 @@ pub mod grouping;
 pub mod hanim;
 mod instances;
 pub mod interpolation;
+pub mod layering;
+pub mod layout;
 pub mod lighting;
 pub mod navigation;
 pub mod networking;

@@ -6,7 +6,7 @@ use std::sync::LazyLock;
 
 use super::{
     document, environmental_effects, events, geometry2d, geometry3d, geospatial, grouping, hanim,
-    interpolation, lighting, navigation, networking, nurbs, particles, picking, prototypes,
+    interpolation, layering, layout, lighting, navigation, networking, nurbs, particles, picking, prototypes,
     rendering, rigid_body, scripting, sensors, shaders, shape, sound, text, texture_projection,
     texturing, Check, Rule,
 };
@@ -40,6 +40,8 @@ pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {
         rigid_body::RULES,
         picking::RULES,
         texture_projection::RULES,
+        layering::RULES,
+        layout::RULES,
     ]
     .concat()
 });
