@@ -1,8 +1,9 @@
-//! NODE_DEPRECATED: TwoSidedMaterial in X3D 4.
+//! NODE_DEPRECATED: TwoSidedMaterial in X3D 4, GeoOrigin in X3D 3.3.
 
 use crate::diagnostic::{Applicability, Fix, Span};
 use crate::model::{Encoding, NodeId, Origin, Place, Value};
 use crate::report::Diagnostic;
+use crate::schema::Version;
 use crate::validate::{edits, Ctx};
 
 crate::declare_rule! {
@@ -10,11 +11,15 @@ crate::declare_rule! {
     /// Reports TwoSidedMaterial in an X3D 4.x scene, with the upgrade path of 12.4.9 for
     /// this node: with `separateBackColor` FALSE, a Material with the same front values
     /// does the same; with TRUE, put a Material in Appearance.material and another in
-    /// Appearance.backMaterial.
+    /// Appearance.backMaterial. Also reports GeoOrigin in an X3D 3.3 scene (and only
+    /// there: it is restored in 4.0).
     ///
     /// ## Why it matters
     /// TwoSidedMaterial is deprecated in X3D 4 and cannot be used with the physical or
-    /// unlit material models or with Appearance.backMaterial.
+    /// unlit material models or with Appearance.backMaterial. GeoOrigin is deprecated
+    /// and discouraged in 3.3: browsers of 3.3 may ignore it, so the geospatial nodes
+    /// that name it may be placed without the origin the author meant; 4.0 restores it
+    /// for devices with limited floating-point resolution.
     ///
     /// ## Example
     /// ```xml
@@ -38,17 +43,24 @@ crate::declare_rule! {
     /// backMaterial (BACK_MATERIAL_WITH_TWO_SIDED).
     ///
     /// ## Clause
-    /// 19775-1 (4.x) 12.4.9 TwoSidedMaterial.
+    /// 19775-1 (4.x) 12.4.9 TwoSidedMaterial. For GeoOrigin, 19775-1 (3.3) 25.4.5, as
+    /// the X3D 3.3 XML Schema and Unified Object Model annotate the node (the 19775-1
+    /// text itself was not read): "GeoOrigin is deprecated and discouraged (but
+    /// nevertheless allowed) in X3D version 3.3. GeoOrigin is restored in X3D version 4.0
+    /// for special use on devices with limited floating-point resolution."
     pub static NODE_DEPRECATED = {
         severity: Warning,
         level: Fast,
         clause: "12.4.9",
-        versions: "4.x",
+        versions: "3.3, 4.x",
         check: Some(check),
     }
 }
 
 fn check(ctx: &mut Ctx) {
+    if ctx.version == Version::V3_3 {
+        geo_origins(ctx);
+    }
     if !ctx.version.is_4x() {
         return;
     }
@@ -70,6 +82,20 @@ fn check(ctx: &mut Ctx) {
         if let Some(fix) = upgrade(ctx, id, separate) {
             diagnostic = diagnostic.fix(fix);
         }
+        ctx.report(diagnostic);
+    }
+}
+
+/// GeoOrigin in a 3.3 scene: deprecated there, restored in 4.0 (the schema annotation).
+fn geo_origins(ctx: &mut Ctx) {
+    for id in ctx.doc.nodes_of_type("GeoOrigin") {
+        let diagnostic = Diagnostic::new(
+            &NODE_DEPRECATED,
+            ctx.doc.node(id).name_span,
+            "GeoOrigin is deprecated and discouraged in X3D 3.3 (it is restored in 4.0)",
+        )
+        .node(id)
+        .help("leave the geoOrigin fields empty, or declare version='4.0' if the scene needs a GeoOrigin for floating-point precision");
         ctx.report(diagnostic);
     }
 }
