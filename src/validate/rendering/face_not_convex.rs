@@ -153,35 +153,8 @@ fn check(ctx: &mut Ctx) {
 
 /// Why a face is not convex and planar; None when it is, or cannot be judged.
 fn fault(g: &Checked, points: &Points, face: &Face) -> Option<Fault> {
-    if face.len() < 4 {
-        return None;
-    }
-    let normal = face_normal(g, points, face)?;
-    let mut corners: Vec<[f64; 3]> = Vec::with_capacity(face.len());
-    for position in face.corners() {
-        let p = corner_point(g, points, position)?;
-        if corners.last() != Some(&p) {
-            corners.push(p);
-        }
-    }
-    while corners.len() > 1 && corners.first() == corners.last() {
-        corners.pop();
-    }
-    if corners.len() < 4 {
-        return None;
-    }
-    let origin = corners[0];
-    let size = corners
-        .iter()
-        .map(|&p| length(sub(p, origin)))
-        .fold(0.0, f64::max);
-    if !size.is_finite() || size == 0.0 {
-        return None;
-    }
-    if corners
-        .iter()
-        .any(|&p| dot(sub(p, origin), normal).abs() > PLANAR_TOLERANCE * size)
-    {
+    let (corners, normal) = face_corners(g, points, face)?;
+    if is_warped(&corners, normal)? {
         return Some(Fault::NotPlanar);
     }
     // Each turn's signed angle about the normal; a convex face turns one way, once round.
@@ -198,4 +171,48 @@ fn fault(g: &Checked, points: &Points, face: &Face) -> Option<Fault> {
     }
     // One full turn is 2π; a star winds 4π or more.
     (winding > 3.0 * std::f64::consts::PI).then_some(Fault::Concave)
+}
+
+/// A face's distinct corners in order (a corner repeated next to itself, or the first
+/// repeated at the end, counts once) and its normal; None for a face of fewer than four
+/// distinct corners (a triangle is always planar and convex) or one that cannot be judged.
+pub(super) fn face_corners(
+    g: &Checked,
+    points: &Points,
+    face: &Face,
+) -> Option<(Vec<[f64; 3]>, [f64; 3])> {
+    if face.len() < 4 {
+        return None;
+    }
+    let normal = face_normal(g, points, face)?;
+    let mut corners: Vec<[f64; 3]> = Vec::with_capacity(face.len());
+    for position in face.corners() {
+        let p = corner_point(g, points, position)?;
+        if corners.last() != Some(&p) {
+            corners.push(p);
+        }
+    }
+    while corners.len() > 1 && corners.first() == corners.last() {
+        corners.pop();
+    }
+    (corners.len() >= 4).then_some((corners, normal))
+}
+
+/// Whether a corner lies off the face's plane (through its first corner, normal to
+/// `normal`) by more than [`PLANAR_TOLERANCE`] of the face's size, its longest distance
+/// from the first corner; None for a face of no finite size.
+pub(super) fn is_warped(corners: &[[f64; 3]], normal: [f64; 3]) -> Option<bool> {
+    let origin = *corners.first()?;
+    let size = corners
+        .iter()
+        .map(|&p| length(sub(p, origin)))
+        .fold(0.0, f64::max);
+    if !size.is_finite() || size == 0.0 {
+        return None;
+    }
+    Some(
+        corners
+            .iter()
+            .any(|&p| dot(sub(p, origin), normal).abs() > PLANAR_TOLERANCE * size),
+    )
 }

@@ -13,6 +13,7 @@ pub mod count_exceeds_coords;
 pub mod count_leaves_coords;
 pub mod degenerate_triangle;
 pub mod face_not_convex;
+pub mod face_not_planar;
 pub mod height_count_mismatch;
 pub mod index_count_mismatch;
 pub mod index_negative;
@@ -42,5 +43,6 @@ pub static RULES: &[&Check] = &[
     &degenerate_triangle::CHECK,
     &index_count_mismatch::CHECK,
     &face_not_convex::CHECK,
+    &face_not_planar::CHECK,
     &height_count_mismatch::CHECK,
 ];
