@@ -1,6 +1,8 @@
-//! Particle systems component (clause 40): a ParticleSystem's ramps against their keys.
+//! Particle systems component (clause 40): a ParticleSystem's ramps against their keys,
+//! and the order of its colour keys.
 
 pub mod particle_color_ramp_short;
+pub mod particle_key_decreasing;
 pub mod particle_texcoord_ramp_short;
 
 use std::collections::HashSet;
@@ -13,6 +15,7 @@ use crate::model::{Document, NodeId, Span};
 pub static RULES: &[&Check] = &[
     &particle_color_ramp_short::CHECK,
     &particle_texcoord_ramp_short::CHECK,
+    &particle_key_decreasing::CHECK,
 ];
 
 /// A ParticleSystem's ramp (colours or texture coordinates) and the keys it is read at.
