@@ -23,6 +23,9 @@ pub struct Diagnostic {
     pub related: Vec<(Span, String)>,
     /// How many findings this one stands for (repeats folded into one).
     pub count: usize,
+    /// The clause this finding cites when it is not the rule's: a rule whose statement
+    /// one clause makes of some node types and another clause of others.
+    pub clause: Option<&'static str>,
     /// The edits that resolve the finding, where the rule knows them (boxed: most
     /// findings have none, and diagnostics are many).
     pub fix: Option<Box<Fix>>,
@@ -42,6 +45,7 @@ impl Diagnostic {
             help: None,
             related: Vec::new(),
             count: 1,
+            clause: None,
             fix: None,
         }
     }
@@ -78,6 +82,12 @@ impl Diagnostic {
 
     pub fn fix(mut self, fix: Fix) -> Diagnostic {
         self.fix = Some(Box::new(fix));
+        self
+    }
+
+    /// Cite `clause` rather than the rule's.
+    pub fn clause(mut self, clause: &'static str) -> Diagnostic {
+        self.clause = Some(clause);
         self
     }
 

@@ -15,6 +15,7 @@ use super::{FileReport, Related, Resolved, ResolvedEdit, ResolvedFix, Stats, Sum
 use crate::diagnostic::Applicability;
 use crate::model::{Encoding, Span};
 use crate::shard::Shard;
+use crate::validate::interpolation::key_decreasing::SEQUENCER_CLAUSE;
 use crate::validate::{find_rule, Severity};
 
 const TOOL: &str = "x3dcheck";
@@ -321,9 +322,10 @@ fn file_report(file: File) -> Result<FileReport, ReadError> {
                 end_column: d.end_column,
                 path: d.path,
                 // A finding on a node cites that node type's subclause; a VRML97 syntax
-                // finding, 14772-1's grammar.
+                // finding, 14772-1's grammar; a sequencer's decreasing key, 30.3.1.
                 clause: crate::schema::clauses::known_subclause(&d.clause)
                     .or((d.clause == VRML97_GRAMMAR).then_some(VRML97_GRAMMAR))
+                    .or((d.clause == SEQUENCER_CLAUSE).then_some(SEQUENCER_CLAUSE))
                     .unwrap_or(rule.clause),
                 index: d.index,
                 indices: d.indices,

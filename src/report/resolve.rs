@@ -183,10 +183,13 @@ pub fn resolve(
 /// What a VRML97 file's syntax finding cites: the grammar of ISO/IEC 14772-1, Annex A.
 pub(crate) const VRML97_GRAMMAR: &str = "14772-1 A";
 
-/// The clause a diagnostic cites: its rule's, or, when the rule cites a node type's
-/// subclause, the subclause of the node type it concerns (a SpotLight's direction cites
-/// SpotLight's, a QuadSet's count CADGeometry's).
+/// The clause a diagnostic cites: the one it names itself, else its rule's, or, when the
+/// rule cites a node type's subclause, the subclause of the node type it concerns (a
+/// SpotLight's direction cites SpotLight's, a QuadSet's count CADGeometry's).
 fn clause_of(d: &Diagnostic, doc: Option<&Document>) -> &'static str {
+    if let Some(clause) = d.clause {
+        return clause;
+    }
     // A VRML97 file breaks 14772-1's grammar, not the ClassicVRML one of 19776-2.
     if std::ptr::eq(d.rule, &VRML_MALFORMED)
         && doc.is_some_and(|doc| doc.encoding == Encoding::Vrml97)

@@ -37,7 +37,7 @@ crate::declare_rule! {
     /// GeoPositionInterpolator (25), an X3DInterpolatorNode. 30.3.1 X3DSequencerNode
     /// says the same of the sequencers' keys in the same words ("The keys shall be
     /// monotonically non-decreasing, otherwise the results are undefined"), so this code
-    /// covers them too.
+    /// covers them too; a sequencer's finding cites 30.3.1, an interpolator's 19.2.2.
     /// > "The keys shall be monotonically non-decreasing" (19775-1 19.2.2)
     pub static KEY_DECREASING = {
         severity: Error,
@@ -47,6 +47,10 @@ crate::declare_rule! {
         check: Some(check),
     }
 }
+
+/// The clause a sequencer's finding cites: 30.3.1 X3DSequencerNode, which says of the
+/// sequencers' keys what 19.2.2 says of the interpolators'.
+pub const SEQUENCER_CLAUSE: &str = "30.3.1";
 
 fn check(ctx: &mut Ctx) {
     let doc = ctx.doc;
@@ -69,10 +73,15 @@ fn check(ctx: &mut Ctx) {
             continue;
         };
         if let Some(at) = first_decrease(keys) {
-            found.push((id, entry, at, node.type_name()));
+            let clause = if node.is_a("X3DSequencerNode") {
+                SEQUENCER_CLAUSE
+            } else {
+                KEY_DECREASING.clause
+            };
+            found.push((id, entry, at, node.type_name(), clause));
         }
     }
-    for (id, entry, at, type_name) in found {
+    for (id, entry, at, type_name, clause) in found {
         let (span, text) = ctx.scalar_text(entry, at);
         let (_, before) = ctx.scalar_text(entry, at - 1);
         ctx.report(
@@ -85,6 +94,7 @@ fn check(ctx: &mut Ctx) {
                 ),
             )
             .node(id)
+            .clause(clause)
             .help("sort the keys (with their keyValues) so that each key is at least the one before it"),
         );
     }
