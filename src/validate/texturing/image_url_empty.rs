@@ -1,5 +1,6 @@
 //! IMAGE_URL_EMPTY: an ImageTexture or MovieTexture without a url.
 
+use crate::model::{Document, NodeId, NodeKind};
 use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
@@ -7,7 +8,8 @@ crate::declare_rule! {
     /// ## What it does
     /// Reports an ImageTexture or MovieTexture whose `url` is empty (`url []`, or not
     /// given). Not reported when the url arrives at run time: a ROUTE to the node's `url`,
-    /// or an `IS` connection inside a ProtoBody.
+    /// or an `IS` connection inside a ProtoBody. A prototype instance that passes an
+    /// empty url in through `IS` is reported, naming the prototype field that does.
     ///
     /// ## Why it matters
     /// 18.4.1: "When the url field contains no values ([]), texturing is disabled." The
@@ -41,23 +43,37 @@ fn check(ctx: &mut Ctx) {
         }
         if doc.value_of(id, "url").is_some_and(|v| v.is_empty()) {
             let span = node.entry("url").map_or(node.name_span, |e| e.span);
-            found.push((id, span, node.type_name().to_string()));
+            found.push((id, span, node.type_name().to_string(), passed_in(doc, id)));
         }
     }
-    for (id, span, type_name) in found {
-        ctx.report(
-            Diagnostic::new(
-                &IMAGE_URL_EMPTY,
-                span,
-                format!("{type_name} has no url: texturing is disabled"),
-            )
-            .node(id),
-        );
+    for (id, span, type_name, passed_in) in found {
+        let message = match passed_in {
+            Some((proto, field)) => format!(
+                "{type_name} has no url: texturing is disabled (its url is field `{field}` of prototype `{proto}`, empty in this instance)"
+            ),
+            None => format!("{type_name} has no url: texturing is disabled"),
+        };
+        ctx.report(Diagnostic::new(&IMAGE_URL_EMPTY, span, message).node(id));
     }
 }
 
+/// For a prototype body's node copied for an instance whose url comes through `IS`: the
+/// prototype's name and the field of its interface that passes the url in.
+fn passed_in(doc: &Document, id: NodeId) -> Option<(String, String)> {
+    let copied = doc.node(id).copy_of.filter(|c| c.library.is_none())?;
+    let connect = doc
+        .node(copied.original)
+        .connects
+        .iter()
+        .find(|c| c.node_field.text == "url")?;
+    let NodeKind::ProtoInstance { name, .. } = &doc.node(copied.instance).kind else {
+        return None;
+    };
+    Some((name.clone(), connect.proto_field.text.clone()))
+}
+
 /// Whether a ROUTE sends a url to the node (by its DEF name).
-fn routed_to_url(ctx: &Ctx, id: crate::model::NodeId) -> bool {
+fn routed_to_url(ctx: &Ctx, id: NodeId) -> bool {
     let Some(name) = &ctx.doc.node(id).def_name else {
         return false;
     };
