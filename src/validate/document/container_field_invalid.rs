@@ -68,15 +68,23 @@ fn check(ctx: &mut Ctx) {
                 .iter()
                 .filter(|f| f.ty.scalar() == Scalar::Node)
                 .map(|f| f.name);
-            let mut diagnostic = Diagnostic::new(
-                &CONTAINER_FIELD_INVALID,
-                entry.name_span,
-                format!(
+            // Without a containerField attribute the place is the child's element name:
+            // the value is then the child type's default, which the author never wrote.
+            let written = ctx.source.get(entry.name_span.range()) == Some(entry.name().as_bytes());
+            let message = match children.first() {
+                Some(child) if !written => format!(
+                    "the default containerField of {}, `{}`, names no node field of {}",
+                    ctx.doc.node(child.node).type_name(),
+                    entry.name(),
+                    def.name
+                ),
+                _ => format!(
                     "containerField `{}` names no node field of {}",
                     entry.name(),
                     def.name
                 ),
-            )
+            };
+            let mut diagnostic = Diagnostic::new(&CONTAINER_FIELD_INVALID, entry.name_span, message)
             .node(id)
             .value(entry.name().to_string())
             .help_opt(suggest::help(entry.name(), node_fields.clone()));
