@@ -90,7 +90,7 @@ fn check(ctx: &mut Ctx) {
     let mut later = Vec::new();
     for m in &met {
         match firsts.get(&(m.layer, m.stack)) {
-            Some(&first) => later.push((m.node, first)),
+            Some(&first) => later.push((m.node, (first, m.layer.is_some()))),
             None if !m.selective => {
                 firsts.insert((m.layer, m.stack), m.node);
             }
@@ -106,16 +106,22 @@ fn check(ctx: &mut Ctx) {
     }
     let wiring = Wiring::new(ctx);
     let found = wiring.keep_unset(doc, later, "bind");
-    for (id, first) in found {
+    for (id, (first, in_layer)) in found {
         let node = doc.node(id);
         let type_name = node.type_name();
         let first_node = doc.node(first);
+        // Name the one bound: the first of its stack, which need not be the nearest before.
+        let named = first_node
+            .def_name
+            .as_ref()
+            .map_or(String::new(), |name| format!(" `{}`", name.text));
+        let scope = if in_layer { "its layer" } else { "the scene" };
         ctx.report(
             Diagnostic::new(
                 &BINDABLE_NEVER_BOUND,
                 node.name_span,
                 format!(
-                    "{type_name} is never bound: the {} before it is bound when the scene loads, and nothing sends this one `set_bind`",
+                    "{type_name} is never bound: the first {}{named} of {scope} is bound when the scene loads, and nothing sends this one `set_bind`",
                     first_node.type_name()
                 ),
             )
