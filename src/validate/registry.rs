@@ -6,9 +6,9 @@ use std::sync::LazyLock;
 
 use super::{
     document, environmental_effects, events, geometry2d, geometry3d, geospatial, grouping, hanim,
-    interpolation, layering, layout, lighting, navigation, networking, nurbs, particles, picking, prototypes,
-    rendering, rigid_body, scripting, sensors, shaders, shape, sound, text, texture_projection,
-    texturing, Check, Rule,
+    interpolation, layering, layout, lighting, navigation, networking, nurbs, particles, picking,
+    prototypes, rendering, rigid_body, scripting, sensors, shaders, shape, sound, text,
+    texture_projection, texturing, Check, Rule,
 };
 
 /// Every rule with its check function (None for those reported while reading).

@@ -84,10 +84,11 @@ fn check(ctx: &mut Ctx) {
                     def.name
                 ),
             };
-            let mut diagnostic = Diagnostic::new(&CONTAINER_FIELD_INVALID, entry.name_span, message)
-            .node(id)
-            .value(entry.name().to_string())
-            .help_opt(suggest::help(entry.name(), node_fields.clone()));
+            let mut diagnostic =
+                Diagnostic::new(&CONTAINER_FIELD_INVALID, entry.name_span, message)
+                    .node(id)
+                    .value(entry.name().to_string())
+                    .help_opt(suggest::help(entry.name(), node_fields.clone()));
             if diagnostic.help.is_none() {
                 let all: Vec<&str> = node_fields.collect();
                 if !all.is_empty() {
