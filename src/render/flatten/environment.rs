@@ -73,9 +73,14 @@ impl Walker<'_> {
                 self.cube_side(),
                 &mut notes,
             );
-            for not_drawn in notes {
-                let message = format!("{name}: {}", not_drawn.message);
-                self.push_note(context, id, message, not_drawn.limit);
+            if !notes.is_empty() {
+                // One note for the faces left transparent, as a browser shows them.
+                let reasons: Vec<&str> = notes.iter().map(|n| n.message.as_str()).collect();
+                let message = format!(
+                    "{name}: panorama faces drawn transparent: {}",
+                    reasons.join("; ")
+                );
+                self.push_note(context, id, message, notes.iter().any(|n| n.limit));
             }
             background.panorama = panorama.and_then(|cube| self.add_cube(context, id, cube));
             self.environment.background = Some(background);

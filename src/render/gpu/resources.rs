@@ -427,7 +427,7 @@ fn distance(a: [f32; 3], b: [f32; 3]) -> f32 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::render::draw_list::{Stage, TextureRef};
+    use crate::render::draw_list::{CubeLookup, Stage, TextureRef};
 
     #[test]
     fn lines_and_points_become_instances_of_their_two_ends() {
@@ -487,18 +487,30 @@ mod tests {
         };
         assert_eq!(
             slots(&textures),
-            [
-                Some(7),
-                Some(8),
-                None,
-                None,
-                Some(1),
-                None,
-                None,
-                Some(2),
-                None,
-                Some(3)
-            ]
+            (
+                [
+                    Some(7),
+                    Some(8),
+                    None,
+                    None,
+                    Some(1),
+                    None,
+                    None,
+                    Some(2),
+                    None,
+                    Some(3)
+                ],
+                None
+            )
         );
+        // A cube map first stage binds as the cube, its 2D slot left white.
+        let cube = Textures {
+            main: vec![Stage {
+                cube: Some(CubeLookup::WorldReflection),
+                ..Stage::modulate(at(5))
+            }],
+            ..Textures::default()
+        };
+        assert_eq!(slots(&cube), ([None; TEXTURE_SLOTS], Some(5)));
     }
 }
