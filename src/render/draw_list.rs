@@ -11,12 +11,13 @@
 //!   zero; tangents have a unit (or zero) xyz and a handedness w of ±1.
 //! - **Only what is used, complete.** Within a mesh, every attribute present has one entry
 //!   per vertex and every index is in range. Normals are present exactly when the shape is
-//!   lit or a texture coordinate generator needs them; tangents exactly when a lit material
+//!   lit, a texture coordinate generator or a cube map needs them; tangents exactly when a lit material
 //!   has a normal texture; texture coordinate sets exactly those some texture samples (at
 //!   most [`MAX_TEX_COORD_SETS`]), already generated and transformed.
 //! - **Resolved materials.** Colours are in [0, 1] (as the lighting equations of clause
 //!   17 expect), alpha is 1 − transparency, and every texture reference is an index into
-//!   [`DrawList::textures`] with a texture coordinate set of its mesh.
+//!   [`DrawList::textures`] with a texture coordinate set of its mesh (a cube map
+//!   stage's, into [`DrawList::cube_textures`]: it samples by direction).
 //! - **Lights.** At most [`MAX_LIGHTS`] per layer; each mesh says by a bit mask which
 //!   lights of its layer reach it (global lights reach all; a scoped light reaches its
 //!   group's descendants).
@@ -42,6 +43,9 @@ pub struct DrawList {
     pub layers: Vec<Layer>,
     /// The textures of every layer's meshes.
     pub textures: Vec<Texture>,
+    /// The cube textures of every layer: Background panoramas and the cube map textures
+    /// of meshes (clause 34).
+    pub cube_textures: Vec<crate::render::cube_map::CubeImage>,
 }
 
 impl DrawList {
@@ -146,6 +150,9 @@ pub struct Background {
     pub orientation: glam::Quat,
     /// X3D 4 transparency in [0, 1]: how much of the layers below shows through.
     pub transparency: f32,
+    /// The panorama (24.4.1): an index into [`DrawList::cube_textures`], drawn over the
+    /// sky and ground where its alpha lets it (a missing face is transparent).
+    pub panorama: Option<usize>,
 }
 
 #[derive(Copy, Clone, Debug)]
@@ -331,7 +338,11 @@ pub struct Textures {
 /// One texture stage of the main texture (18.4.3 Tables 18.3–18.5).
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub struct Stage {
+    /// For a cube map stage, `texture.texture` indexes [`DrawList::cube_textures`].
     pub texture: TextureRef,
+    /// A cube map texture (clause 34) and the direction it is looked up with; only the
+    /// first stage may have one.
+    pub cube: Option<CubeLookup>,
     /// The operation on the colour channels, and on alpha.
     pub mode: StageMode,
     pub alpha_mode: StageMode,
@@ -339,11 +350,27 @@ pub struct Stage {
     pub function: StageFunction,
 }
 
+/// The direction a cube map texture is sampled in, per fragment from its normal and its
+/// position (34.2: "the three-dimensional texture coordinates (s,t,r) are treated as a
+/// direction vector").
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+#[repr(u32)]
+pub enum CubeLookup {
+    /// The view vector reflected about the normal, in world axes: the environment stays
+    /// put as the viewer turns (without a TextureCoordinateGenerator).
+    WorldReflection = 1,
+    /// TextureCoordinateGenerator CAMERASPACEREFLECTIONVECTOR (Table 18.6).
+    CameraReflection,
+    /// TextureCoordinateGenerator CAMERASPACENORMAL.
+    CameraNormal,
+}
+
 impl Stage {
     /// A single texture multiplying the colour (mixTexture of 17.2.2.3).
     pub fn modulate(texture: TextureRef) -> Stage {
         Stage {
             texture,
+            cube: None,
             mode: StageMode::Modulate,
             alpha_mode: StageMode::Modulate,
             source: StageSource::Previous,

@@ -10,6 +10,8 @@
 
 mod cli_args;
 #[cfg(feature = "render")]
+pub mod cube_map;
+#[cfg(feature = "render")]
 pub mod draw_list;
 #[cfg(feature = "render")]
 mod fields;

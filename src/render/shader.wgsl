@@ -18,6 +18,9 @@ struct Globals {
     view_projection: mat4x4<f32>,
     // Clip space to background directions (the Background's axes, eye at the origin).
     background_from_clip: mat4x4<f32>,
+    // World axes to camera axes (the rotation of the view).
+    camera_from_world: mat4x4<f32>,
+    environment: vec4<u32>,        // the panorama's texels are linear (HDR): 1
     viewport: vec4<f32>,           // the layer's width and height in target pixels, supersampling scale, background transparency
     forward_near: vec4<f32>,       // unit view direction, near plane distance
     fog_color_range: vec4<f32>,    // rgb, visibilityRange
@@ -61,6 +64,9 @@ const ROLE_AMBIENT: u32 = 32u;
 // Read-only storage buffers on most devices: `Parameters` in `gpu/pipelines.rs` says why.
 @group(0) @binding(0) var<uniform> globals: Globals;
 @group(1) @binding(0) var<uniform> draw: Draw;
+// The Background's panorama (transparent where it has none).
+@group(0) @binding(1) var t_panorama: texture_cube<f32>;
+@group(0) @binding(2) var s_panorama: sampler;
 @group(2) @binding(0) var t_stage0: texture_2d<f32>;
 @group(2) @binding(1) var t_stage1: texture_2d<f32>;
 @group(2) @binding(2) var t_stage2: texture_2d<f32>;
@@ -81,6 +87,9 @@ const ROLE_AMBIENT: u32 = 32u;
 @group(2) @binding(17) var s_specular_mr: sampler;
 @group(2) @binding(18) var s_shininess: sampler;
 @group(2) @binding(19) var s_ambient: sampler;
+// A cube map texture of the first stage (clause 34), when draw.sets_more.w says so.
+@group(2) @binding(20) var t_cube: texture_cube<f32>;
+@group(2) @binding(21) var s_cube: sampler;
 
 struct VertexIn {
     @location(0) position: vec3<f32>,
@@ -316,8 +325,12 @@ fn sample_stages(in: VertexOut) -> StageSamples {
     out.s[1] = vec4<f32>(1.0);
     out.s[2] = vec4<f32>(1.0);
     out.s[3] = vec4<f32>(1.0);
-    if count > 0u {
+    let cube = draw.sets_more.w & 3u;
+    if count > 0u && cube == 0u {
         out.s[0] = textureSample(t_stage0, s_stage0, uv_of(draw.sets_main.x, in));
+    }
+    if count > 0u && cube != 0u {
+        out.s[0] = sample_cube(cube, in);
     }
     if count > 1u {
         out.s[1] = textureSample(t_stage1, s_stage1, uv_of(draw.sets_main.y, in));
@@ -329,6 +342,27 @@ fn sample_stages(in: VertexOut) -> StageSamples {
         out.s[3] = textureSample(t_stage3, s_stage3, uv_of(draw.sets_main.w, in));
     }
     return out;
+}
+
+// A cube map texture (34.2: the texture coordinates are a direction): by draw.sets_more.w,
+// 1 the view vector reflected about the normal in world axes, 2 the same in camera axes
+// (CAMERASPACEREFLECTIONVECTOR), 3 the camera-space normal (CAMERASPACENORMAL); bit 2:
+// the texels are linear (HDR), encoded to sRGB as the other textures' stored values are.
+fn sample_cube(lookup: u32, in: VertexOut) -> vec4<f32> {
+    let n = unit_or_zero(in.normal);
+    let view = select(vec3<f32>(0.0, 0.0, -1.0), normalize(in.position), length(in.position) > 0.0);
+    var direction = reflect(view, n);
+    if lookup == 3u {
+        direction = n;
+    }
+    if lookup >= 2u {
+        direction = (globals.camera_from_world * vec4<f32>(direction, 0.0)).xyz;
+    }
+    let texel = textureSample(t_cube, s_cube, direction);
+    if (draw.sets_more.w & 4u) != 0u {
+        return vec4<f32>(linear_to_srgb(clamp(texel.rgb, vec3<f32>(0.0), vec3<f32>(1.0))), texel.a);
+    }
+    return texel;
 }
 
 // One MultiTexture stage (18.4.3): Arg1 the texture, Arg2 from the source.
@@ -551,7 +585,8 @@ fn fs_gouraud(in: VertexOut, @builtin(front_facing) front_facing: bool) -> @loca
 
 // The Background: a triangle covering the screen, coloured by the direction of each
 // pixel (24.4.1: sky colours by the angle from the zenith, ground colours by the angle
-// from the nadir, interpolated, the ground over the sky up to its last angle).
+// from the nadir, interpolated, the ground over the sky up to its last angle; then the
+// panorama cube over them).
 struct BackgroundOut {
     @builtin(position) clip: vec4<f32>,
     @location(0) ndc: vec2<f32>,
@@ -598,5 +633,12 @@ fn fs_background(in: BackgroundOut) -> @location(0) vec4<f32> {
             rgb = gradient_color(from_nadir, false);
         }
     }
+    // The panorama in front of the sky and ground, which show where it is transparent
+    // (24.4.1); a missing panorama is a transparent cube.
+    var panorama = textureSample(t_panorama, s_panorama, direction);
+    if globals.environment.x == 1u {
+        panorama = vec4<f32>(linear_to_srgb(clamp(panorama.rgb, vec3<f32>(0.0), vec3<f32>(1.0))), panorama.a);
+    }
+    rgb = mix(rgb, panorama.rgb, panorama.a);
     return vec4<f32>(rgb, 1.0 - globals.viewport.w);
 }

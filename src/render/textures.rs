@@ -47,12 +47,7 @@ impl From<&str> for NotDrawn {
 
 /// Loads a single-image texture node, or says why it cannot be drawn.
 pub fn load(doc: &Document, node: NodeId, base: &Path, root: &Path) -> Result<Loaded, NotDrawn> {
-    let type_name = doc.node(node).type_name();
-    let (rgba, width, height, channels) = match type_name {
-        "ImageTexture" => image_texture(doc, node, base, root)?,
-        "PixelTexture" => pixel_texture(doc, node)?,
-        other => return Err(format!("{other} is not drawn").into()),
-    };
+    let (rgba, width, height, channels) = pixels(doc, node, base, root)?;
     let translucent = rgba.chunks_exact(4).any(|p| p[3] < 255);
     let sampling = Sampling::of(doc, node);
     let levels = if sampling.mipmaps.is_some() {
@@ -75,6 +70,26 @@ pub fn load(doc: &Document, node: NodeId, base: &Path, root: &Path) -> Result<Lo
         channels,
         translucent,
     })
+}
+
+/// The RGBA8 image of a single-image texture node (ImageTexture, PixelTexture), with
+/// its width, height and channel count.
+pub fn pixels(doc: &Document, node: NodeId, base: &Path, root: &Path) -> Result<Pixels, NotDrawn> {
+    match doc.node(node).type_name() {
+        "ImageTexture" => {
+            let image = first_image(&urls(doc, node, "url"), base, root, "ImageTexture")?;
+            Ok(rgba8(image))
+        }
+        "PixelTexture" => Ok(pixel_texture(doc, node)?),
+        other => Err(format!("{other} is not drawn").into()),
+    }
+}
+
+/// The strings of an MFString url field.
+pub fn urls(doc: &Document, node: NodeId, field: &str) -> Vec<String> {
+    doc.value_of(node, field)
+        .and_then(|v| v.as_strings().map(<[String]>::to_vec))
+        .unwrap_or_default()
 }
 
 /// How a texture is sampled.
@@ -180,21 +195,25 @@ fn mipmaps(rgba: Vec<u8>, width: u32, height: u32) -> Vec<Vec<u8>> {
     levels
 }
 
-type Pixels = (Vec<u8>, u32, u32, u8);
+pub type Pixels = (Vec<u8>, u32, u32, u8);
 
-fn image_texture(
-    doc: &Document,
-    node: NodeId,
+fn rgba8(image: image::DynamicImage) -> Pixels {
+    let (width, height) = (image.width(), image.height());
+    let channels = image.color().channel_count();
+    (image.to_rgba8().into_raw(), width, height, channels)
+}
+
+/// The first of `urls` that decodes (files under `root`, or data: URLs), or why none
+/// does, naming the node type `what`.
+pub fn first_image(
+    urls: &[String],
     base: &Path,
     root: &Path,
-) -> Result<Pixels, NotDrawn> {
-    let urls = doc
-        .value_of(node, "url")
-        .and_then(|v| v.as_strings().map(<[String]>::to_vec))
-        .unwrap_or_default();
+    what: &str,
+) -> Result<image::DynamicImage, NotDrawn> {
     let mut reasons = Vec::new();
     let mut limit = false;
-    for url in &urls {
+    for url in urls {
         let decoded = match data_url::decode(url) {
             Some(Ok(data)) => decode_bytes(&data.bytes),
             Some(Err(e)) => Err(e.into()),
@@ -203,7 +222,7 @@ fn image_texture(
                 .and_then(|path| decode_file(&path)),
         };
         match decoded {
-            Ok(pixels) => return Ok(pixels),
+            Ok(image) => return Ok(image),
             Err(e) => {
                 limit |= e.limit;
                 reasons.push(format!("{}: {}", data_url::shown(url), e.message));
@@ -211,10 +230,10 @@ fn image_texture(
         }
     }
     if reasons.is_empty() {
-        return Err("ImageTexture has no url".into());
+        return Err(format!("{what} has no url").into());
     }
     Err(NotDrawn {
-        message: format!("ImageTexture not drawn ({})", reasons.join("; ")),
+        message: format!("{what} not drawn ({})", reasons.join("; ")),
         limit,
     })
 }
@@ -245,12 +264,12 @@ pub fn local_file(url: &str, base: &Path, root: &Path) -> Result<PathBuf, String
     Ok(canonical)
 }
 
-fn decode_file(path: &Path) -> Result<Pixels, NotDrawn> {
+fn decode_file(path: &Path) -> Result<image::DynamicImage, NotDrawn> {
     decode(|| image::ImageReader::open(path))
 }
 
 /// An image carried in a data: URL.
-fn decode_bytes(bytes: &[u8]) -> Result<Pixels, NotDrawn> {
+fn decode_bytes(bytes: &[u8]) -> Result<image::DynamicImage, NotDrawn> {
     decode(|| Ok(image::ImageReader::new(std::io::Cursor::new(bytes))))
 }
 
@@ -258,7 +277,7 @@ fn decode_bytes(bytes: &[u8]) -> Result<Pixels, NotDrawn> {
 /// before any pixel is decoded, once to decode).
 fn decode<R: BufRead + Seek>(
     open: impl Fn() -> std::io::Result<image::ImageReader<R>>,
-) -> Result<Pixels, NotDrawn> {
+) -> Result<image::DynamicImage, NotDrawn> {
     let reader = open()
         .map_err(|e| e.to_string())?
         .with_guessed_format()
@@ -281,10 +300,7 @@ fn decode<R: BufRead + Seek>(
         .map_err(|e| e.to_string())?;
     // The header's size was checked above; these also bound what decoding may allocate.
     reader.limits(crate::validate::texturing::files::image_limits());
-    let image = reader.decode().map_err(|e| e.to_string())?;
-    let channels = image.color().channel_count();
-    let rgba = image.to_rgba8();
-    Ok((rgba.into_raw(), width, height, channels))
+    Ok(reader.decode().map_err(|e| e.to_string())?)
 }
 
 fn pixel_texture(doc: &Document, node: NodeId) -> Result<Pixels, String> {

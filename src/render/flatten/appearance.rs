@@ -23,6 +23,8 @@ pub struct LoadedTexture {
     /// 1 intensity, 2 intensity + alpha, 3 RGB, 4 RGBA.
     pub channels: u8,
     pub translucent: bool,
+    /// A cube map texture (clause 34): `index` is into the cube textures.
+    pub cube: bool,
 }
 
 /// Which texture coordinates and transformation a texture takes.
@@ -392,6 +394,11 @@ impl Walker<'_> {
         if let Some(entry) = self.texture_cache.get(&key) {
             return *entry;
         }
+        if context.doc.node(texture).is_a("X3DEnvironmentTextureNode") {
+            let loaded = self.cube_map_texture(context, texture);
+            self.texture_cache.insert(key, loaded);
+            return loaded;
+        }
         let loaded = match self.load_texture(context, texture) {
             Ok(loaded) => {
                 let bytes: usize = loaded.texture.levels.iter().map(Vec::len).sum();
@@ -410,6 +417,7 @@ impl Walker<'_> {
                         index: self.textures.len() - 1,
                         channels: loaded.channels,
                         translucent: loaded.translucent,
+                        cube: false,
                     })
                 }
             }
@@ -420,6 +428,78 @@ impl Walker<'_> {
         };
         self.texture_cache.insert(key, loaded);
         loaded
+    }
+
+    /// A cube map texture node in the cube textures, or None, noted. A
+    /// GeneratedCubeMapTexture (the scene seen from the shape) is not rendered into: it
+    /// is drawn as the bound Background's panorama, the scene at infinity, when there is
+    /// one.
+    fn cube_map_texture(&mut self, context: Context, texture: NodeId) -> Option<LoadedTexture> {
+        let doc = context.doc;
+        let name = doc.node(texture).type_name();
+        let index = if name == "GeneratedCubeMapTexture" {
+            let panorama = self
+                .environment
+                .background
+                .as_ref()
+                .and_then(|b| b.panorama);
+            let message = match panorama {
+                Some(_) => "GeneratedCubeMapTexture is drawn as the Background's panorama: the shapes around it are not rendered into it",
+                None => "GeneratedCubeMapTexture is not drawn: the shapes around it are not rendered into it, and no Background panorama stands in",
+            };
+            self.note(context, texture, message.into());
+            panorama?
+        } else {
+            let loaded = super::super::cube_map::load(
+                doc,
+                texture,
+                context.base,
+                &self.options.root,
+                self.cube_side(),
+            );
+            match loaded {
+                Ok(cube) => self.add_cube(context, texture, cube)?,
+                Err(not_drawn) => {
+                    self.push_note(context, texture, not_drawn.message, not_drawn.limit);
+                    return None;
+                }
+            }
+        };
+        let translucent = self.cube_textures[index].translucent;
+        Some(LoadedTexture {
+            index,
+            channels: if translucent { 4 } else { 3 },
+            translucent,
+            cube: true,
+        })
+    }
+
+    /// The largest cube face side loaded: the image's larger side (rounded up to a power
+    /// of two), which a face seen at a right angle of view fills; more texels would not
+    /// show.
+    pub(super) fn cube_side(&self) -> u32 {
+        let (width, height) = self.options.image;
+        width.max(height).max(1).next_power_of_two()
+    }
+
+    /// Adds a cube texture within the texture budget; None, noted, past it.
+    pub(super) fn add_cube(
+        &mut self,
+        context: Context,
+        node: NodeId,
+        cube: super::super::cube_map::CubeImage,
+    ) -> Option<usize> {
+        let bytes = cube.bytes();
+        if self.spent.texture_bytes + bytes > MAX_TEXTURE_BYTES {
+            let mib = MAX_TEXTURE_BYTES >> 20;
+            let message =
+                format!("cube texture not drawn: the textures would take more than {mib} MiB");
+            self.note(context, node, message);
+            return None;
+        }
+        self.spent.texture_bytes += bytes;
+        self.cube_textures.push(cube);
+        Some(self.cube_textures.len() - 1)
     }
 
     /// The image of `texture`. A texture of an external prototype's body (another file) is

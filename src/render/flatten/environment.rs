@@ -1,5 +1,5 @@
 //! The bindable environment nodes a still image uses: the first Background (sky and
-//! ground gradients), Fog and NavigationInfo (headlight, near and far planes) of the
+//! ground gradients, the panorama's six images), Fog and NavigationInfo (headlight, near and far planes) of the
 //! checked document in each layer, as a browser binds the first of each (24.2, 23.2;
 //! each layer has its own binding stacks, 35.2.3).
 
@@ -7,6 +7,7 @@ use glam::{DMat4, DQuat};
 
 use super::{Context, Walker};
 use crate::model::NodeId;
+use crate::render::cube_map;
 use crate::render::draw_list::{Background, Fog, MAX_GRADIENT};
 use crate::render::fields::{boolean, color, float, floats, unit};
 
@@ -45,7 +46,7 @@ impl Walker<'_> {
                 return;
             }
             let (_, rotation, _) = world.to_scale_rotation_translation();
-            let background = Background {
+            let mut background = Background {
                 sky: self.gradient(context, id, "skyColor", "skyAngle", std::f32::consts::PI),
                 ground: self.gradient(
                     context,
@@ -61,34 +62,27 @@ impl Walker<'_> {
                 },
                 // X3D 4: how much of the layers below shows through (24.4.1).
                 transparency: unit(float(doc, id, "transparency", 0.0)),
+                panorama: None,
             };
-            let textured = [
-                "backUrl",
-                "bottomUrl",
-                "frontUrl",
-                "leftUrl",
-                "rightUrl",
-                "topUrl",
-            ]
-            .iter()
-            .any(|f| has_urls(doc, id, f))
-                || [
-                    "backTexture",
-                    "bottomTexture",
-                    "frontTexture",
-                    "leftTexture",
-                    "rightTexture",
-                    "topTexture",
-                ]
-                .iter()
-                .any(|f| !node.children(f).is_empty());
-            if textured {
-                self.note(
-                    context,
-                    id,
-                    format!("{name}: the panorama textures are not drawn, only the colours"),
+            let mut notes = Vec::new();
+            let panorama = cube_map::background(
+                doc,
+                id,
+                context.base,
+                &self.options.root,
+                self.cube_side(),
+                &mut notes,
+            );
+            if !notes.is_empty() {
+                // One note for the faces left transparent, as a browser shows them.
+                let reasons: Vec<&str> = notes.iter().map(|n| n.message.as_str()).collect();
+                let message = format!(
+                    "{name}: panorama faces drawn transparent: {}",
+                    reasons.join("; ")
                 );
+                self.push_note(context, id, message, notes.iter().any(|n| n.limit));
             }
+            background.panorama = panorama.and_then(|cube| self.add_cube(context, id, cube));
             self.environment.background = Some(background);
         } else if name == "Fog" {
             if self.environment.fog.is_some() {
@@ -156,10 +150,4 @@ impl Walker<'_> {
         }
         out
     }
-}
-
-/// Whether a url field holds any string.
-fn has_urls(doc: &crate::model::Document, id: NodeId, field: &str) -> bool {
-    doc.value_of(id, field)
-        .is_some_and(|v| v.as_strings().is_some_and(|s| !s.is_empty()))
 }

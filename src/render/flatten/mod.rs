@@ -137,6 +137,7 @@ struct Walker<'o> {
     lights: Vec<lights::PendingLight>,
     global_lights: u32,
     textures: Vec<super::draw_list::Texture>,
+    cube_textures: Vec<super::cube_map::CubeImage>,
     /// (document serial, node) → loaded texture.
     texture_cache: HashMap<(usize, NodeId), Option<appearance::LoadedTexture>>,
     /// The chosen viewpoint, found before the walk (Billboards turn towards it).
@@ -186,6 +187,7 @@ pub fn flatten(doc: &Document, options: &Options) -> Result<Flattened, String> {
         lights: Vec::new(),
         global_lights: 0,
         textures: Vec::new(),
+        cube_textures: Vec::new(),
         texture_cache: HashMap::new(),
         viewpoint: None,
         environment: environment::Environment::default(),
@@ -206,6 +208,7 @@ pub fn flatten(doc: &Document, options: &Options) -> Result<Flattened, String> {
         list: DrawList {
             layers: walker.layers,
             textures: walker.textures,
+            cube_textures: walker.cube_textures,
         },
         notes: walker.notes,
     })

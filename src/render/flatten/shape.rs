@@ -12,11 +12,11 @@ use crate::model::bounds::{geometry_bounds, Affine, Bounds};
 use crate::model::texture_mapping::{texture_coordinates, texture_transforms, MappingList};
 use crate::model::NodeId;
 use crate::render::draw_list::{
-    LightingModel, Primitive, Stage, Stroke, TextureRef, Textures, MAX_TEX_COORD_SETS,
+    CubeLookup, LightingModel, Primitive, Stage, Stroke, TextureRef, Textures, MAX_TEX_COORD_SETS,
 };
 use crate::render::fields::{child, type_is};
 use crate::render::geometry::{self, Built, LocalMesh, Needs, TexCoordSource};
-use crate::render::texgen::Generator;
+use crate::render::texgen::{Generator, Mode};
 
 /// A texture coordinate set as the shape's textures ask for it: its source node (None:
 /// the default coordinates) and its transformation node.
@@ -73,6 +73,9 @@ impl Walker<'_> {
         let generators_need_normals = channels
             .iter()
             .any(|c| c.generator.is_some_and(|g| g.mode.needs_normals()));
+        // Cube maps are looked up by the normal (34.2).
+        let cube_maps = look.textures.iter().any(|t| t.texture.cube);
+        let generators_need_normals = generators_need_normals || cube_maps;
         let needs = Needs {
             normals: any_lit || generators_need_normals,
             tex_coords: sources,
@@ -137,6 +140,20 @@ impl Walker<'_> {
                     texture: used.texture.index,
                     tex_coords: set,
                 };
+                let mut cube = None;
+                if used.texture.cube {
+                    let first_stage =
+                        matches!(used.role, Role::Stage { .. }) && textures.main.is_empty();
+                    if !first_stage || mesh.normals.is_none() {
+                        self.note(
+                            context,
+                            id,
+                            "a cube map texture is drawn only as the first texture of a surface; this one is not drawn".into(),
+                        );
+                        continue;
+                    }
+                    cube = Some(self.cube_lookup(context, id, channels.get(set)));
+                }
                 match used.role {
                     Role::Stage {
                         mode,
@@ -145,6 +162,7 @@ impl Walker<'_> {
                         function,
                     } => textures.main.push(Stage {
                         texture,
+                        cube,
                         mode,
                         alpha_mode,
                         source,
@@ -252,6 +270,30 @@ impl Walker<'_> {
                     format!("{other} is not drawn: the default texture coordinates are used"),
                 );
                 (TexCoordSource::Default, None)
+            }
+        }
+    }
+
+    /// The direction a cube map is looked up with: by the TextureCoordinateGenerator of
+    /// its coordinates, or the world reflection vector (none given: the environment keeps
+    /// still as the viewer turns, as a reflection of the surroundings does).
+    fn cube_lookup(
+        &mut self,
+        context: Context,
+        id: NodeId,
+        channel: Option<&Channel>,
+    ) -> CubeLookup {
+        match channel.and_then(|c| c.generator).map(|g| g.mode) {
+            None => CubeLookup::WorldReflection,
+            Some(Mode::CameraSpaceReflectionVector) => CubeLookup::CameraReflection,
+            Some(Mode::CameraSpaceNormal) => CubeLookup::CameraNormal,
+            Some(other) => {
+                self.note(
+                    context,
+                    id,
+                    format!("a cube map with TextureCoordinateGenerator {other:?} is drawn with the world reflection vector"),
+                );
+                CubeLookup::WorldReflection
             }
         }
     }

@@ -84,12 +84,21 @@ pub async fn draw(
         .iter()
         .map(|layer| layer.viewport.pixels(target.width, target.height))
         .collect();
+    let texture_layout = pipelines.texture_layout.clone();
+    let mut bindings = TextureBindings::new(
+        device,
+        queue,
+        &texture_layout,
+        &list.textures,
+        &list.cube_textures,
+    );
     let globals_groups: Vec<wgpu::BindGroup> = list
         .layers
         .iter()
         .zip(&rects)
         .map(|(layer, rect)| {
-            let globals = globals(layer, rect[2].max(1), rect[3].max(1), target.scale);
+            let (width, height) = (rect[2].max(1), rect[3].max(1));
+            let globals = globals(layer, width, height, target.scale, &list.cube_textures);
             let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some("globals"),
                 contents: bytemuck::bytes_of(&globals),
@@ -98,10 +107,22 @@ pub async fn draw(
             device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: None,
                 layout: &pipelines.globals_layout,
-                entries: &[wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: buffer.as_entire_binding(),
-                }],
+                entries: &[
+                    wgpu::BindGroupEntry {
+                        binding: 0,
+                        resource: buffer.as_entire_binding(),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 1,
+                        resource: wgpu::BindingResource::TextureView(
+                            bindings.panorama(layer.background.as_ref().and_then(|b| b.panorama)),
+                        ),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 2,
+                        resource: wgpu::BindingResource::Sampler(bindings.cube_sampler()),
+                    },
+                ],
             })
         })
         .collect();
@@ -117,7 +138,8 @@ pub async fn draw(
     let stride = size_of::<GpuDraw>().div_ceil(alignment) * alignment;
     let mut draw_bytes = vec![0u8; stride * order.len().max(1)];
     for (slot, &(l, m)) in order.iter().enumerate() {
-        let bytes = bytemuck::bytes_of(&draw_uniform(&list.layers[l].meshes[m])).to_vec();
+        let uniform = draw_uniform(&list.layers[l].meshes[m], &list.cube_textures);
+        let bytes = bytemuck::bytes_of(&uniform).to_vec();
         draw_bytes[slot * stride..slot * stride + bytes.len()].copy_from_slice(&bytes);
     }
     let draw_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
@@ -138,10 +160,8 @@ pub async fn draw(
             }),
         }],
     });
-    let texture_layout = pipelines.texture_layout.clone();
-    let mut bindings = TextureBindings::new(device, queue, &texture_layout, &list.textures);
-    list.textures.clear();
-    list.textures.shrink_to_fit();
+    list.textures = Vec::new();
+    list.cube_textures = Vec::new();
     let zeros = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
         label: Some("absent attribute"),
         contents: &[0u8; 16],

@@ -15,6 +15,8 @@ pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 /// emissive, normal, occlusion, specular or metallicRoughness, shininess, ambient. Each
 /// texture's sampler follows at `binding + TEXTURE_SLOTS`.
 pub const TEXTURE_SLOTS: usize = 10;
+/// Group 2's binding of the first stage's cube map texture (its sampler follows).
+pub const CUBE_BINDING: u32 = 2 * TEXTURE_SLOTS as u32;
 
 /// Vertex buffer slots: position, normal, colour, tangent, then the texture coordinate
 /// sets. An attribute a mesh lacks reads a constant zero (an instance-rate buffer).
@@ -163,9 +165,35 @@ impl<'d> Pipelines<'d> {
             },
             count: None,
         };
+        // A cube texture and its sampler at `binding` and the next.
+        let cube_entries = |binding: u32| {
+            [
+                wgpu::BindGroupLayoutEntry {
+                    binding,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Texture {
+                        sample_type: wgpu::TextureSampleType::Float { filterable: true },
+                        view_dimension: wgpu::TextureViewDimension::Cube,
+                        multisampled: false,
+                    },
+                    count: None,
+                },
+                wgpu::BindGroupLayoutEntry {
+                    binding: binding + 1,
+                    visibility: wgpu::ShaderStages::FRAGMENT,
+                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+                    count: None,
+                },
+            ]
+        };
+        let [panorama, panorama_sampler] = cube_entries(1);
         let globals_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("globals"),
-            entries: &[parameter_entry(false, size_of::<Globals>())],
+            entries: &[
+                parameter_entry(false, size_of::<Globals>()),
+                panorama,
+                panorama_sampler,
+            ],
         });
         let draw_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("draw"),
@@ -187,7 +215,10 @@ impl<'d> Pipelines<'d> {
             ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
             count: None,
         });
-        let entries: Vec<_> = textures.chain(samplers).collect();
+        let entries: Vec<_> = textures
+            .chain(samplers)
+            .chain(cube_entries(CUBE_BINDING))
+            .collect();
         let texture_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("textures"),
             entries: &entries,

@@ -6,7 +6,8 @@ use std::collections::HashMap;
 
 use wgpu::util::DeviceExt;
 
-use super::pipelines::{TEXTURE_SLOTS, VERTEX_SLOTS};
+use super::pipelines::{CUBE_BINDING, TEXTURE_SLOTS, VERTEX_SLOTS};
+use crate::render::cube_map::{cube_sampler, cube_view, CubeImage};
 use crate::render::draw_list::{Mesh, Primitive, Texture, Textures, Wrap, MAX_STAGES};
 
 /// The textures of a draw list on the GPU, and the bind groups made from them.
@@ -17,7 +18,14 @@ pub struct TextureBindings<'d> {
     /// drawn white).
     uploaded: Vec<Option<(wgpu::TextureView, wgpu::Sampler)>>,
     white: (wgpu::TextureView, wgpu::Sampler),
-    groups: HashMap<[Option<usize>; TEXTURE_SLOTS], wgpu::BindGroup>,
+    /// Per draw-list cube texture: its view (None: larger than the device allows).
+    cubes: Vec<Option<wgpu::TextureView>>,
+    /// Sampled where a mesh has no cube map (never read), and its sampler.
+    white_cube: wgpu::TextureView,
+    /// The panorama of a Background without one.
+    transparent_cube: wgpu::TextureView,
+    cube_sampler: wgpu::Sampler,
+    groups: HashMap<([Option<usize>; TEXTURE_SLOTS], Option<usize>), wgpu::BindGroup>,
 }
 
 impl<'d> TextureBindings<'d> {
@@ -26,6 +34,7 @@ impl<'d> TextureBindings<'d> {
         queue: &wgpu::Queue,
         layout: &'d wgpu::BindGroupLayout,
         textures: &[Texture],
+        cubes: &[CubeImage],
     ) -> Self {
         let max_side = device.limits().max_texture_dimension_2d;
         let uploaded = textures
@@ -49,38 +58,72 @@ impl<'d> TextureBindings<'d> {
                 anisotropy: 1,
             },
         );
+        let max_cube = device.limits().max_texture_dimension_2d;
+        let cubes = cubes
+            .iter()
+            .map(|c| (c.side <= max_cube).then(|| cube_view(&c.upload(device, queue))))
+            .collect();
         TextureBindings {
             device,
             layout,
             uploaded,
             white,
+            cubes,
+            white_cube: cube_view(&CubeImage::uniform([255; 4]).upload(device, queue)),
+            transparent_cube: cube_view(&CubeImage::uniform([0; 4]).upload(device, queue)),
+            cube_sampler: cube_sampler(device),
             groups: HashMap::new(),
         }
+    }
+
+    /// A Background's panorama: transparent where it has none (or one too large for the
+    /// device).
+    pub fn panorama(&self, cube: Option<usize>) -> &wgpu::TextureView {
+        cube.and_then(|c| self.cubes.get(c).and_then(Option::as_ref))
+            .unwrap_or(&self.transparent_cube)
+    }
+
+    pub fn cube_sampler(&self) -> &wgpu::Sampler {
+        &self.cube_sampler
     }
 
     /// The bind group for a mesh's textures (shared by every mesh with the same ones).
     pub fn group(&mut self, textures: &Textures) -> &wgpu::BindGroup {
         let key = slots(textures);
         if !self.groups.contains_key(&key) {
+            let (slots, cube) = key;
+            let cube = cube
+                .and_then(|c| self.cubes.get(c).and_then(Option::as_ref))
+                .unwrap_or(&self.white_cube);
             let pick = |slot: Option<usize>| {
                 slot.and_then(|t| self.uploaded.get(t).and_then(Option::as_ref))
                     .unwrap_or(&self.white)
             };
-            let views = key
+            let views = slots
                 .iter()
                 .enumerate()
                 .map(|(i, &slot)| wgpu::BindGroupEntry {
                     binding: i as u32,
                     resource: wgpu::BindingResource::TextureView(&pick(slot).0),
                 });
-            let samplers = key
+            let samplers = slots
                 .iter()
                 .enumerate()
                 .map(|(i, &slot)| wgpu::BindGroupEntry {
                     binding: (TEXTURE_SLOTS + i) as u32,
                     resource: wgpu::BindingResource::Sampler(&pick(slot).1),
                 });
-            let entries: Vec<_> = views.chain(samplers).collect();
+            let cube_entries = [
+                wgpu::BindGroupEntry {
+                    binding: CUBE_BINDING,
+                    resource: wgpu::BindingResource::TextureView(cube),
+                },
+                wgpu::BindGroupEntry {
+                    binding: CUBE_BINDING + 1,
+                    resource: wgpu::BindingResource::Sampler(&self.cube_sampler),
+                },
+            ];
+            let entries: Vec<_> = views.chain(samplers).chain(cube_entries).collect();
             let group = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: None,
                 layout: self.layout,
@@ -92,11 +135,16 @@ impl<'d> TextureBindings<'d> {
     }
 }
 
-/// The draw-list texture in each binding slot (the order of `pipelines::TEXTURE_SLOTS`).
-fn slots(textures: &Textures) -> [Option<usize>; TEXTURE_SLOTS] {
+/// The draw-list texture in each binding slot (the order of `pipelines::TEXTURE_SLOTS`),
+/// and the first stage's cube texture.
+fn slots(textures: &Textures) -> ([Option<usize>; TEXTURE_SLOTS], Option<usize>) {
     let mut key = [None; TEXTURE_SLOTS];
+    let mut cube = None;
     for (slot, stage) in key.iter_mut().zip(textures.main.iter().take(MAX_STAGES)) {
-        *slot = Some(stage.texture.texture);
+        match stage.cube {
+            Some(_) => cube = Some(stage.texture.texture),
+            None => *slot = Some(stage.texture.texture),
+        }
     }
     let roles = [
         textures.emissive,
@@ -109,7 +157,7 @@ fn slots(textures: &Textures) -> [Option<usize>; TEXTURE_SLOTS] {
     for (slot, role) in key[MAX_STAGES..].iter_mut().zip(roles) {
         *slot = role.map(|r| r.texture);
     }
-    key
+    (key, cube)
 }
 
 fn upload(
@@ -379,7 +427,7 @@ fn distance(a: [f32; 3], b: [f32; 3]) -> f32 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::render::draw_list::{Stage, TextureRef};
+    use crate::render::draw_list::{CubeLookup, Stage, TextureRef};
 
     #[test]
     fn lines_and_points_become_instances_of_their_two_ends() {
@@ -439,18 +487,30 @@ mod tests {
         };
         assert_eq!(
             slots(&textures),
-            [
-                Some(7),
-                Some(8),
-                None,
-                None,
-                Some(1),
-                None,
-                None,
-                Some(2),
-                None,
-                Some(3)
-            ]
+            (
+                [
+                    Some(7),
+                    Some(8),
+                    None,
+                    None,
+                    Some(1),
+                    None,
+                    None,
+                    Some(2),
+                    None,
+                    Some(3)
+                ],
+                None
+            )
         );
+        // A cube map first stage binds as the cube, its 2D slot left white.
+        let cube = Textures {
+            main: vec![Stage {
+                cube: Some(CubeLookup::WorldReflection),
+                ..Stage::modulate(at(5))
+            }],
+            ..Textures::default()
+        };
+        assert_eq!(slots(&cube), ([None; TEXTURE_SLOTS], Some(5)));
     }
 }

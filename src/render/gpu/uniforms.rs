@@ -3,6 +3,7 @@
 
 use bytemuck::{Pod, Zeroable};
 
+use crate::render::cube_map::{CubeFormat, CubeImage};
 use crate::render::draw_list::{
     Camera, Layer, LightKind, LightingModel, Material, Mesh, Primitive, Projection, TextureRef,
     MAX_CLIP_PLANES, MAX_GRADIENT, MAX_LIGHTS, MAX_STAGES,
@@ -23,6 +24,8 @@ pub struct GpuLight {
 pub struct Globals {
     view_projection: [[f32; 4]; 4],
     background_from_clip: [[f32; 4]; 4],
+    camera_from_world: [[f32; 4]; 4],
+    environment: [u32; 4],
     viewport: [f32; 4],
     forward_near: [f32; 4],
     fog_color_range: [f32; 4],
@@ -90,7 +93,8 @@ fn gpu_material(m: &Material) -> GpuMaterial {
     }
 }
 
-pub fn draw_uniform(mesh: &Mesh) -> GpuDraw {
+/// `cubes`: the draw list's cube textures (a cube map stage's is looked up).
+pub fn draw_uniform(mesh: &Mesh, cubes: &[CubeImage]) -> GpuDraw {
     let front = gpu_material(&mesh.front);
     let textures = &mesh.textures;
     let color_mode = match (&mesh.colors, mesh.colors_have_alpha) {
@@ -151,7 +155,17 @@ pub fn draw_uniform(mesh: &Mesh) -> GpuDraw {
             set(textures.shininess),
             set(textures.ambient),
             mesh.clip_planes.len().min(MAX_CLIP_PLANES) as u32,
-            0,
+            // The first stage's cube map: how it is looked up, and bit 2 for linear texels.
+            textures
+                .main
+                .first()
+                .and_then(|stage| stage.cube)
+                .map_or(0, |lookup| {
+                    let linear = cubes
+                        .get(textures.main[0].texture.texture)
+                        .is_some_and(|c| c.format == CubeFormat::Rgba16Float);
+                    lookup as u32 | u32::from(linear) << 2
+                }),
         ],
         factor: textures.factor,
         cutoff: [mesh.alpha_cutoff, 0.0, 0.0, 0.0],
@@ -172,7 +186,7 @@ pub fn draw_uniform(mesh: &Mesh) -> GpuDraw {
 
 /// A layer's uniforms for its `width` × `height` rectangle of a target drawn `scale`
 /// times larger than the image (supersampling): stroke sizes are in image pixels.
-pub fn globals(list: &Layer, width: u32, height: u32, scale: u32) -> Globals {
+pub fn globals(list: &Layer, width: u32, height: u32, scale: u32, cubes: &[CubeImage]) -> Globals {
     let camera = &list.camera;
     let projection = projection(camera, width as f32 / height as f32);
     let view = glam::Mat4::from_quat(camera.orientation.inverse());
@@ -218,6 +232,18 @@ pub fn globals(list: &Layer, width: u32, height: u32, scale: u32) -> Globals {
     Globals {
         view_projection: view_projection.to_cols_array_2d(),
         background_from_clip: (to_background * view_projection.inverse()).to_cols_array_2d(),
+        camera_from_world: view.to_cols_array_2d(),
+        environment: [
+            u32::from(
+                background
+                    .panorama
+                    .and_then(|p| cubes.get(p))
+                    .is_some_and(|c| c.format == CubeFormat::Rgba16Float),
+            ),
+            0,
+            0,
+            0,
+        ],
         viewport: [
             width as f32,
             height as f32,

@@ -524,6 +524,7 @@ pub fn format_name(format: image::ImageFormat) -> &'static str {
             "bmp" => "BMP",
             "tif" | "tiff" => "TIFF",
             "webp" => "WebP",
+            "hdr" => "Radiance HDR",
             other => other,
         })
 }

@@ -7,11 +7,11 @@ use crate::validate::Ctx;
 crate::declare_rule! {
     /// ## What it does
     /// Reports an ImageTexture or Background url whose local file is an image in a format
-    /// other than PNG, JPEG and GIF: BMP, TIFF or WebP that decodes (a file that does not
-    /// decode is IMAGE_UNREADABLE's), or a format x3dcheck recognises by its extension but
-    /// does not decode (DDS, KTX, KTX2, TGA, OpenEXR, HDR, SVG, JPEG 2000, AVIF). The
-    /// format is read from the file's content, not its name. Which files are read: see
-    /// URL_UNRESOLVED.
+    /// other than PNG, JPEG and GIF: BMP, TIFF, WebP or Radiance HDR that decodes (a file
+    /// that does not decode is IMAGE_UNREADABLE's), or a format x3dcheck recognises by its
+    /// extension but does not decode (DDS, KTX, KTX2, TGA, OpenEXR, SVG, JPEG 2000,
+    /// AVIF). The format is read from the file's content, not its name. Which files are
+    /// read: see URL_UNRESOLVED.
     ///
     /// ## Why it matters
     /// 18.4.1: "X3D browsers shall support the JPEG and PNG image file formats", and GIF is
