@@ -436,18 +436,36 @@ pub fn counted(doc: &Document) -> impl Iterator<Item = (NodeId, Counted<'_>)> {
     })
 }
 
-/// Reports every Normal vector that `judge` (given its f64 length) finds fault with, as
-/// `Normal.vector[k] = x y z <what judge says>` with the vector as the document writes it,
-/// folded per Normal node. Non-finite vectors are skipped: FIELD_VALUE_NONFINITE reports
-/// them.
+/// The fields whose vectors are normals, which "shall have unit length": Normal's (11.2.1)
+/// and NormalInterpolator's key values ("Values in the keyValue field shall be of unit
+/// length", 19.4).
+const NORMAL_FIELDS: [(&str, &str); 2] = [("Normal", "vector"), ("NormalInterpolator", "keyValue")];
+
+/// Reports every normal vector (of [`NORMAL_FIELDS`]) that `judge` (given its f64 length)
+/// finds fault with, as `Normal.vector[k] = x y z <what judge says>` (or
+/// `NormalInterpolator.keyValue[k] = …`) with the vector as the document writes it, folded
+/// per node. Non-finite vectors are skipped:
+/// FIELD_VALUE_NONFINITE reports them.
 pub fn each_normal(ctx: &mut Ctx, rule: &'static Rule, judge: impl Fn(f64) -> Option<String>) {
+    for (type_name, field) in NORMAL_FIELDS {
+        each_normal_of(ctx, rule, &judge, type_name, field);
+    }
+}
+
+fn each_normal_of(
+    ctx: &mut Ctx,
+    rule: &'static Rule,
+    judge: &impl Fn(f64) -> Option<String>,
+    type_name: &'static str,
+    field: &'static str,
+) {
     let doc = ctx.doc;
-    for id in doc.nodes_of_type("Normal") {
+    for id in doc.nodes_of_type(type_name) {
         let node = doc.node(id);
-        if !is_known(node, "vector") {
+        if !is_known(node, field) {
             continue;
         }
-        let Some(entry) = node.entry("vector") else {
+        let Some(entry) = node.entry(field) else {
             continue;
         };
         let Some(values) = entry.value.as_floats() else {
@@ -464,12 +482,16 @@ pub fn each_normal(ctx: &mut Ctx, rule: &'static Rule, judge: impl Fn(f64) -> Op
             let Some(what) = judge(dot(v, v).sqrt()) else {
                 continue;
             };
-            ctx.report_repeated(rule, id, "vector", k, || {
+            ctx.report_repeated(rule, id, field, k, || {
                 let span = spans.span_of(3 * k, 3 * k + 2);
                 let text = numbers_text(source.get(span.range()).unwrap_or_default());
-                Diagnostic::new(rule, span, format!("Normal.vector[{k}] = {text} {what}"))
-                    .node(id)
-                    .value(text)
+                Diagnostic::new(
+                    rule,
+                    span,
+                    format!("{type_name}.{field}[{k}] = {text} {what}"),
+                )
+                .node(id)
+                .value(text)
             });
         }
     }

@@ -1,5 +1,6 @@
 //! Texturing component (clause 18), RULES.md §5.
 
+pub mod composed_texture3d_count_not_power_of_two;
 pub(crate) mod data_url;
 pub(crate) mod files;
 pub mod image_format_unsupported;
@@ -26,6 +27,7 @@ pub static RULES: &[&Check] = &[
     &texture_repeat_ignored::CHECK,
     &texture_transform_singular::CHECK,
     &pixel_texture_size_mismatch::CHECK,
+    &composed_texture3d_count_not_power_of_two::CHECK,
     &image_url_empty::CHECK,
     &url_unresolved::CHECK,
     &image_unreadable::CHECK,
