@@ -76,16 +76,35 @@ pub fn read_with(source: &[u8], keep: KeepValues, progress: &dyn Progress) -> Pa
             ));
         }
     };
-    let tree = match tree::parse_with_progress(text, progress) {
-        Ok(tree) => tree,
-        Err(error) => return failed(malformed(error.at, error.len, &error.message)),
-    };
-    let x3d = match root(&tree) {
+    // Arrays of plain numbers are checked as their numbers are read; when one is not JSON
+    // (or the scan stops at an error, which may come after one of them), the document is
+    // scanned again whole, which reports the first error as it always has.
+    if let Ok(tree) = tree::parse_deferring(text, progress) {
+        let parsed = read_tree(&tree, source, keep, progress);
+        if tree.deferred_are_json() {
+            return parsed;
+        }
+    }
+    match tree::parse_with_progress(text, progress) {
+        Ok(tree) => read_tree(&tree, source, keep, progress),
+        Err(error) => failed(malformed(error.at, error.len, &error.message)),
+    }
+}
+
+/// The document of a scanned JSON text.
+fn read_tree(tree: &Tree, source: &[u8], keep: KeepValues, progress: &dyn Progress) -> Parsed {
+    let x3d = match root(tree) {
         Ok(x3d) => x3d,
-        Err(diagnostic) => return failed(diagnostic),
+        Err(diagnostic) => {
+            return Parsed {
+                encoding: Some(Encoding::Json),
+                document: None,
+                diagnostics: vec![diagnostic],
+            }
+        }
     };
     let mut reader = JsonReader {
-        t: &tree,
+        t: tree,
         pass: Pass::new(source, progress),
         builder: Builder::new(Encoding::Json),
         stack: Vec::new(),
@@ -96,7 +115,7 @@ pub fn read_with(source: &[u8], keep: KeepValues, progress: &dyn Progress) -> Pa
     // As in the XML reader: the pieces' vectors are kept for this document only.
     super::split::scratch::release();
     let (mut document, diagnostics) = reader.builder.finish();
-    document.directives = super::directive::place_json(&tree, progress);
+    document.directives = super::directive::place_json(tree, progress);
     Parsed {
         encoding: Some(Encoding::Json),
         document: Some(document),
@@ -1845,6 +1864,76 @@ mod tests {
             d.message,
             "not valid JSON: a trailing comma before `]` is not allowed in JSON"
         );
+    }
+
+    /// Arrays of plain numbers are skipped by the scan and checked as they are read: what
+    /// is not JSON in them is reported as the whole scan reports it, whichever field (or
+    /// none) reads the array, and what is JSON reads as before.
+    #[test]
+    fn skipped_number_arrays_report_what_the_scan_reports() {
+        let arrays = [
+            "1,2,3",
+            "1,,2",
+            ",1",
+            "1,2,",
+            "01,2",
+            "-,1",
+            "1.,2",
+            "1.5.5,2",
+            "-01",
+            "1,-",
+            "0.5,-0.25,00",
+            "1--2",
+            "1,2.",
+            ".5,1",
+            "-.5",
+            "1,2 ,3",
+            "1.5,2,3.25",
+            "-0,0,0.0",
+            "7,8,-9.125",
+            "1.5e3,2",
+            "1,\"a\"",
+            "2147483648,1",
+            "0.5,1,1.5,2",
+        ];
+        let fields = ["point", "index", "size", "on", "url", "unknownField"];
+        for array in arrays {
+            for (node, field) in [
+                ("Coordinate", fields[0]),
+                ("IndexedFaceSet", fields[1]),
+                ("Box", fields[2]),
+                ("TimeSensor", fields[3]),
+                ("ImageTexture", fields[4]),
+                ("Group", fields[5]),
+            ] {
+                let source = scene(&format!("{{ \"{node}\": {{ \"@{field}\": [{array}] }} }}"));
+                let parsed = read_str(&source);
+                match tree::parse(&source) {
+                    Err(error) => {
+                        assert!(parsed.document.is_none(), "{source}");
+                        let d = &parsed.diagnostics[0];
+                        assert_eq!(parsed.diagnostics.len(), 1, "{source}");
+                        assert_eq!(d.rule.code, "JSON_MALFORMED", "{source}");
+                        assert_eq!(d.span.start as usize, error.at, "{source}");
+                        assert!(d.message.ends_with(&error.message), "{source}");
+                    }
+                    Ok(_) => assert!(parsed.document.is_some(), "{source}"),
+                }
+            }
+        }
+        // And a long one, read in pieces.
+        let long = (0..400_000)
+            .map(|k| format!("{k}.5"))
+            .collect::<Vec<_>>()
+            .join(",");
+        for (tail, json) in [("", true), (",01", false), (",1.", false), (",,1", false)] {
+            let source = scene(&format!(
+                "{{ \"Coordinate\": {{ \"@point\": [{long}{tail},1,2] }} }}"
+            ));
+            let parsed = read_str(&source);
+            assert_eq!(parsed.document.is_some(), json, "{tail}");
+            assert_eq!(tree::parse(&source).is_ok(), json, "{tail}");
+        }
     }
 
     #[test]

@@ -19,6 +19,7 @@
 //! document order, for the reader to report.
 
 use std::borrow::Cow;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use crate::parse::behind::{Pass, Progress};
 use crate::parse::number::leading_digits;
@@ -43,6 +44,9 @@ pub enum Kind {
 pub const ESCAPED: u8 = 1;
 /// The number has a fraction or an exponent.
 pub const NOT_INTEGER: u8 = 2;
+/// An array that [`parse_deferring`] skipped: its text is digits, `-`, `.` and commas, and
+/// its elements are checked against the grammar when they are read (see [`Deferred`]).
+pub const UNCHECKED: u8 = 4;
 
 /// One value or key. Strings and keys span their content without the quotes; numbers
 /// and literals their token; arrays and objects everything from the bracket to its mate.
@@ -80,6 +84,22 @@ impl From<usize> for ValueRef {
 pub struct Tree<'s> {
     pub src: &'s str,
     pub items: Vec<Item>,
+    pub deferred: Deferred,
+}
+
+/// The arrays [`parse_deferring`] skipped without checking their numbers. Whoever reads
+/// one checks it: the number readers ([`Elements::next_number`] and the pieces of a long
+/// array) check each number's shape and its comma as they read it, anything else checks
+/// the whole array with the scanner first. [`Tree::deferred_are_json`] checks those no
+/// reader finished.
+#[derive(Default)]
+pub struct Deferred {
+    /// Their item indices, ascending.
+    arrays: Vec<u32>,
+    /// Each found to be JSON.
+    checked: Box<[AtomicBool]>,
+    /// One was found not to be JSON.
+    broken: AtomicBool,
 }
 
 /// A syntax error at a byte offset.
@@ -184,6 +204,8 @@ impl<'s> Tree<'s> {
         let array = &self.items[i];
         Elements {
             tree: self,
+            array: i,
+            tight: self.is_unchecked(i),
             text: self.array_text(i),
             base: array.start as usize + 1,
             at: 0,
@@ -213,6 +235,75 @@ impl<'s> Tree<'s> {
             self.str(k) == text
         }
     }
+
+    /// Whether array `i` was skipped by the scanner and nobody has checked it yet: its
+    /// numbers are to be read with [`tight_number`] or after [`Tree::check_deferred`].
+    pub fn is_unchecked(&self, i: usize) -> bool {
+        self.items[i].flags & UNCHECKED != 0
+            && !self.deferred.checked[self.deferred_slot(i)].load(Ordering::Relaxed)
+    }
+
+    fn deferred_slot(&self, i: usize) -> usize {
+        self.deferred
+            .arrays
+            .binary_search(&(i as u32))
+            .expect("an UNCHECKED array is in the deferred list")
+    }
+
+    /// Records that skipped array `i` was read to its end by the number readers, each
+    /// number and comma checked.
+    pub fn mark_checked(&self, i: usize) {
+        self.deferred.checked[self.deferred_slot(i)].store(true, Ordering::Relaxed);
+    }
+
+    /// Checks skipped array `i` with the scanner (once): whether it is JSON. When it is
+    /// not, the tree is not the document's and [`Tree::deferred_are_json`] says so.
+    pub fn check_deferred(&self, i: usize) -> bool {
+        let slot = self.deferred_slot(i);
+        if self.deferred.checked[slot].load(Ordering::Relaxed) {
+            return true;
+        }
+        let (start, end) = self.span(i);
+        // The array holds no brackets, quotes or objects: on its own it is the same text.
+        let json = parse(&self.src[start..end]).is_ok();
+        if json {
+            self.deferred.checked[slot].store(true, Ordering::Relaxed);
+        } else {
+            self.deferred.broken.store(true, Ordering::Relaxed);
+        }
+        json
+    }
+
+    /// Whether every array [`parse_deferring`] skipped is JSON, checking those no reader
+    /// did. When not, the text has a syntax error that [`parse`] reports.
+    pub fn deferred_are_json(&self) -> bool {
+        !self.deferred.broken.load(Ordering::Relaxed)
+            && self
+                .deferred
+                .arrays
+                .iter()
+                .all(|&i| self.check_deferred(i as usize))
+    }
+}
+
+/// The shape a number of a skipped array must have besides what the number reader `scan`
+/// accepted in `text[at..end]`, `end` being where that reader stopped: a JSON number
+/// (`-?(0|[1-9][0-9]*)(\.[0-9]+)?`: the array has no exponents) followed by a comma, or
+/// by the end of the array when it is the `last`. The reader accepted digits with at most
+/// one `.` after an optional sign; JSON also wants a digit first, no leading zero and a
+/// digit after the `.`.
+#[inline(always)]
+pub fn tight_number(text: &[u8], at: usize, end: usize, last: bool) -> bool {
+    let int_start = at + usize::from(text[at] == b'-');
+    let first = text.get(int_start).copied().unwrap_or(0);
+    first.is_ascii_digit()
+        && !(first == b'0' && text.get(int_start + 1).is_some_and(u8::is_ascii_digit))
+        && text[end - 1] != b'.'
+        && if last {
+            end == text.len()
+        } else {
+            text.get(end) == Some(&b',')
+        }
 }
 
 pub struct Members<'t, 's> {
@@ -240,6 +331,12 @@ impl Iterator for Members<'_, '_> {
 /// looked for here.
 pub struct Elements<'t, 's> {
     tree: &'t Tree<'s>,
+    /// The array's item.
+    array: usize,
+    /// The array was skipped by the scanner and is not checked yet: each number is read
+    /// with its comma, as [`tight_number`] says, until one is not, when the whole array
+    /// is checked.
+    tight: bool,
     /// The array's text between its brackets.
     text: &'s [u8],
     /// The offset of `text` in the source.
@@ -279,12 +376,25 @@ impl<'s> Elements<'_, 's> {
         if self.left == 0 {
             return None;
         }
-        let at = self.skip_separators();
+        let at = if self.tight {
+            self.at
+        } else {
+            self.skip_separators()
+        };
         if !matches!(self.text.get(at), Some(b'-' | b'0'..=b'9')) {
             return None;
         }
         let (value, end) = scan(self.text, at)?;
-        self.at = end;
+        if self.tight {
+            let last = self.left == 1;
+            if !tight_number(self.text, at, end, last) {
+                return None;
+            }
+            // Past the comma.
+            self.at = end + usize::from(!last);
+        } else {
+            self.at = end;
+        }
         self.left -= 1;
         Some(value)
     }
@@ -294,6 +404,15 @@ impl Iterator for Elements<'_, '_> {
     type Item = ValueRef;
 
     fn next(&mut self) -> Option<ValueRef> {
+        if self.tight {
+            self.tight = false;
+            if self.left == 0 {
+                // Every element was read by `next_number`, each with its comma.
+                self.tree.mark_checked(self.array);
+            } else if !self.tree.check_deferred(self.array) {
+                self.left = 0;
+            }
+        }
         if self.left == 0 {
             return None;
         }
@@ -409,7 +528,24 @@ pub fn parse(src: &str) -> Result<Tree<'_>, Error> {
 
 /// [`parse`], telling `progress` how far the scanner has got.
 pub fn parse_with_progress<'s>(src: &'s str, progress: &dyn Progress) -> Result<Tree<'s>, Error> {
+    scan(src, progress, false)
+}
+
+/// [`parse_with_progress`], but an array of digits, `-`, `.` and commas only (most of a
+/// large scene: coordinates and indices written without spaces) is skipped to its `]`
+/// and marked [`UNCHECKED`], for its reader to check as it reads its numbers (the
+/// grammar was a second pass over them). The tree is the document's only if
+/// [`Tree::deferred_are_json`] says so once it has been read; otherwise, and when this
+/// returns an error (a skipped array may hold an earlier one), [`parse_with_progress`]
+/// says where the text is not JSON.
+pub fn parse_deferring<'s>(src: &'s str, progress: &dyn Progress) -> Result<Tree<'s>, Error> {
+    scan(src, progress, true)
+}
+
+fn scan<'s>(src: &'s str, progress: &dyn Progress, defer: bool) -> Result<Tree<'s>, Error> {
     let mut scanner = Scanner {
+        defer,
+        deferred: Vec::new(),
         s: src.as_bytes(),
         src,
         pass: Pass::new(src.as_bytes(), progress),
@@ -424,13 +560,27 @@ pub fn parse_with_progress<'s>(src: &'s str, progress: &dyn Progress) -> Result<
         scanner.i = 3;
     }
     scanner.run()?;
+    let checked = scanner
+        .deferred
+        .iter()
+        .map(|_| AtomicBool::new(false))
+        .collect();
     Ok(Tree {
         src,
         items: scanner.items,
+        deferred: Deferred {
+            arrays: scanner.deferred,
+            checked,
+            broken: AtomicBool::new(false),
+        },
     })
 }
 
 struct Scanner<'s> {
+    /// Skip arrays of plain numbers ([`parse_deferring`]).
+    defer: bool,
+    /// The arrays skipped.
+    deferred: Vec<u32>,
     s: &'s [u8],
     src: &'s str,
     pass: Pass<'s>,
@@ -463,6 +613,16 @@ impl<'s> Scanner<'s> {
                             self.skip_ws();
                             if self.s.get(self.i) == Some(&b']') {
                                 self.i += 1;
+                                self.close();
+                            } else if let Some((end, commas)) =
+                                self.defer.then(|| plain_array(self.s, self.i)).flatten()
+                            {
+                                let array = *self.stack.last().expect("the array just opened");
+                                let item = &mut self.items[array as usize];
+                                item.len = commas + 1;
+                                item.flags = UNCHECKED;
+                                self.deferred.push(array);
+                                self.i = end + 1;
                                 self.close();
                             } else {
                                 // Stay expecting a value; an empty array was handled above.
@@ -1187,6 +1347,41 @@ fn plain_numbers(chunk: &[u8; CHUNK]) -> (u32, u32) {
         return (0, 0);
     }
     (bytes, comma.count_ones())
+}
+
+/// The array text starting at `s[i]` (after its `[`) when it is digits, `-`, `.` and
+/// commas only up to its `]`: the offset of the `]` and how many commas there are. A
+/// chunk at a time ([`classes`]) while whole chunks are such bytes.
+#[inline(always)]
+fn plain_array(s: &[u8], mut i: usize) -> Option<(usize, u32)> {
+    let mut commas = 0;
+    while let Some(chunk) = s.get(i..).and_then(|rest| rest.first_chunk::<CHUNK>()) {
+        let Classes {
+            comma,
+            minus,
+            dot,
+            digit,
+            ..
+        } = classes(chunk);
+        let plain = comma | minus | dot | digit;
+        if plain != (1 << CHUNK) - 1 {
+            let k = plain.trailing_ones() as usize;
+            commas += (comma & ((1 << k) - 1)).count_ones();
+            i += k;
+            break;
+        }
+        commas += comma.count_ones();
+        i += CHUNK;
+    }
+    loop {
+        match s.get(i)? {
+            b',' => commas += 1,
+            b'-' | b'.' | b'0'..=b'9' => {}
+            b']' => return Some((i, commas)),
+            _ => return None,
+        }
+        i += 1;
+    }
 }
 
 /// The end of the run of JSON whitespace starting at `i`.

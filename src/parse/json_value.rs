@@ -14,7 +14,7 @@ use std::ops::Range;
 
 use rayon::prelude::*;
 
-use super::tree::{Kind, ScanNumber, Tree, ValueRef, NOT_INTEGER};
+use super::tree::{tight_number, Kind, ScanNumber, Tree, ValueRef, NOT_INTEGER};
 use crate::model::{Image, Node, Sink, Summarized, Summarizer, Value};
 use crate::parse::number::{is_separator, parse_f32, parse_f64, scan_float, scan_i32};
 use crate::parse::{huge_vec, split};
@@ -527,12 +527,57 @@ fn numbers_in_pieces<T: Copy + Send + 'static>(
 ) -> Option<Vec<Vec<T>>> {
     let text = tree.array_text(array);
     let piece = split::piece_size(text.len(), rayon::current_num_threads)?;
+    let tight = tree.is_unchecked(array);
     let pieces = split::pieces(text, piece)
         .into_par_iter()
-        .map(|range| numbers_of_piece(text, range, scan))
+        .map(|range| {
+            if tight {
+                numbers_of_tight_piece(text, range, scan)
+            } else {
+                numbers_of_piece(text, range, scan)
+            }
+        })
         .collect::<Option<Vec<_>>>()?;
     let count: usize = pieces.iter().map(Vec::len).sum();
-    (count == tree.item(array).len as usize).then_some(pieces)
+    let whole = count == tree.item(array).len as usize;
+    if whole && tight {
+        tree.mark_checked(array);
+    }
+    whole.then_some(pieces)
+}
+
+/// [`numbers_of_piece`] for an array the scanner skipped ([`Tree::is_unchecked`]): each
+/// number with its comma checked by [`tight_number`]. A piece but the first starts at the
+/// comma that ended the one before (pieces end at separators). `None` at the first number
+/// that is not so, and the one-by-one reading checks the array.
+fn numbers_of_tight_piece<T: Send + 'static>(
+    text: &[u8],
+    range: Range<usize>,
+    scan: ScanNumber<T>,
+) -> Option<Vec<T>> {
+    let mut numbers = split::scratch::take(range.len());
+    let mut at = range.start;
+    if at > 0 {
+        if text[at] != b',' {
+            return None;
+        }
+        at += 1;
+    }
+    loop {
+        if !matches!(text.get(at), Some(b'-' | b'0'..=b'9')) {
+            return None;
+        }
+        let (value, end) = scan(&text[..range.end], at)?;
+        // The array's last number ends the text; any other is followed by its comma.
+        if !tight_number(text, at, end, end == text.len()) {
+            return None;
+        }
+        numbers.push(value);
+        if end == range.end {
+            return Some(numbers);
+        }
+        at = end + 1;
+    }
 }
 
 /// The numbers in `text[range]`, each read as [`Elements::next_number`] reads it; `None`
