@@ -29,15 +29,16 @@ use serde::Serialize;
 use crate::batch::{self, codes, file_root, Batch};
 use crate::check::{check_source, check_too_large, STDIN_NAME};
 use crate::config_file::{Resolver, Settings};
+use crate::diagnostic::Rule;
 use crate::library::Libraries;
 use crate::limits::MAX_INPUT_BYTES;
 use crate::read::{read_path, Contents};
 use crate::report::{sarif, FileReport};
-use crate::validate::{Rule, RULES};
+use crate::validate::RULES;
 
+pub use crate::diagnostic::{Level, Severity};
 pub use crate::report::json::{Diagnostic, Edit, File, Fix, RelatedPlace, Report};
 pub use crate::report::Summary;
-pub use crate::validate::{Level, Severity};
 
 /// What to check, as the command line's options say it. The default checks like
 /// `x3dcheck -` with no options.

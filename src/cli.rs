@@ -26,12 +26,12 @@ use crate::batch::{self, codes};
 use crate::check::STDIN_NAME;
 use crate::config::CheckConfig;
 use crate::config_file::{Effective, Resolver, Settings};
+use crate::diagnostic::{Level, Severity};
 use crate::fix;
 use crate::model::MAX_INPUT_BYTES;
 use crate::report::{concise, github, human, json, junit, sarif, statistics};
 use crate::report::{FileReport, Summary};
 use crate::shard::Shard;
-use crate::validate::{Level, Severity};
 
 use color::{ColorChoice, ColorEnv};
 

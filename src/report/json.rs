@@ -12,10 +12,10 @@ use serde::{Deserialize, Serialize};
 
 use super::resolve::VRML97_GRAMMAR;
 use super::{FileReport, Related, Resolved, ResolvedEdit, ResolvedFix, Stats, Summary};
-use crate::diagnostic::Applicability;
+use crate::diagnostic::{Applicability, Severity};
 use crate::model::{Encoding, Span};
 use crate::shard::Shard;
-use crate::validate::{find_rule, Severity};
+use crate::validate::find_rule;
 
 const TOOL: &str = "x3dcheck";
 const VERSION: &str = env!("CARGO_PKG_VERSION");
@@ -382,13 +382,17 @@ mod tests {
     fn report() -> FileReport {
         let source = b"<X3D>\n  <Scene>\n    <Shape/>\n  </Scene>\n</X3D>\n";
         let rule = find_rule("DEF_DUPLICATE").unwrap();
-        let folded = crate::report::Diagnostic {
+        let folded = crate::diagnostic::Diagnostic {
             indices: vec![3, 7],
             count: 2,
-            ..crate::report::Diagnostic::new(rule, Span { start: 12, end: 19 }, "a \"quoted\"\n")
+            ..crate::diagnostic::Diagnostic::new(
+                rule,
+                Span { start: 12, end: 19 },
+                "a \"quoted\"\n",
+            )
         };
         let diagnostics = [
-            crate::report::Diagnostic::new(rule, Span { start: 20, end: 28 }, "DEF `A` again")
+            crate::diagnostic::Diagnostic::new(rule, Span { start: 20, end: 28 }, "DEF `A` again")
                 .related(Span { start: 6, end: 13 }, "first defined here")
                 .help("rename it")
                 .value("A")

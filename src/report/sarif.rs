@@ -7,7 +7,8 @@
 use serde_json::{json, Map, Value};
 
 use super::{FileReport, Resolved};
-use crate::validate::{Rule, Severity, RULES};
+use crate::diagnostic::{Rule, Severity};
+use crate::validate::RULES;
 
 const SCHEMA: &str =
     "https://docs.oasis-open.org/sarif/sarif/v2.1.0/errata01/os/schemas/sarif-schema-2.1.0.json";

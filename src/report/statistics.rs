@@ -8,7 +8,8 @@ use std::fmt::Write as _;
 use serde::Serialize;
 
 use super::{FileReport, Summary};
-use crate::validate::{find_rule, Severity};
+use crate::diagnostic::Severity;
+use crate::validate::find_rule;
 
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct CodeCount {

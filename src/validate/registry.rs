@@ -8,8 +8,9 @@ use super::{
     document, environmental_effects, events, geometry2d, geometry3d, geospatial, grouping, hanim,
     interpolation, lighting, navigation, networking, nurbs, particles, picking, prototypes,
     rendering, rigid_body, scripting, sensors, shaders, shape, sound, text, texture_projection,
-    texturing, Check, Rule,
+    texturing, Check,
 };
+use crate::diagnostic::Rule;
 
 /// Every rule with its check function (None for those reported while reading).
 pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {

@@ -13,9 +13,9 @@
 use proptest::prelude::*;
 use quick_xml::events::Event;
 use x3dcheck::config::CheckConfig;
+use x3dcheck::diagnostic::{Level, Severity};
 use x3dcheck::report::{concise, github, human, json, junit, sarif, FileReport};
 use x3dcheck::schema::{schema, Scalar, Version};
-use x3dcheck::validate::{Level, Severity};
 
 use crate::support::{check_with, document, has_non_finite_word, El, Encoding, ENCODINGS};
 

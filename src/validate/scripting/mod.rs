@@ -24,7 +24,8 @@ mod sources;
 
 use std::path::Path;
 
-use super::{Check, Ctx, Level};
+use super::{Check, Ctx};
+use crate::diagnostic::Level;
 use crate::model::{Encoding, Node, NodeId, Origin, Span};
 use crate::validate::texturing::data_url;
 use crate::validate::texturing::files::{not_fetched, Resolution, Resolver};

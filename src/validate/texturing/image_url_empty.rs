@@ -1,6 +1,6 @@
 //! IMAGE_URL_EMPTY: an ImageTexture or MovieTexture without a url.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
