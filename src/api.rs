@@ -71,7 +71,7 @@ pub fn check(source: &[u8], options: &Options) -> Result<Report, Error> {
 
 /// Checks `source` as [`check`] does, into the SARIF 2.1.0 log `--format sarif` prints.
 pub fn check_sarif(source: &[u8], options: &Options) -> Result<String, Error> {
-    Ok(sarif::render(&check_reports(source, options)?))
+    Ok(sarif::render(&check_reports(source, options)?, &RULES))
 }
 
 fn check_reports(source: &[u8], options: &Options) -> Result<Vec<FileReport>, Error> {

@@ -32,6 +32,7 @@ use crate::model::MAX_INPUT_BYTES;
 use crate::report::{concise, github, human, json, junit, sarif, statistics};
 use crate::report::{FileReport, Summary};
 use crate::shard::Shard;
+use crate::validate::RULES;
 
 use color::{ColorChoice, ColorEnv};
 
@@ -518,14 +519,14 @@ impl ReportOutput<'_> {
                 text = statistics::render_json(&statistics::of(reports), reports)
             }
             (true, _) => {
-                text = statistics::render_text(&statistics::of(reports));
+                text = statistics::render_text(&statistics::of(reports), &RULES);
                 if self.summary {
                     text.push_str(&human::summary_line(&summary));
                     text.push('\n');
                 }
             }
             (false, Format::Json) => text = json::render(reports, self.shard),
-            (false, Format::Sarif) => text = sarif::render(reports),
+            (false, Format::Sarif) => text = sarif::render(reports, &RULES),
             (false, Format::Junit) => text = junit::render(reports, fail_levels),
             (false, Format::Github) => {}
             (false, Format::Human | Format::Concise) => {

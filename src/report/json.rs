@@ -12,10 +12,9 @@ use serde::{Deserialize, Serialize};
 
 use super::resolve::VRML97_GRAMMAR;
 use super::{FileReport, Related, Resolved, ResolvedEdit, ResolvedFix, Stats, Summary};
-use crate::diagnostic::{Applicability, Severity};
+use crate::diagnostic::{find_rule_in, Applicability, Rule, Severity};
 use crate::model::{Encoding, Span};
 use crate::shard::Shard;
-use crate::validate::find_rule;
 
 const TOOL: &str = "x3dcheck";
 const VERSION: &str = env!("CARGO_PKG_VERSION");
@@ -264,10 +263,10 @@ struct Header {
     statistics: Option<serde::de::IgnoredAny>,
 }
 
-/// Reads a report written by [`render`] of this version. Spans are not in the report:
-/// the diagnostics read have empty spans at 0, which the formats that need them (human,
-/// with the source) must not be given.
-pub fn read(text: &str) -> Result<ReadReport, ReadError> {
+/// Reads a report written by [`render`] of this version, whose codes are those of `rules`
+/// (the catalogue). Spans are not in the report: the diagnostics read have empty spans at
+/// 0, which the formats that need them (human, with the source) must not be given.
+pub fn read(text: &str, rules: &[&'static Rule]) -> Result<ReadReport, ReadError> {
     let header: Header = serde_json::from_str(text).map_err(|e| match e.classify() {
         serde_json::error::Category::Data => ReadError::NotReport,
         _ => ReadError::NotJson(e),
@@ -290,7 +289,7 @@ pub fn read(text: &str) -> Result<ReadReport, ReadError> {
     let files = report
         .files
         .into_iter()
-        .map(file_report)
+        .map(|file| file_report(file, rules))
         .collect::<Result<Vec<_>, _>>()?;
     if Summary::of(&files) != report.summary {
         return Err(ReadError::Inconsistent(
@@ -303,12 +302,12 @@ pub fn read(text: &str) -> Result<ReadReport, ReadError> {
     })
 }
 
-fn file_report(file: File) -> Result<FileReport, ReadError> {
+fn file_report(file: File, rules: &[&'static Rule]) -> Result<FileReport, ReadError> {
     let diagnostics = file
         .diagnostics
         .into_iter()
         .map(|d| {
-            let rule = find_rule(&d.code).ok_or_else(|| {
+            let rule = find_rule_in(rules, &d.code).ok_or_else(|| {
                 ReadError::Inconsistent(format!("{}: unknown code {}", file.path, d.code))
             })?;
             Ok(Resolved {
@@ -377,7 +376,7 @@ fn file_report(file: File) -> Result<FileReport, ReadError> {
 mod tests {
     use super::*;
     use crate::report::resolve;
-    use crate::validate::find_rule;
+    use crate::validate::{find_rule, RULES};
 
     fn report() -> FileReport {
         let source = b"<X3D>\n  <Scene>\n    <Shape/>\n  </Scene>\n</X3D>\n";
@@ -418,7 +417,7 @@ mod tests {
         let shard = Some(Shard::new(2, 3).unwrap());
         let text = render(&reports, shard);
         assert!(text.contains("\"related\": [") && text.contains("\"index\": 2"));
-        let read = read(&text).unwrap();
+        let read = read(&text, &RULES).unwrap();
         assert_eq!(read.shard, shard);
         assert_eq!(render(&read.files, shard), text);
         assert_eq!(read.files[0].diagnostics[0].related[0].line, 2);
@@ -427,7 +426,7 @@ mod tests {
     #[test]
     fn what_is_not_a_report_is_refused() {
         let text = render(&[report()], None);
-        let error = |text: &str| read(text).unwrap_err().to_string();
+        let error = |text: &str| read(text, &RULES).unwrap_err().to_string();
         assert!(error("{").starts_with("not JSON"), "{}", error("{"));
         assert!(error("[1]").starts_with("not an x3dcheck"));
         assert!(error("{\"version\": \"2.1.0\", \"runs\": []}").starts_with("not an x3dcheck"));
