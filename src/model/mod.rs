@@ -5,6 +5,7 @@
 
 pub mod bounds;
 pub mod builder;
+pub mod draft;
 pub mod faces;
 mod fields;
 mod header;
