@@ -20,6 +20,8 @@ mod geometry;
 #[cfg(feature = "render")]
 mod gpu;
 #[cfg(feature = "render")]
+mod mesh;
+#[cfg(feature = "render")]
 // Face and corner numbers index several parallel arrays at once.
 #[allow(clippy::needless_range_loop)]
 mod polygons;
