@@ -3,8 +3,8 @@
 
 use super::analysis::shape_pairs;
 use crate::diagnostic::{Diagnostic, Level};
+use crate::model::data_url;
 use crate::model::NodeId;
-use crate::validate::texturing::data_url;
 use crate::validate::texturing::files::{bytes_channels, file_channels, Resolution, Resolver};
 use crate::validate::Ctx;
 

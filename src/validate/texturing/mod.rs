@@ -1,6 +1,5 @@
 //! Texturing component (clause 18), RULES.md §5.
 
-pub(crate) mod data_url;
 pub(crate) mod files;
 pub mod image_format_unsupported;
 pub mod image_unreadable;
