@@ -26,18 +26,19 @@ use std::path::{Path, PathBuf};
 
 use serde::Serialize;
 
+use crate::batch::{self, codes, file_root, Batch};
 use crate::check::{check_source, check_too_large, STDIN_NAME};
-use crate::cli;
 use crate::config_file::{Resolver, Settings};
+use crate::diagnostic::Rule;
 use crate::library::Libraries;
 use crate::limits::MAX_INPUT_BYTES;
 use crate::read::{read_path, Contents};
 use crate::report::{sarif, FileReport};
-use crate::validate::{Rule, RULES};
+use crate::validate::RULES;
 
+pub use crate::diagnostic::{Level, Severity};
 pub use crate::report::json::{Diagnostic, Edit, File, Fix, RelatedPlace, Report};
 pub use crate::report::Summary;
-pub use crate::validate::{Level, Severity};
 
 /// What to check, as the command line's options say it. The default checks like
 /// `x3dcheck -` with no options.
@@ -70,7 +71,7 @@ pub fn check(source: &[u8], options: &Options) -> Result<Report, Error> {
 
 /// Checks `source` as [`check`] does, into the SARIF 2.1.0 log `--format sarif` prints.
 pub fn check_sarif(source: &[u8], options: &Options) -> Result<String, Error> {
-    Ok(sarif::render(&check_reports(source, options)?))
+    Ok(sarif::render(&check_reports(source, options)?, &RULES))
 }
 
 fn check_reports(source: &[u8], options: &Options) -> Result<Vec<FileReport>, Error> {
@@ -181,7 +182,7 @@ fn check_input(input: Input, options: &Options) -> Result<Vec<FileReport>, Error
     let mut effective = resolver
         .for_file(options.path.as_deref())
         .map_err(config_error)?;
-    effective.check.root = options.path.as_deref().map(cli::file_root);
+    effective.check.root = options.path.as_deref().map(file_root);
     effective.check.libraries = libraries.clone();
     // A panic in a rule is an internal failure of this check, as on the command line.
     let report = catch_unwind(AssertUnwindSafe(|| match input {
@@ -191,8 +192,15 @@ fn check_input(input: Input, options: &Options) -> Result<Vec<FileReport>, Error
     .map_err(|_| Error(format!("internal error while checking {name}")))?;
     let listed: Vec<PathBuf> = options.path.iter().cloned().collect();
     let mut files = vec![report];
-    for inlined in cli::check_inlined_files(&libraries, &listed, &mut resolver) {
-        files.push(inlined.map_err(Error)?);
+    // Reported as a run of one unsharded batch reports them; no text is written per file.
+    let batch = Batch {
+        libraries: &libraries,
+        listed: &listed,
+        shard: None,
+        text: &|_, _| String::new(),
+    };
+    for inlined in batch::check_inlined(&batch, &mut resolver) {
+        files.push(inlined.map_err(Error)?.report);
     }
     Ok(files)
 }
@@ -202,10 +210,10 @@ fn settings(options: &Options) -> Result<Settings, Error> {
     Ok(Settings {
         level: options.level,
         select: (!options.select.is_empty())
-            .then(|| cli::codes(&options.select, "select"))
+            .then(|| codes(&options.select, "select"))
             .transpose()
             .map_err(Error)?,
-        ignore: cli::codes(&options.ignore, "ignore").map_err(Error)?,
+        ignore: codes(&options.ignore, "ignore").map_err(Error)?,
         ..Settings::default()
     })
 }

@@ -5,7 +5,7 @@ use std::borrow::Cow;
 use std::path::Path;
 
 use crate::config::CheckConfig;
-use crate::diagnostic::Diagnostic;
+use crate::diagnostic::{Diagnostic, Level};
 use crate::library::Library;
 use crate::model::{Document, Encoding};
 use crate::parse;
@@ -14,7 +14,6 @@ use crate::parse::Progress;
 use crate::report::{resolve, FileReport, Stats};
 use crate::validate;
 use crate::validate::prototypes::externs::{self, Externs};
-use crate::validate::Level;
 
 /// The name standard input is reported under; such a document has no directory.
 pub const STDIN_NAME: &str = "<stdin>";

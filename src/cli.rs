@@ -7,7 +7,6 @@
 mod color;
 mod discover;
 mod generate;
-mod inlined;
 mod merge;
 mod progress;
 mod read;
@@ -23,15 +22,17 @@ use std::path::{Path, PathBuf};
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use rayon::prelude::*;
 
+use crate::batch::{self, codes};
 use crate::check::STDIN_NAME;
 use crate::config::CheckConfig;
-use crate::config_file::{select_codes, Effective, Resolver, Settings};
+use crate::config_file::{Effective, Resolver, Settings};
+use crate::diagnostic::{Level, Severity};
 use crate::fix;
 use crate::model::MAX_INPUT_BYTES;
 use crate::report::{concise, github, human, json, junit, sarif, statistics};
 use crate::report::{FileReport, Summary};
 use crate::shard::Shard;
-use crate::validate::{Level, Severity};
+use crate::validate::RULES;
 
 use color::{ColorChoice, ColorEnv};
 
@@ -273,7 +274,7 @@ fn check(args: &CheckArgs) -> Result<u8, String> {
             Input::Stdin => match &args.stdin_filename {
                 None => resolver.for_file(None),
                 Some(name) => resolver.for_file(Some(name)).map(|mut effective| {
-                    effective.check.root = Some(discover::file_root(name));
+                    effective.check.root = Some(batch::file_root(name));
                     effective
                 }),
             },
@@ -333,14 +334,18 @@ fn check(args: &CheckArgs) -> Result<u8, String> {
     progress.finish();
     // The files Inlines load that no input is: checked from the files read for the
     // Inlines, after the inputs.
-    let batch = inlined::Batch {
+    let inlined_shown = Presentation {
+        format: text_format,
+        color,
+        unsafe_fixes: false,
+    };
+    let batch = batch::Batch {
         libraries: &libraries,
         listed: &listed,
         shard: args.shard,
-        format: text_format,
-        color,
+        text: &|report, source| render_text(report, source, &(), inlined_shown),
     };
-    let inlined = pool.install(|| inlined::check_inlined(&batch, &mut resolver));
+    let inlined = pool.install(|| batch::check_inlined(&batch, &mut resolver));
 
     let mut reports = Vec::with_capacity(outcomes.len() + inlined.len());
     let mut fail_levels = Vec::with_capacity(outcomes.len());
@@ -514,14 +519,14 @@ impl ReportOutput<'_> {
                 text = statistics::render_json(&statistics::of(reports), reports)
             }
             (true, _) => {
-                text = statistics::render_text(&statistics::of(reports));
+                text = statistics::render_text(&statistics::of(reports), &RULES);
                 if self.summary {
                     text.push_str(&human::summary_line(&summary));
                     text.push('\n');
                 }
             }
             (false, Format::Json) => text = json::render(reports, self.shard),
-            (false, Format::Sarif) => text = sarif::render(reports),
+            (false, Format::Sarif) => text = sarif::render(reports, &RULES),
             (false, Format::Junit) => text = junit::render(reports, fail_levels),
             (false, Format::Github) => {}
             (false, Format::Human | Format::Concise) => {
@@ -593,38 +598,7 @@ fn settings(args: &CheckArgs) -> Result<Settings, String> {
     Ok(settings)
 }
 
-/// The codes `selectors` select, in order; an error names `option` and the selector that
-/// matches no code.
-pub(crate) fn codes<S: AsRef<str>>(selectors: &[S], option: &str) -> Result<Vec<String>, String> {
-    let mut codes = Vec::new();
-    for selector in selectors {
-        codes.extend(select_codes(selector.as_ref()).map_err(|e| format!("{option}: {e}"))?);
-    }
-    Ok(codes)
-}
-
-pub(crate) use discover::file_root;
 use discover::Input;
-
-/// The reports of the files Inlines loaded (through `libraries`) that `listed` does not
-/// hold, as a run of one unsharded batch adds them; Err for one not checked.
-pub(crate) fn check_inlined_files(
-    libraries: &crate::library::Libraries,
-    listed: &[PathBuf],
-    resolver: &mut Resolver,
-) -> Vec<Result<FileReport, String>> {
-    let batch = inlined::Batch {
-        libraries,
-        listed,
-        shard: None,
-        format: None,
-        color: false,
-    };
-    inlined::check_inlined(&batch, resolver)
-        .into_iter()
-        .map(|outcome| outcome.map(|inlined| inlined.report))
-        .collect()
-}
 
 fn input_name(input: &Input) -> String {
     match input {

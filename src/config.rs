@@ -3,7 +3,7 @@
 
 use std::collections::{HashMap, HashSet};
 
-use crate::validate::{Level, Rule, Severity};
+use crate::diagnostic::{Level, Rule, Severity};
 
 #[derive(Clone, Debug)]
 pub struct CheckConfig {

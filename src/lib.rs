@@ -8,6 +8,7 @@
 //! report as a typed value. [`cli::main`] is the command line itself.
 
 pub mod api;
+mod batch;
 pub mod check;
 pub mod cli;
 pub mod config;

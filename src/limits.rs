@@ -104,6 +104,16 @@ pub const MAX_IMAGE_SIDE: u32 = 16_384;
 /// Bytes one decoded image may take (the decoder's own allocation limit).
 pub const MAX_IMAGE_BYTES: u64 = 1 << 30;
 
+/// The decoder's limits: the header's size is checked against them before any pixel is
+/// decoded, so a small file claiming 100000×100000 pixels costs nothing.
+pub fn image_limits() -> image::Limits {
+    let mut limits = image::Limits::default();
+    limits.max_image_width = Some(MAX_IMAGE_SIDE);
+    limits.max_image_height = Some(MAX_IMAGE_SIDE);
+    limits.max_alloc = Some(MAX_IMAGE_BYTES);
+    limits
+}
+
 /// Corners of one polygon (IndexedFaceSet face, Extrusion cap) the renderer triangulates.
 /// Ear clipping (the `earcut` crate) is fast on real faces, but on an adversarial one
 /// (a star of thin spikes) its cost grows with the square of the corners: 10,000 take

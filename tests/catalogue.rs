@@ -4,7 +4,8 @@
 
 use std::path::Path;
 
-use x3dcheck::validate::{find_rule, Level, Severity};
+use x3dcheck::diagnostic::{Level, Severity};
+use x3dcheck::validate::find_rule;
 
 struct Entry {
     code: String,

@@ -5,7 +5,7 @@
 use std::path::Path;
 
 use x3dcheck::config::CheckConfig;
-use x3dcheck::validate::Level;
+use x3dcheck::diagnostic::Level;
 
 /// The message and clause of each finding of `code` in a fixture scene.
 fn cited(fixture: &str, code: &str) -> Vec<(String, String)> {

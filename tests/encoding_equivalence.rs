@@ -14,9 +14,9 @@ use std::path::{Path, PathBuf};
 
 use common::summary::{first_difference, Summary};
 use x3dcheck::config::CheckConfig;
+use x3dcheck::diagnostic::Level;
 use x3dcheck::model::Encoding;
 use x3dcheck::report::FileReport;
-use x3dcheck::validate::Level;
 
 fn scenes() -> Vec<PathBuf> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus/encodings");

@@ -10,9 +10,9 @@ use std::path::Path;
 
 use x3dcheck::check::{check_document, Checked};
 use x3dcheck::config::CheckConfig;
+use x3dcheck::diagnostic::Level;
 use x3dcheck::model::{Document, Value};
 use x3dcheck::report::{FileReport, Stats};
-use x3dcheck::validate::Level;
 
 /// The fast level as the CLI runs it without `--render`: values summarized.
 fn fast() -> CheckConfig {

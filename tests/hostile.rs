@@ -12,12 +12,12 @@ use std::time::{Duration, Instant, SystemTime};
 use common::{scratch, x3dcheck};
 use x3dcheck::check::{check_source, STDIN_NAME};
 use x3dcheck::config::CheckConfig;
+use x3dcheck::diagnostic::Level;
 use x3dcheck::limits::{
     MAX_DEPTH, MAX_DIAGNOSTICS, MAX_ENTITY_EXPANSION, MAX_FIELDS_PER_NODE, MAX_FIELD_VALUES,
     MAX_IMAGE_SIDE, MAX_NODES,
 };
 use x3dcheck::report::FileReport;
-use x3dcheck::validate::Level;
 
 /// Far above what these inputs take when all is well (a few hundred milliseconds): a guard
 /// against hangs and blow-ups, not a timing test (20 s tripped once at a load average of 9).

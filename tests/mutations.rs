@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use x3dcheck::config::CheckConfig;
-use x3dcheck::validate::Level;
+use x3dcheck::diagnostic::Level;
 
 /// Every n-th corpus file (sorted by path), to keep the test to seconds.
 const SAMPLE_EVERY: usize = 12;

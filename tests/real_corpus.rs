@@ -7,7 +7,7 @@ use common::corpus_files;
 use std::time::{Duration, Instant};
 
 use x3dcheck::config::CheckConfig;
-use x3dcheck::validate::Level;
+use x3dcheck::diagnostic::Level;
 
 /// Generous: the largest corpus file takes milliseconds; this only catches hangs.
 const MAX_SECONDS_PER_FILE: u64 = 20;

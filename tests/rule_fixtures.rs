@@ -7,7 +7,8 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 use x3dcheck::config::CheckConfig;
-use x3dcheck::validate::{Level, Severity, RULES};
+use x3dcheck::diagnostic::{Level, Severity};
+use x3dcheck::validate::RULES;
 
 const DOC_SECTIONS: [&str; 4] = [
     "## What it does",

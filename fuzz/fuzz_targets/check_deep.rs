@@ -9,7 +9,7 @@ use std::sync::OnceLock;
 
 use libfuzzer_sys::fuzz_target;
 use x3dcheck::config::CheckConfig;
-use x3dcheck::validate::Level;
+use x3dcheck::diagnostic::Level;
 
 /// Smallest valid images of each decoded format, 1×1 pixel.
 const PNG_1X1: &[u8] = &[

@@ -19,6 +19,7 @@ use std::path::{Path, PathBuf};
 
 use ignore::WalkBuilder;
 
+use crate::batch::file_root;
 use crate::config_file::glob::Glob;
 use crate::config_file::Resolver;
 use crate::parse::decode::GZIP_MAGIC;
@@ -142,20 +143,6 @@ fn first_time(seen: &mut HashSet<super::FileId>, path: &Path) -> bool {
     match super::file_id(path) {
         Ok(id) => seen.insert(id),
         Err(_) => true, // Reported when it is read.
-    }
-}
-
-/// The tree a file named on the command line may read references from: the current
-/// directory when the file lies in it (textures in a sibling `../textures` folder are
-/// common), else the file's own directory. A directory argument is its own root.
-pub(crate) fn file_root(file: &Path) -> PathBuf {
-    let directory = file
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    match (std::env::current_dir(), directory.canonicalize()) {
-        (Ok(current), Ok(directory)) if directory.starts_with(&current) => current,
-        _ => directory.to_path_buf(),
     }
 }
 

@@ -23,6 +23,7 @@ use clap::Args;
 use crate::report::json::{self, ReadReport};
 use crate::report::{concise, github, FileReport};
 use crate::shard::Shard;
+use crate::validate::RULES;
 
 use super::{check_statistics_format, fail_level, read_file, FailOn, Format, ReportOutput};
 
@@ -61,7 +62,7 @@ pub fn merge(args: &MergeArgs) -> Result<u8, String> {
         let bytes = read_file(path)?;
         let text = std::str::from_utf8(&bytes)
             .map_err(|e| format!("{}: not UTF-8 text: {e}", path.display()))?;
-        let report = json::read(text).map_err(|e| format!("{}: {e}", path.display()))?;
+        let report = json::read(text, &RULES).map_err(|e| format!("{}: {e}", path.display()))?;
         inputs.push((path.as_path(), report));
     }
     check_split(&inputs)?;

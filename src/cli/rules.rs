@@ -4,7 +4,8 @@
 
 use crate::api::RuleInfo;
 use crate::config_file::select;
-use crate::validate::{Rule, RULES};
+use crate::diagnostic::Rule;
+use crate::validate::RULES;
 use clap::{Args, ValueEnum};
 
 #[derive(Args, Debug)]

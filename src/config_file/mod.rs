@@ -52,7 +52,8 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use crate::config::CheckConfig;
-use crate::validate::{suggest, Level, Severity};
+use crate::diagnostic::{Level, Severity};
+use crate::validate::suggest;
 use glob::Glob;
 pub use selector::{select, select_codes};
 

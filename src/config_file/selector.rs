@@ -5,7 +5,8 @@
 //! it also begins longer codes (add `_` to mean the family). A selector that matches no code
 //! is an error naming the nearest code.
 
-use crate::validate::{find_rule, Rule, RULES};
+use crate::diagnostic::Rule;
+use crate::validate::{find_rule, RULES};
 
 /// The rules `selector` selects, in catalogue order; never empty.
 pub fn select(selector: &str) -> Result<Vec<&'static Rule>, String> {

@@ -10,7 +10,7 @@ mod rule;
 
 pub use finding::Diagnostic;
 pub use fix::{Applicability, Edit, Fix};
-pub use rule::{Level, Rule, Severity};
+pub use rule::{find_rule_in, Level, Rule, Severity};
 
 /// A byte range in the input. Line and column are computed only for reported diagnostics.
 #[derive(Copy, Clone, Debug, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]

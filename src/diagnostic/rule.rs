@@ -94,6 +94,12 @@ impl Rule {
     }
 }
 
+/// The rule of `code` among `rules`: the catalogue, which the registry in
+/// [`crate::validate`] holds and hands to those below it that print rules (the formats).
+pub fn find_rule_in(rules: &[&'static Rule], code: &str) -> Option<&'static Rule> {
+    rules.iter().copied().find(|rule| rule.code == code)
+}
+
 /// Abbreviations whose full stop ends no sentence (compared without case).
 const ABBREVIATIONS: &[&str] = &["e.g", "i.e", "etc", "cf", "vs", "approx", "resp"];
 

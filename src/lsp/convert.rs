@@ -12,9 +12,9 @@ use lsp_types::{
 };
 
 use super::position::Lines;
-use crate::diagnostic::Applicability;
+use crate::diagnostic::{Applicability, Rule, Severity};
 use crate::report::Resolved;
-use crate::validate::{find_rule, Rule, Severity};
+use crate::validate::find_rule;
 
 /// Where a rule's documentation is linked from a diagnostic (`codeDescription.href`).
 /// By default each rule's doc (the text `x3dcheck rules CODE` prints) is written once to

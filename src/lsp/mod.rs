@@ -38,9 +38,9 @@ use lsp_types::{
 use serde::de::DeserializeOwned;
 
 use crate::config_file::Settings;
+use crate::diagnostic::Level;
 use crate::model::Document;
 use crate::report::FileReport;
-use crate::validate::Level;
 use position::{Lines, Units};
 use worker::{Job, Worker};
 

@@ -2,12 +2,11 @@
 //! names and their scopes, USE resolution, node-type and field lookup across versions, and
 //! the diagnostics of those steps exist once.
 
-use super::rules::{
-    DEF_DUPLICATE, FIELD_DUPLICATE, LIMIT_EXCEEDED, USE_CYCLE, USE_TYPE_MISMATCH, USE_UNDEFINED,
-};
+use super::draft::{Draft, Limit};
+use super::rules::{DEF_DUPLICATE, FIELD_DUPLICATE, USE_CYCLE, USE_TYPE_MISMATCH, USE_UNDEFINED};
 use super::*;
 use crate::diagnostic::{Diagnostic, Severity};
-use crate::schema::{self, Version};
+use crate::schema::Version;
 
 /// Where a node being added goes.
 #[derive(Copy, Clone, Debug)]
@@ -26,156 +25,71 @@ pub enum Parent<'a> {
 }
 
 pub struct Builder {
-    doc: Document,
-    diagnostics: Vec<Diagnostic>,
+    /// The document and the findings so far.
+    draft: Draft,
     /// The scope new nodes and DEFs go in: the scene, or the innermost open ProtoBody.
     scopes: Vec<Scope>,
     /// Nodes whose element is still open, innermost last: a USE of one of them is a cycle.
     open: Vec<NodeId>,
-    /// The limits already reported: each is reported once per document.
-    reported: Vec<Limit>,
 }
 
 /// The deepest chain of nodes (through USE too) the model holds.
 pub use crate::limits::MAX_DEPTH;
-use crate::limits::{MAX_DIAGNOSTICS, MAX_FIELDS_PER_NODE, MAX_FIELD_VALUES, MAX_NODES};
-
-/// A limit of [`crate::limits`] the builder enforces.
-#[derive(Copy, Clone, PartialEq, Eq, Debug)]
-pub enum Limit {
-    Depth,
-    Nodes,
-    FieldsPerNode,
-    FieldValues,
-    Diagnostics,
-    /// Found by the XML reader: entities declared in the DOCTYPE expand too far.
-    EntityExpansion,
-    /// Instantiating prototypes copies too much or nests too deep.
-    Instances,
-}
+use crate::limits::{MAX_FIELDS_PER_NODE, MAX_FIELD_VALUES, MAX_NODES};
 
 impl Builder {
     pub fn new(encoding: Encoding) -> Builder {
         Builder {
-            doc: Document::new(encoding),
-            diagnostics: Vec::new(),
+            draft: Draft::new(encoding),
             scopes: vec![Scope::Scene],
             open: Vec::new(),
-            reported: Vec::new(),
         }
     }
 
     pub fn doc(&self) -> &Document {
-        &self.doc
+        self.draft.doc()
     }
 
     pub fn doc_mut(&mut self) -> &mut Document {
-        &mut self.doc
+        self.draft.doc_mut()
     }
 
-    /// Keeps a finding; past [`MAX_DIAGNOSTICS`] they are dropped (and that is reported).
+    /// Keeps a finding, as [`Draft::report`] does.
     pub fn report(&mut self, diagnostic: Diagnostic) {
-        if self.diagnostics.len() < MAX_DIAGNOSTICS {
-            self.diagnostics.push(diagnostic);
-        } else {
-            let message = format!(
-                "more than {MAX_DIAGNOSTICS} findings while reading this document; the rest are not reported"
-            );
-            self.exceeded(Limit::Diagnostics, diagnostic.span, message);
-        }
+        self.draft.report(diagnostic);
     }
 
     /// Reports a limit of [`crate::limits`] at `span`, once per document and kind.
     pub fn exceeded(&mut self, limit: Limit, span: Span, message: String) {
-        if !self.reported.contains(&limit) {
-            self.reported.push(limit);
-            self.diagnostics
-                .push(Diagnostic::new(&LIMIT_EXCEEDED, span, message));
-        }
+        self.draft.exceeded(limit, span, message);
     }
 
     /// The version whose schema applies (set the document's version first).
     pub fn version(&self) -> Version {
-        self.doc.schema_version()
+        self.draft.version()
+    }
+
+    /// What a node type name means, as [`Draft::node_kind`] tells.
+    pub fn node_kind(&self, name: &str) -> NodeKind {
+        self.draft.node_kind(name)
+    }
+
+    /// What a field name means on a node, as [`Draft::field_ref`] tells.
+    pub fn field_ref(&self, node: NodeId, name: &str) -> FieldRef {
+        self.draft.field_ref(node, name)
     }
 
     fn scope(&self) -> Scope {
         *self.scopes.last().expect("the scene scope is never popped")
     }
 
-    /// What a node type name means: the document version's type, another version's, or none.
-    pub fn node_kind(&self, name: &str) -> NodeKind {
-        let version = self.version();
-        if let Some(def) = schema::schema(version).node(name) {
-            return NodeKind::Known { def, version };
-        }
-        // Newest first, so that a 3.x document using a 4.x node gets the 4.x definition.
-        for other in Version::ALL.into_iter().rev() {
-            if let Some(def) = schema::schema(other).node(name) {
-                return NodeKind::Known {
-                    def,
-                    version: other,
-                };
-            }
-        }
-        NodeKind::Unknown {
-            name: name.to_string(),
-        }
-    }
-
-    /// What a field name means on a node: a field the node declares itself (Script,
-    /// shaders), its type's field in the document's version, the same type's field in
-    /// another version, a field declared by its ProtoDeclare, or none.
-    pub fn field_ref(&self, node: NodeId, name: &str) -> FieldRef {
-        let declared = &self.doc.node(node).declared;
-        if let Some(decl) = declared.iter().find(|d| d.name.text == name) {
-            return FieldRef::Declared {
-                name: name.to_string(),
-                ty: decl.ty,
-            };
-        }
-        match &self.doc.node(node).kind {
-            NodeKind::Known { def, .. } => {
-                let version = self.version();
-                let in_version = schema::schema(version).node(def.name);
-                if let Some(field) = in_version.and_then(|d| d.field(name)) {
-                    return FieldRef::Schema {
-                        def: field,
-                        version,
-                    };
-                }
-                for other in Version::ALL.into_iter().rev() {
-                    let node_def = schema::schema(other).node(def.name);
-                    if let Some(field) = node_def.and_then(|d| d.field(name)) {
-                        return FieldRef::Schema {
-                            def: field,
-                            version: other,
-                        };
-                    }
-                }
-            }
-            NodeKind::ProtoInstance { proto, .. } => {
-                let declared = proto.and_then(|p| {
-                    self.doc.protos[p]
-                        .interface
-                        .iter()
-                        .find(|f| f.name.text == name)
-                });
-                return FieldRef::Declared {
-                    name: name.to_string(),
-                    ty: declared.and_then(|f| f.ty),
-                };
-            }
-            NodeKind::Unknown { .. } => {}
-        }
-        FieldRef::Unknown {
-            name: name.to_string(),
-        }
-    }
-
     /// The ProtoDeclare or ExternProtoDeclare of that name visible here, if any.
     pub fn find_proto(&self, name: &str) -> Option<usize> {
-        self.doc.protos.iter().rposition(|p| p.name.text == name)
+        self.draft
+            .doc
+            .protos
+            .iter()
+            .rposition(|p| p.name.text == name)
     }
 
     /// Adds a new node under `parent` and opens it; close it with [`Builder::end_node`].
@@ -191,13 +105,13 @@ impl Builder {
             self.too_deep(name_span);
             return None;
         }
-        if self.doc.nodes.len() >= MAX_NODES {
+        if self.draft.doc.nodes.len() >= MAX_NODES {
             let message =
                 format!("the document has more than {MAX_NODES} nodes; the rest are not read");
             self.exceeded(Limit::Nodes, name_span, message);
             return None;
         }
-        let id = NodeId(self.doc.nodes.len() as u32);
+        let id = NodeId(self.draft.doc.nodes.len() as u32);
         let span = Span {
             start: name_span.start,
             end: name_span.end,
@@ -210,7 +124,7 @@ impl Builder {
                 is_use: false,
             },
         )?;
-        self.doc.nodes.push(Node {
+        self.draft.doc.nodes.push(Node {
             kind,
             span,
             name_span,
@@ -239,7 +153,7 @@ impl Builder {
 
     /// Whether `node` may get one more field; reports the limit when not.
     fn has_room_for_field(&mut self, node: NodeId, span: Span) -> bool {
-        if self.doc.nodes[node.index()].fields.len() < MAX_FIELDS_PER_NODE {
+        if self.draft.doc.nodes[node.index()].fields.len() < MAX_FIELDS_PER_NODE {
             return true;
         }
         let message =
@@ -255,32 +169,32 @@ impl Builder {
         // Every child is closed by now (a USE names an earlier, closed node), so the
         // height and the instance count below this node are final.
         let (mut height, mut instances) = (0u32, 1u64);
-        for child in self.doc.nodes[id.index()]
+        for child in self.draft.doc.nodes[id.index()]
             .fields
             .iter()
             .filter_map(|f| f.value.as_nodes())
             .flatten()
         {
-            let child = &self.doc.nodes[child.node.index()];
+            let child = &self.draft.doc.nodes[child.node.index()];
             height = height.max(child.height + 1);
             instances = instances.saturating_add(child.instances);
         }
-        let node = &mut self.doc.nodes[id.index()];
+        let node = &mut self.draft.doc.nodes[id.index()];
         node.height = height;
         node.instances = instances;
         node.span = span;
         // The reference in the parent was made at the start tag; give it the whole span.
         let siblings: &mut [ChildRef] = match node.place {
-            Place::Scene => &mut self.doc.scene,
-            Place::ProtoBody { proto } => &mut self.doc.protos[proto].body,
+            Place::Scene => &mut self.draft.doc.scene,
+            Place::ProtoBody { proto } => &mut self.draft.doc.protos[proto].body,
             Place::ProtoField { proto, field } => {
-                match &mut self.doc.protos[proto].interface[field as usize].value {
+                match &mut self.draft.doc.protos[proto].interface[field as usize].value {
                     Some((Value::Nodes(children), _)) => children,
                     _ => &mut [],
                 }
             }
             Place::Field { parent, entry } => {
-                match &mut self.doc.nodes[parent.index()].fields[entry as usize].value {
+                match &mut self.draft.doc.nodes[parent.index()].fields[entry as usize].value {
                     Value::Nodes(children) => children,
                     _ => &mut [],
                 }
@@ -302,9 +216,9 @@ impl Builder {
     /// since a USE there names the most recent DEF (14772-1 4.6.2).
     pub fn define(&mut self, id: NodeId, name: Named) {
         let key = (self.scope(), name.text.clone());
-        if let Some(&first) = self.doc.defs.get(&key) {
-            let vrml97 = self.doc.encoding == Encoding::Vrml97;
-            let first_span = self.doc.node(first).def_name.as_ref().map(|d| d.span);
+        if let Some(&first) = self.draft.doc.defs.get(&key) {
+            let vrml97 = self.draft.doc.encoding == Encoding::Vrml97;
+            let first_span = self.draft.doc.node(first).def_name.as_ref().map(|d| d.span);
             let mut diagnostic = if vrml97 {
                 Diagnostic::new(
                     &DEF_DUPLICATE,
@@ -329,12 +243,12 @@ impl Builder {
             }
             self.report(diagnostic);
             if vrml97 {
-                self.doc.defs.insert(key, id);
+                self.draft.doc.defs.insert(key, id);
             }
         } else {
-            self.doc.defs.insert(key, id);
+            self.draft.doc.defs.insert(key, id);
         }
-        self.doc.nodes[id.index()].def_name = Some(name);
+        self.draft.doc.nodes[id.index()].def_name = Some(name);
     }
 
     /// Adds a `USE` of a DEF'd node under `parent`. `element_type` is the node type the
@@ -346,8 +260,8 @@ impl Builder {
         site: Span,
         parent: Parent,
     ) -> Option<NodeId> {
-        let Some(&target) = self.doc.defs.get(&(self.scope(), name.text.clone())) else {
-            let in_other_scope = self.doc.defs.keys().any(|(_, n)| *n == name.text);
+        let Some(&target) = self.draft.doc.defs.get(&(self.scope(), name.text.clone())) else {
+            let in_other_scope = self.draft.doc.defs.keys().any(|(_, n)| *n == name.text);
             let diagnostic = Diagnostic::new(
                 &USE_UNDEFINED,
                 name.span,
@@ -386,11 +300,11 @@ impl Builder {
             );
             return None;
         }
-        if self.open.len() + 1 + self.doc.node(target).height as usize > MAX_DEPTH {
+        if self.open.len() + 1 + self.draft.doc.node(target).height as usize > MAX_DEPTH {
             self.too_deep(name.span);
             return None;
         }
-        let target_type = self.doc.node(target).type_name().to_string();
+        let target_type = self.draft.doc.node(target).type_name().to_string();
         if let Some(element_type) = element_type {
             if element_type != target_type {
                 self.report(
@@ -424,16 +338,16 @@ impl Builder {
         let place = match parent {
             Parent::TopLevel => match self.scope() {
                 Scope::Scene => {
-                    self.doc.scene.push(child);
+                    self.draft.doc.scene.push(child);
                     Place::Scene
                 }
                 Scope::Proto(proto) => {
-                    self.doc.protos[proto].body.push(child);
+                    self.draft.doc.protos[proto].body.push(child);
                     Place::ProtoBody { proto }
                 }
             },
             Parent::ProtoField { proto, field } => {
-                let interface = &mut self.doc.protos[proto].interface;
+                let interface = &mut self.draft.doc.protos[proto].interface;
                 let index = match interface.iter().rposition(|f| f.name.text == field) {
                     Some(index) => index,
                     None => return Some(Place::Scene),
@@ -460,7 +374,7 @@ impl Builder {
             } => {
                 let entry = self.node_field_entry(node, field, field_span, origin, child.span)?;
                 if let Value::Nodes(children) =
-                    &mut self.doc.nodes[node.index()].fields[entry].value
+                    &mut self.draft.doc.nodes[node.index()].fields[entry].value
                 {
                     children.push(child);
                 }
@@ -482,7 +396,7 @@ impl Builder {
         origin: Origin,
         first_child: Span,
     ) -> Option<usize> {
-        let fields = &self.doc.nodes[node.index()].fields;
+        let fields = &self.draft.doc.nodes[node.index()].fields;
         if let Some(i) = fields.iter().position(|e| {
             e.name() == field && matches!(e.value, Value::Nodes(_)) && e.origin == origin
         }) {
@@ -491,7 +405,7 @@ impl Builder {
         if !self.has_room_for_field(node, field_span) {
             return None;
         }
-        let fields = &self.doc.nodes[node.index()].fields;
+        let fields = &self.draft.doc.nodes[node.index()].fields;
         if let Some(first) = fields.iter().find(|e| e.name() == field) {
             let diagnostic = Diagnostic::new(
                 &FIELD_DUPLICATE,
@@ -503,7 +417,7 @@ impl Builder {
             self.report(diagnostic);
         }
         let field_ref = self.field_ref(node, field);
-        let fields = &mut self.doc.nodes[node.index()].fields;
+        let fields = &mut self.draft.doc.nodes[node.index()].fields;
         fields.push(FieldEntry {
             field: field_ref,
             name_span: field_span,
@@ -530,7 +444,7 @@ impl Builder {
         if !self.has_room_for_field(node, entry.name_span) {
             return;
         }
-        let fields = &self.doc.nodes[node.index()].fields;
+        let fields = &self.draft.doc.nodes[node.index()].fields;
         if let Some(first) = fields.iter().find(|f| f.name() == entry.name()) {
             let diagnostic = Diagnostic::new(
                 &FIELD_DUPLICATE,
@@ -545,14 +459,14 @@ impl Builder {
             self.report(diagnostic);
             return;
         }
-        self.doc.nodes[node.index()].fields.push(entry);
+        self.draft.doc.nodes[node.index()].fields.push(entry);
     }
 
     /// Starts a ProtoDeclare or ExternProtoDeclare in the current scope; its index names it.
     pub fn declare_proto(&mut self, mut proto: ProtoDecl) -> usize {
         proto.scope = self.scope();
-        self.doc.protos.push(proto);
-        self.doc.protos.len() - 1
+        self.draft.doc.protos.push(proto);
+        self.draft.doc.protos.len() - 1
     }
 
     /// Opens a ProtoBody: a DEF name scope of its own.
@@ -569,28 +483,29 @@ impl Builder {
     /// Adds a ROUTE in the current scope.
     pub fn add_route(&mut self, mut route: Route) {
         route.scope = self.scope();
-        if self.doc.encoding == Encoding::Vrml97 {
+        if self.draft.doc.encoding == Encoding::Vrml97 {
             let bound = |name: &Named| {
-                self.doc
+                self.draft
+                    .doc
                     .defs
                     .get(&(route.scope, name.text.clone()))
                     .copied()
             };
             route.vrml97_ends = Some([bound(&route.from_node), bound(&route.to_node)]);
         }
-        self.doc.routes.push(route);
+        self.draft.doc.routes.push(route);
     }
 
     /// Adds an IMPORT statement in the current scope.
     pub fn add_import(&mut self, mut import: Import) {
         import.scope = self.scope();
-        self.doc.imports.push(import);
+        self.draft.doc.imports.push(import);
     }
 
     /// Adds an EXPORT statement in the current scope.
     pub fn add_export(&mut self, mut export: Export) {
         export.scope = self.scope();
-        self.doc.exports.push(export);
+        self.draft.doc.exports.push(export);
     }
 
     /// The nodes still open, innermost last (for readers that stop early on bad input).
@@ -601,22 +516,8 @@ impl Builder {
     /// The document, with its prototype instances instantiated, and the findings.
     pub fn finish(mut self) -> (Document, Vec<Diagnostic>) {
         let none = super::instantiate::ExternalPrototypes::default();
-        super::instantiate::instantiate_all(&mut self, &none);
-        (self.doc, self.diagnostics)
-    }
-
-    /// A builder around a finished document, to instantiate its prototypes again (with
-    /// external prototypes resolved).
-    pub(super) fn resume(doc: Document) -> Builder {
-        Builder {
-            doc,
-            ..Builder::new(Encoding::Xml)
-        }
-    }
-
-    /// The document and the findings, with nothing more done.
-    pub(super) fn into_parts(self) -> (Document, Vec<Diagnostic>) {
-        (self.doc, self.diagnostics)
+        super::instantiate::instantiate_all(&mut self.draft, &none);
+        self.draft.into_parts()
     }
 }
 

@@ -28,7 +28,7 @@
 use std::collections::HashMap;
 use std::path::PathBuf;
 
-use super::builder::{Builder, Limit};
+use super::draft::{Draft, Limit};
 use super::*;
 use crate::diagnostic::Diagnostic;
 use crate::limits::{
@@ -93,16 +93,16 @@ pub fn instantiate_with(
     for node in &mut doc.nodes {
         node.instantiation = None;
     }
-    let mut builder = Builder::resume(doc);
-    instantiate_all(&mut builder, externals);
-    builder.into_parts()
+    let mut draft = Draft::of(doc);
+    instantiate_all(&mut draft, externals);
+    draft.into_parts()
 }
 
 /// Instantiates every ProtoInstance of a ProtoDeclare the document holds, and of an
 /// ExternProtoDeclare `externals` resolves.
-pub(super) fn instantiate_all(builder: &mut Builder, externals: &ExternalPrototypes) {
-    let written = builder.doc().nodes.len();
-    let doc = builder.doc();
+pub(super) fn instantiate_all(draft: &mut Draft, externals: &ExternalPrototypes) {
+    let written = draft.doc().nodes.len();
+    let doc = draft.doc();
     let mut instanced = vec![false; doc.protos.len()];
     for node in &doc.nodes {
         if let NodeKind::ProtoInstance { proto: Some(p), .. } = node.kind {
@@ -131,20 +131,20 @@ pub(super) fn instantiate_all(builder: &mut Builder, externals: &ExternalPrototy
     };
     for index in 0..written {
         let id = NodeId(index as u32);
-        let node = builder.doc().node(id);
+        let node = draft.doc().node(id);
         if !matches!(node.kind, NodeKind::ProtoInstance { proto: Some(_), .. }) {
             continue;
         }
         // A body instance that takes values through IS is instantiated with each copy of
         // it that its own prototype's instances make, not as written.
         if let Scope::Proto(outer) = node.scope {
-            if instanced[outer] && state.needs(builder.doc(), id) {
+            if instanced[outer] && state.needs(draft.doc(), id) {
                 continue;
             }
         }
-        state.instantiate(builder, id, 0);
+        state.instantiate(draft, id, 0);
     }
-    let doc = builder.doc_mut();
+    let doc = draft.doc_mut();
     doc.copies = doc.nodes.len() - written;
 }
 
@@ -200,8 +200,8 @@ impl State<'_> {
         needs
     }
 
-    fn instantiate(&mut self, builder: &mut Builder, instance: NodeId, depth: usize) {
-        let doc = builder.doc();
+    fn instantiate(&mut self, draft: &mut Draft, instance: NodeId, depth: usize) {
+        let doc = draft.doc();
         let NodeKind::ProtoInstance { proto: Some(p), .. } = doc.node(instance).kind else {
             return;
         };
@@ -210,17 +210,17 @@ impl State<'_> {
             match self.externals.resolve(0, p) {
                 Some((0, q)) if doc.protos.get(q).is_some_and(|q| !q.external) => p = q,
                 Some((file, q)) if file > 0 => {
-                    return self.import(builder, instance, (file, q), Some(p), depth)
+                    return self.import(draft, instance, (file, q), Some(p), depth)
                 }
                 _ => return,
             }
         }
         // A prototype instantiated inside its own instantiation is a cycle (PROTO_CYCLE):
         // it builds nothing.
-        if self.stopped || self.open.contains(&(0, p)) || self.too_deep(builder, instance, depth) {
+        if self.stopped || self.open.contains(&(0, p)) || self.too_deep(draft, instance, depth) {
             return;
         }
-        let doc = builder.doc();
+        let doc = draft.doc();
         let node = doc.node(instance);
         let proto = &doc.protos[p];
         let values: Vec<Option<Value>> = proto
@@ -240,7 +240,7 @@ impl State<'_> {
             values.iter().map(|v| v.as_ref().map(key_of)).collect(),
         );
         let body = proto.body.clone();
-        if self.share(builder, instance, &key) {
+        if self.share(draft, instance, &key) {
             return;
         }
         self.open.push((0, p));
@@ -254,31 +254,31 @@ impl State<'_> {
                 instance,
                 depth,
             };
-            roots.push(copy.child(self, builder, &mut copies, root, place));
+            roots.push(copy.child(self, draft, &mut copies, root, place));
         }
         self.open.pop();
-        self.record(builder, instance, Some(p), roots, key);
+        self.record(draft, instance, Some(p), roots, key);
     }
 
     /// Whether nesting at `depth` is past [`MAX_PROTO_NESTING`] (reported once).
-    fn too_deep(&mut self, builder: &mut Builder, instance: NodeId, depth: usize) -> bool {
+    fn too_deep(&mut self, draft: &mut Draft, instance: NodeId, depth: usize) -> bool {
         if depth < MAX_PROTO_NESTING {
             return false;
         }
         let message = format!(
             "{NESTED_TOO_DEEP} {MAX_PROTO_NESTING} levels here; deeper ones are checked as written"
         );
-        let span = builder.doc().node(instance).name_span;
-        builder.exceeded(Limit::Instances, span, message);
+        let span = draft.doc().node(instance).name_span;
+        draft.exceeded(Limit::Instances, span, message);
         true
     }
 
     /// Shares the instantiation made with the same values, if there is one.
-    fn share(&mut self, builder: &mut Builder, instance: NodeId, key: &MemoKey) -> bool {
+    fn share(&mut self, draft: &mut Draft, instance: NodeId, key: &MemoKey) -> bool {
         let Some(&shared) = self.memo.get(key) else {
             return false;
         };
-        let doc = builder.doc_mut();
+        let doc = draft.doc_mut();
         doc.nodes[instance.index()].instantiation = Some(shared);
         let shared = &mut doc.instantiations[shared as usize];
         shared.count = shared.count.saturating_add(1);
@@ -287,13 +287,13 @@ impl State<'_> {
 
     fn record(
         &mut self,
-        builder: &mut Builder,
+        draft: &mut Draft,
         instance: NodeId,
         proto: Option<usize>,
         roots: Vec<ChildRef>,
         key: MemoKey,
     ) {
-        let doc = builder.doc_mut();
+        let doc = draft.doc_mut();
         let index = doc.instantiations.len() as u32;
         doc.instantiations.push(Instantiation {
             proto,
@@ -306,7 +306,7 @@ impl State<'_> {
     }
 
     /// Whether one more node of `cost` values may be copied; reports the limit when not.
-    fn room_for(&mut self, builder: &mut Builder, instance: NodeId, cost: usize) -> bool {
+    fn room_for(&mut self, draft: &mut Draft, instance: NodeId, cost: usize) -> bool {
         if self.stopped {
             return false;
         }
@@ -316,8 +316,8 @@ impl State<'_> {
                 "{TOO_MANY_COPIES} {} nodes or {MAX_INSTANCE_VALUES} values; the rest are checked as written",
                 self.budget
             );
-            let span = builder.doc().node(instance).name_span;
-            builder.exceeded(Limit::Instances, span, message);
+            let span = draft.doc().node(instance).name_span;
+            draft.exceeded(Limit::Instances, span, message);
             return false;
         }
         self.nodes += 1;
@@ -330,7 +330,7 @@ impl State<'_> {
     /// instance of (None for an instance inside a library body).
     fn import(
         &mut self,
-        builder: &mut Builder,
+        draft: &mut Draft,
         instance: NodeId,
         key: ProtoKey,
         proto: Option<usize>,
@@ -343,12 +343,12 @@ impl State<'_> {
         else {
             return;
         };
-        if self.stopped || self.open.contains(&key) || self.too_deep(builder, instance, depth) {
+        if self.stopped || self.open.contains(&key) || self.too_deep(draft, instance, depth) {
             return;
         }
         // The instance's fieldValue, else the ProtoDeclare's default: an
         // ExternProtoDeclare's interface gives no initial values (4.4.5.2).
-        let node = builder.doc().node(instance);
+        let node = draft.doc().node(instance);
         let given: Vec<Option<Value>> = decl
             .interface
             .iter()
@@ -364,7 +364,7 @@ impl State<'_> {
             .map(|v| Some(v.as_ref().map_or_else(String::new, |v| key_of(v) + "=")))
             .collect();
         let memo_key = (key, memo_values);
-        if self.share(builder, instance, &memo_key) {
+        if self.share(draft, instance, &memo_key) {
             return;
         }
         self.open.push(key);
@@ -374,7 +374,7 @@ impl State<'_> {
             proto: key.1,
             instance,
             depth,
-            body: self.body(builder, key),
+            body: self.body(draft, key),
             values: Vec::new(),
         };
         // A default of node type is the library's nodes: copied too.
@@ -388,7 +388,7 @@ impl State<'_> {
                 let place = Place::Instance { instance };
                 let copied = nodes
                     .iter()
-                    .filter_map(|&c| importer.copy(self, builder, &mut copies, c, place))
+                    .filter_map(|&c| importer.copy(self, draft, &mut copies, c, place))
                     .collect();
                 Some(Value::Nodes(copied))
             });
@@ -400,16 +400,16 @@ impl State<'_> {
             .iter()
             .filter_map(|&root| {
                 let place = Place::Instance { instance };
-                importer.copy(self, builder, &mut copies, root, place)
+                importer.copy(self, draft, &mut copies, root, place)
             })
             .collect();
         self.open.pop();
-        self.record(builder, instance, proto, roots, memo_key);
+        self.record(draft, instance, proto, roots, memo_key);
     }
 
     /// `` `Name` in file ``, as notes name a library body: its index in
     /// `Document::library_bodies`.
-    fn body(&mut self, builder: &mut Builder, key: ProtoKey) -> u32 {
+    fn body(&mut self, draft: &mut Draft, key: ProtoKey) -> u32 {
         if let Some(&index) = self.bodies.get(&key) {
             return index;
         }
@@ -418,7 +418,7 @@ impl State<'_> {
             "`{}` in {}",
             library.doc.protos[key.1].name.text, library.name
         );
-        let bodies = &mut builder.doc_mut().library_bodies;
+        let bodies = &mut draft.doc_mut().library_bodies;
         bodies.push(LibraryBody {
             label,
             path: library.path.clone(),
@@ -519,7 +519,7 @@ impl Copier<'_> {
     fn child(
         &self,
         state: &mut State,
-        builder: &mut Builder,
+        draft: &mut Draft,
         copies: &mut HashMap<NodeId, NodeId>,
         child: ChildRef,
         place: Place,
@@ -531,15 +531,15 @@ impl Copier<'_> {
                 ..child
             };
         }
-        if !state.needs(builder.doc(), original) || state.stopped {
+        if !state.needs(draft.doc(), original) || state.stopped {
             return child;
         }
-        let mut node = builder.doc().node(original).clone();
+        let mut node = draft.doc().node(original).clone();
         let cost: usize = node.fields.iter().map(|f| f.value.len()).sum();
-        if !state.room_for(builder, self.instance, cost) {
+        if !state.room_for(draft, self.instance, cost) {
             return child;
         }
-        let id = NodeId(builder.doc().nodes.len() as u32);
+        let id = NodeId(draft.doc().nodes.len() as u32);
         copies.insert(original, id);
         node.place = place;
         node.copy_of = Some(Copied {
@@ -549,14 +549,14 @@ impl Copier<'_> {
         });
         node.instantiation = None;
         for connect in std::mem::take(&mut node.connects) {
-            if let Some(entry) = self.passed(builder, original, &connect) {
+            if let Some(entry) = self.passed(draft, original, &connect) {
                 set_entry(&mut node, entry);
             }
         }
-        builder.doc_mut().nodes.push(node);
-        let field_count = builder.doc().node(id).fields.len();
+        draft.doc_mut().nodes.push(node);
+        let field_count = draft.doc().node(id).fields.len();
         for entry in 0..field_count {
-            let field = &builder.doc().node(id).fields[entry];
+            let field = &draft.doc().node(id).fields[entry];
             // A value passed in through IS is the instance's (or the interface's): shared.
             if field.origin == Origin::Is {
                 continue;
@@ -570,34 +570,29 @@ impl Copier<'_> {
             };
             let copied: Vec<ChildRef> = children
                 .into_iter()
-                .map(|c| self.child(state, builder, copies, c, place))
+                .map(|c| self.child(state, draft, copies, c, place))
                 .collect();
-            builder.doc_mut().nodes[id.index()].fields[entry].value = Value::Nodes(copied);
+            draft.doc_mut().nodes[id.index()].fields[entry].value = Value::Nodes(copied);
         }
         if matches!(
-            builder.doc().node(id).kind,
+            draft.doc().node(id).kind,
             NodeKind::ProtoInstance { proto: Some(_), .. }
         ) {
-            state.instantiate(builder, id, self.depth + 1);
+            state.instantiate(draft, id, self.depth + 1);
         }
         ChildRef { node: id, ..child }
     }
 
     /// The entry a `connect` gives the copy of `original`: the instance's value for the
     /// prototype field, typed as the node's field.
-    fn passed(
-        &self,
-        builder: &Builder,
-        original: NodeId,
-        connect: &IsConnect,
-    ) -> Option<FieldEntry> {
-        let doc = builder.doc();
+    fn passed(&self, draft: &Draft, original: NodeId, connect: &IsConnect) -> Option<FieldEntry> {
+        let doc = draft.doc();
         let interface = &doc.protos[self.proto].interface;
         let at = interface
             .iter()
             .position(|f| f.name.text == connect.proto_field.text)?;
         let value = self.values[at].as_ref()?;
-        let field = builder.field_ref(original, &connect.node_field.text);
+        let field = draft.field_ref(original, &connect.node_field.text);
         let (name_span, span) = (connect.node_field.span, connect.span);
         passed_entry(doc, field, value, interface[at].ty, name_span, span)
     }
@@ -621,12 +616,12 @@ impl Importer {
     fn copy(
         &self,
         state: &mut State,
-        builder: &mut Builder,
+        draft: &mut Draft,
         copies: &mut HashMap<NodeId, NodeId>,
         child: ChildRef,
         place: Place,
     ) -> Option<ChildRef> {
-        let at = builder.doc().node(self.instance).name_span;
+        let at = draft.doc().node(self.instance).name_span;
         let copied = |node| ChildRef {
             node,
             span: at,
@@ -639,12 +634,12 @@ impl Importer {
         let library = externals.library(self.file)?.doc;
         let original = library.nodes.get(child.node.index())?;
         let cost: usize = original.fields.iter().map(|f| f.value.len()).sum();
-        if !state.room_for(builder, self.instance, cost) {
+        if !state.room_for(draft, self.instance, cost) {
             return None;
         }
         let line = state.line(self.file, original.name_span);
         let mut node = original.clone();
-        let id = NodeId(builder.doc().nodes.len() as u32);
+        let id = NodeId(draft.doc().nodes.len() as u32);
         copies.insert(child.node, id);
         node.span = at;
         node.name_span = at;
@@ -652,7 +647,7 @@ impl Importer {
             def.span = at;
         }
         node.place = place;
-        node.scope = builder.doc().node(self.instance).scope;
+        node.scope = draft.doc().node(self.instance).scope;
         node.source_code = None;
         node.instantiation = None;
         node.copy_of = Some(Copied {
@@ -687,18 +682,18 @@ impl Importer {
         // The library's node types and fields, as this document's version has them (the
         // library's own version is the library's concern).
         if let NodeKind::Known { def, .. } = node.kind {
-            node.kind = builder.node_kind(def.name);
+            node.kind = draft.node_kind(def.name);
         }
         let connects = std::mem::take(&mut node.connects);
-        builder.doc_mut().nodes.push(node);
-        let field_count = builder.doc().node(id).fields.len();
+        draft.doc_mut().nodes.push(node);
+        let field_count = draft.doc().node(id).fields.len();
         for entry in 0..field_count {
-            let field = &builder.doc().node(id).fields[entry];
+            let field = &draft.doc().node(id).fields[entry];
             if let FieldRef::Schema { def, .. } = field.field {
-                let field = builder.field_ref(id, def.name);
-                builder.doc_mut().nodes[id.index()].fields[entry].field = field;
+                let field = draft.field_ref(id, def.name);
+                draft.doc_mut().nodes[id.index()].fields[entry].field = field;
             }
-            let field = &builder.doc().node(id).fields[entry];
+            let field = &draft.doc().node(id).fields[entry];
             let Some(children) = field.value.as_nodes().map(<[ChildRef]>::to_vec) else {
                 continue;
             };
@@ -708,13 +703,13 @@ impl Importer {
             };
             let children: Vec<ChildRef> = children
                 .into_iter()
-                .filter_map(|c| self.copy(state, builder, copies, c, place))
+                .filter_map(|c| self.copy(state, draft, copies, c, place))
                 .collect();
-            builder.doc_mut().nodes[id.index()].fields[entry].value = Value::Nodes(children);
+            draft.doc_mut().nodes[id.index()].fields[entry].value = Value::Nodes(children);
         }
         for connect in &connects {
-            if let Some(entry) = self.passed(state, builder, id, nested, connect) {
-                set_entry(&mut builder.doc_mut().nodes[id.index()], entry);
+            if let Some(entry) = self.passed(state, draft, id, nested, connect) {
+                set_entry(&mut draft.doc_mut().nodes[id.index()], entry);
             }
         }
         if let Some(nested) = nested {
@@ -725,7 +720,7 @@ impl Importer {
             };
             // A url back to the checked document names it as a library file: never file 0.
             if let Some(target) = target.filter(|t| t.0 > 0) {
-                state.import(builder, id, target, None, self.depth + 1);
+                state.import(draft, id, target, None, self.depth + 1);
             }
         }
         Some(copied(id))
@@ -737,7 +732,7 @@ impl Importer {
     fn passed(
         &self,
         state: &State,
-        builder: &Builder,
+        draft: &Draft,
         id: NodeId,
         nested: Option<usize>,
         connect: &IsConnect,
@@ -760,10 +755,10 @@ impl Importer {
                         .and_then(|f| f.ty),
                 }
             }
-            None => builder.field_ref(id, name),
+            None => draft.field_ref(id, name),
         };
-        let span = builder.doc().node(self.instance).name_span;
-        passed_entry(builder.doc(), field, value, interface[at].ty, span, span)
+        let span = draft.doc().node(self.instance).name_span;
+        passed_entry(draft.doc(), field, value, interface[at].ty, span, span)
     }
 }
 

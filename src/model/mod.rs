@@ -5,6 +5,8 @@
 
 pub mod bounds;
 pub mod builder;
+pub mod data_url;
+pub mod draft;
 pub mod faces;
 mod fields;
 mod header;

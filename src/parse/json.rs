@@ -42,7 +42,8 @@ use super::rules::{FIELD_VALUE_SYNTAX, JSON_MALFORMED, ROOT_NOT_X3D, USE_WITH_FI
 use super::Parsed;
 use crate::diagnostic::Diagnostic;
 use crate::limits::MAX_FIELDS_PER_NODE;
-use crate::model::builder::{Limit, Parent};
+use crate::model::builder::Parent;
+use crate::model::draft::Limit;
 use crate::model::rules::FIELD_DUPLICATE;
 use crate::model::*;
 use crate::parse::KeepValues;

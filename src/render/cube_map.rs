@@ -495,7 +495,7 @@ fn image_cube(
 }
 
 fn shown(url: &str) -> String {
-    crate::validate::texturing::data_url::shown(url).to_string()
+    crate::model::data_url::shown(url).to_string()
 }
 
 /// Layers of a container file (six faces, the GPU's order) as a cube, decoded from

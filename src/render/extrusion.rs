@@ -46,10 +46,11 @@
 use glam::{DMat3, DQuat, DVec3};
 
 use super::geometry2d::bounding_rectangle;
-use super::{crease_generation, LocalMesh, Needs, TexCoordSource};
+use super::{crease_generation, Needs, TexCoordSource};
 use crate::model::faces::Attribute as Kind;
 use crate::model::{Document, NodeId};
 use crate::render::fields::{boolean, floats, rotation_of};
+use crate::render::mesh::LocalMesh;
 use crate::render::polygons::{self, Attribute, Faces, Inputs, TexCoordInput};
 
 /// Triangles one Extrusion may make: a few bytes of spine and crossSection multiply into

@@ -28,10 +28,10 @@
 use std::f64::consts::{FRAC_PI_2, TAU};
 
 use super::primitives::SEGMENTS;
-use super::LocalMesh;
 use crate::model::{Document, NodeId};
 use crate::render::draw_list::Primitive;
 use crate::render::fields::{float, floats};
+use crate::render::mesh::LocalMesh;
 
 /// What a Geometry2D node is drawn as.
 pub enum Planar {

@@ -22,6 +22,8 @@ mod geometry;
 #[cfg(feature = "render")]
 mod gpu;
 #[cfg(feature = "render")]
+mod mesh;
+#[cfg(feature = "render")]
 // Face and corner numbers index several parallel arrays at once.
 #[allow(clippy::needless_range_loop)]
 mod polygons;
@@ -52,11 +54,12 @@ pub use gpu::{open_device, Gpu, GpuError, Settings, Shading};
 pub use test_adapter::{adapter_for_test, REQUIRE_GPU};
 
 #[cfg(feature = "render")]
+use crate::diagnostic::Diagnostic;
+#[cfg(feature = "render")]
 use crate::model::rules::LIMIT_EXCEEDED;
 use crate::model::Document;
+use crate::report::resolve;
 use crate::report::FileReport;
-#[cfg(feature = "render")]
-use crate::report::{resolve, Diagnostic};
 #[cfg(feature = "render")]
 use crate::validate::document::validation_incomplete::VALIDATION_INCOMPLETE;
 

@@ -4,7 +4,7 @@
 //! and the material needs them (flat, smooth, or by creaseAngle).
 
 use super::draw_list::Primitive;
-use super::geometry::LocalMesh;
+use super::mesh::LocalMesh;
 use crate::limits::MAX_FACE_CORNERS;
 use crate::model::faces::{Attribute as Kind, Binding, Polygonal};
 

@@ -5,8 +5,8 @@
 
 use std::f32::consts::{PI, TAU};
 
-use super::LocalMesh;
 use crate::render::draw_list::Primitive;
+use crate::render::mesh::LocalMesh;
 
 /// Segments around the axis of round primitives.
 pub(super) const SEGMENTS: u32 = 48;

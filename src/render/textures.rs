@@ -9,8 +9,8 @@ use std::path::{Path, PathBuf};
 use super::draw_list::{Texture, Wrap};
 use super::fields::{boolean, child, float};
 use crate::limits::MAX_IMAGE_SIDE;
+use crate::model::data_url;
 use crate::model::{Document, NodeId};
-use crate::validate::texturing::data_url;
 
 /// The largest texture side loaded (larger images are reported, not drawn).
 const MAX_TEXTURE_SIDE: u32 = 8192;
@@ -299,7 +299,7 @@ fn decode<R: BufRead + Seek>(
         .with_guessed_format()
         .map_err(|e| e.to_string())?;
     // The header's size was checked above; these also bound what decoding may allocate.
-    reader.limits(crate::validate::texturing::files::image_limits());
+    reader.limits(crate::limits::image_limits());
     Ok(reader.decode().map_err(|e| e.to_string())?)
 }
 

@@ -7,7 +7,7 @@
 use std::fmt::Write as _;
 
 use super::FileReport;
-use crate::validate::Severity;
+use crate::diagnostic::Severity;
 
 pub fn render(report: &FileReport) -> String {
     let mut out = String::new();

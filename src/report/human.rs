@@ -16,9 +16,9 @@ use miette::{
 
 use super::line_index::LineIndex;
 use super::{FileReport, Resolved, Summary};
+use crate::diagnostic::Severity;
 use crate::model::Span;
 use crate::parse::Progress;
-use crate::validate::Severity;
 
 /// Lines longer than this (in bytes) are shown as a window around the span.
 const LONG_LINE: usize = 200;
@@ -454,8 +454,9 @@ impl SourceCode for Excerpts {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::diagnostic::Diagnostic;
     use crate::model::rules::DEF_DUPLICATE;
-    use crate::report::{resolve, Diagnostic, Stats};
+    use crate::report::{resolve, Stats};
 
     fn render_one(source: &str, diagnostic: Diagnostic) -> String {
         let report = FileReport {

@@ -12,11 +12,10 @@ use serde::{Deserialize, Serialize};
 
 use super::resolve::VRML97_GRAMMAR;
 use super::{FileReport, Related, Resolved, ResolvedEdit, ResolvedFix, Stats, Summary};
-use crate::diagnostic::Applicability;
+use crate::diagnostic::{find_rule_in, Applicability, Rule, Severity};
 use crate::model::{Encoding, Span};
 use crate::shard::Shard;
-use crate::validate::interpolation::key_decreasing::SEQUENCER_CLAUSE;
-use crate::validate::{find_rule, Severity};
+use crate::schema::clauses::SEQUENCER_KEYS;
 
 const TOOL: &str = "x3dcheck";
 const VERSION: &str = env!("CARGO_PKG_VERSION");
@@ -265,10 +264,10 @@ struct Header {
     statistics: Option<serde::de::IgnoredAny>,
 }
 
-/// Reads a report written by [`render`] of this version. Spans are not in the report:
-/// the diagnostics read have empty spans at 0, which the formats that need them (human,
-/// with the source) must not be given.
-pub fn read(text: &str) -> Result<ReadReport, ReadError> {
+/// Reads a report written by [`render`] of this version, whose codes are those of `rules`
+/// (the catalogue). Spans are not in the report: the diagnostics read have empty spans at
+/// 0, which the formats that need them (human, with the source) must not be given.
+pub fn read(text: &str, rules: &[&'static Rule]) -> Result<ReadReport, ReadError> {
     let header: Header = serde_json::from_str(text).map_err(|e| match e.classify() {
         serde_json::error::Category::Data => ReadError::NotReport,
         _ => ReadError::NotJson(e),
@@ -291,7 +290,7 @@ pub fn read(text: &str) -> Result<ReadReport, ReadError> {
     let files = report
         .files
         .into_iter()
-        .map(file_report)
+        .map(|file| file_report(file, rules))
         .collect::<Result<Vec<_>, _>>()?;
     if Summary::of(&files) != report.summary {
         return Err(ReadError::Inconsistent(
@@ -304,12 +303,12 @@ pub fn read(text: &str) -> Result<ReadReport, ReadError> {
     })
 }
 
-fn file_report(file: File) -> Result<FileReport, ReadError> {
+fn file_report(file: File, rules: &[&'static Rule]) -> Result<FileReport, ReadError> {
     let diagnostics = file
         .diagnostics
         .into_iter()
         .map(|d| {
-            let rule = find_rule(&d.code).ok_or_else(|| {
+            let rule = find_rule_in(rules, &d.code).ok_or_else(|| {
                 ReadError::Inconsistent(format!("{}: unknown code {}", file.path, d.code))
             })?;
             Ok(Resolved {
@@ -325,7 +324,7 @@ fn file_report(file: File) -> Result<FileReport, ReadError> {
                 // finding, 14772-1's grammar; a sequencer's decreasing key, 30.3.1.
                 clause: crate::schema::clauses::known_subclause(&d.clause)
                     .or((d.clause == VRML97_GRAMMAR).then_some(VRML97_GRAMMAR))
-                    .or((d.clause == SEQUENCER_CLAUSE).then_some(SEQUENCER_CLAUSE))
+                    .or((d.clause == SEQUENCER_KEYS).then_some(SEQUENCER_KEYS))
                     .unwrap_or(rule.clause),
                 index: d.index,
                 indices: d.indices,
@@ -379,18 +378,22 @@ fn file_report(file: File) -> Result<FileReport, ReadError> {
 mod tests {
     use super::*;
     use crate::report::resolve;
-    use crate::validate::find_rule;
+    use crate::validate::{find_rule, RULES};
 
     fn report() -> FileReport {
         let source = b"<X3D>\n  <Scene>\n    <Shape/>\n  </Scene>\n</X3D>\n";
         let rule = find_rule("DEF_DUPLICATE").unwrap();
-        let folded = crate::report::Diagnostic {
+        let folded = crate::diagnostic::Diagnostic {
             indices: vec![3, 7],
             count: 2,
-            ..crate::report::Diagnostic::new(rule, Span { start: 12, end: 19 }, "a \"quoted\"\n")
+            ..crate::diagnostic::Diagnostic::new(
+                rule,
+                Span { start: 12, end: 19 },
+                "a \"quoted\"\n",
+            )
         };
         let diagnostics = [
-            crate::report::Diagnostic::new(rule, Span { start: 20, end: 28 }, "DEF `A` again")
+            crate::diagnostic::Diagnostic::new(rule, Span { start: 20, end: 28 }, "DEF `A` again")
                 .related(Span { start: 6, end: 13 }, "first defined here")
                 .help("rename it")
                 .value("A")
@@ -416,7 +419,7 @@ mod tests {
         let shard = Some(Shard::new(2, 3).unwrap());
         let text = render(&reports, shard);
         assert!(text.contains("\"related\": [") && text.contains("\"index\": 2"));
-        let read = read(&text).unwrap();
+        let read = read(&text, &RULES).unwrap();
         assert_eq!(read.shard, shard);
         assert_eq!(render(&read.files, shard), text);
         assert_eq!(read.files[0].diagnostics[0].related[0].line, 2);
@@ -425,7 +428,7 @@ mod tests {
     #[test]
     fn what_is_not_a_report_is_refused() {
         let text = render(&[report()], None);
-        let error = |text: &str| read(text).unwrap_err().to_string();
+        let error = |text: &str| read(text, &RULES).unwrap_err().to_string();
         assert!(error("{").starts_with("not JSON"), "{}", error("{"));
         assert!(error("[1]").starts_with("not an x3dcheck"));
         assert!(error("{\"version\": \"2.1.0\", \"runs\": []}").starts_with("not an x3dcheck"));

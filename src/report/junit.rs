@@ -9,7 +9,7 @@
 use std::fmt::Write as _;
 
 use super::{FileReport, Resolved};
-use crate::validate::Severity;
+use crate::diagnostic::Severity;
 
 /// `fail_levels[i]` is the fail level of `reports[i]` (each file may have its own config).
 pub fn render(reports: &[FileReport], fail_levels: &[Severity]) -> String {

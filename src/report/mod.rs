@@ -13,14 +13,13 @@ pub mod sarif;
 pub mod statistics;
 mod stats;
 
-pub use crate::diagnostic::Diagnostic;
 pub use resolve::{resolve, Related, Resolved, ResolvedEdit, ResolvedFix};
 pub use stats::Stats;
 
 use serde::{Deserialize, Serialize};
 
+use crate::diagnostic::Severity;
 use crate::model::Encoding;
-use crate::validate::Severity;
 
 /// Everything reported for one input.
 #[derive(Clone, Debug)]

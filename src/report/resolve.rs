@@ -4,13 +4,11 @@
 
 use super::line_index::LineIndex;
 use super::path::{NodePaths, ROOT};
-use super::Diagnostic;
-use crate::diagnostic::Applicability;
+use crate::diagnostic::{Applicability, Diagnostic, Severity};
 use crate::model::{Document, Encoding, NodeKind, Span};
 use crate::parse::rules::vrml_malformed::VRML_MALFORMED;
 use crate::parse::Progress;
 use crate::schema::clauses;
-use crate::validate::Severity;
 
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Resolved {

@@ -7,14 +7,15 @@
 use serde_json::{json, Map, Value};
 
 use super::{FileReport, Resolved};
-use crate::validate::{Rule, Severity, RULES};
+use crate::diagnostic::{Rule, Severity};
 
 const SCHEMA: &str =
     "https://docs.oasis-open.org/sarif/sarif/v2.1.0/errata01/os/schemas/sarif-schema-2.1.0.json";
 
-/// The whole log, pretty-printed, with a trailing newline.
-pub fn render(reports: &[FileReport]) -> String {
-    let reported: Vec<&'static Rule> = RULES
+/// The whole log, pretty-printed, with a trailing newline. `rules`: every rule, in
+/// catalogue order (the registry's `RULES`).
+pub fn render(reports: &[FileReport], rules: &[&'static Rule]) -> String {
+    let reported: Vec<&'static Rule> = rules
         .iter()
         .copied()
         .filter(|r| {

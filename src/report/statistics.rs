@@ -8,7 +8,7 @@ use std::fmt::Write as _;
 use serde::Serialize;
 
 use super::{FileReport, Summary};
-use crate::validate::{find_rule, Severity};
+use crate::diagnostic::{find_rule_in, Rule, Severity};
 
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct CodeCount {
@@ -46,15 +46,18 @@ pub fn of(reports: &[FileReport]) -> Vec<CodeCount> {
 /// Summaries longer than this are cut, so that a row fits a wide terminal.
 const SUMMARY_CHARS: usize = 72;
 
-/// A table: count, files, severity, code and the rule's summary.
-pub fn render_text(rows: &[CodeCount]) -> String {
+/// A table: count, files, severity, code and the rule's summary (of the rule among
+/// `rules`, the catalogue).
+pub fn render_text(rows: &[CodeCount], rules: &[&'static Rule]) -> String {
     let code_width = rows.iter().map(|r| r.code.len()).max().unwrap_or(4).max(4);
     let mut out = format!(
         "{:>8}  {:>6}  {:<8}  {:<code_width$}  SUMMARY\n",
         "COUNT", "FILES", "SEVERITY", "CODE"
     );
     for row in rows {
-        let summary = find_rule(row.code).map(|r| r.summary()).unwrap_or_default();
+        let summary = find_rule_in(rules, row.code)
+            .map(|r| r.summary())
+            .unwrap_or_default();
         let summary = match summary.char_indices().nth(SUMMARY_CHARS) {
             Some((cut, _)) => format!("{}…", &summary[..cut]),
             None => summary,

@@ -48,6 +48,10 @@ pub fn node_subclause(version: Version, node: &str) -> Option<&'static str> {
     SUBCLAUSES.get(&version)?.get(node).map(String::as_str)
 }
 
+/// The clause a sequencer's decreasing key cites: 30.3.1 X3DSequencerNode, which says of
+/// the sequencers' keys what 19.2.2 says of the interpolators'.
+pub const SEQUENCER_KEYS: &str = "30.3.1";
+
 /// `clause` as the table holds it, for a report read back (`x3dcheck merge`): the clause
 /// a finding on some node type cited.
 pub fn known_subclause(clause: &str) -> Option<&'static str> {

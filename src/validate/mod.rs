@@ -37,7 +37,6 @@ pub mod text;
 pub mod texture_projection;
 pub mod texturing;
 
-pub use crate::diagnostic::{Level, Rule, Severity};
 pub use registry::{find_rule, CHECKS, RULES};
 
 use crate::config::CheckConfig;
@@ -45,7 +44,7 @@ use crate::limits::MAX_DIAGNOSTICS;
 use crate::model::rules::LIMIT_EXCEEDED;
 use std::collections::HashMap;
 
-use crate::diagnostic::Diagnostic;
+use crate::diagnostic::{Diagnostic, Level, Rule};
 use crate::model::{Document, FieldEntry, NodeId, Span, Value};
 use crate::schema::Version;
 

@@ -8,8 +8,9 @@ use super::{
     document, environmental_effects, events, geometry2d, geometry3d, geospatial, grouping, hanim,
     interpolation, layering, layout, lighting, navigation, networking, nurbs, particles, picking,
     prototypes, rendering, rigid_body, scripting, sensors, shaders, shape, sound, text,
-    texture_projection, texturing, Check, Rule,
+    texture_projection, texturing, Check,
 };
+use crate::diagnostic::{find_rule_in, Rule};
 
 /// Every rule with its check function (None for those reported while reading).
 pub static CHECKS: LazyLock<Vec<&'static Check>> = LazyLock::new(|| {
@@ -51,5 +52,5 @@ pub static RULES: LazyLock<Vec<&'static Rule>> =
     LazyLock::new(|| CHECKS.iter().map(|check| check.rule).collect());
 
 pub fn find_rule(code: &str) -> Option<&'static Rule> {
-    RULES.iter().copied().find(|r| r.code == code)
+    find_rule_in(&RULES, code)
 }

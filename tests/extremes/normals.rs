@@ -8,9 +8,9 @@
 
 use proptest::prelude::*;
 use x3dcheck::config::CheckConfig;
+use x3dcheck::diagnostic::Level;
 use x3dcheck::report::FileReport;
 use x3dcheck::schema::Version;
-use x3dcheck::validate::Level;
 
 use crate::support::{check_with, document, has_non_finite_word, of, El, Encoding, ENCODINGS};
 

@@ -13,9 +13,9 @@
 //! a zero of its sign: a number, finite, judged as 0 (and -0 equals 0).
 
 use proptest::prelude::*;
+use x3dcheck::diagnostic::Level;
 use x3dcheck::model::Value;
 use x3dcheck::schema::{schema, Version};
-use x3dcheck::validate::Level;
 
 use crate::support::{
     check, document, is_json_number, of, read, value_of, El, Encoding, ENCODINGS,

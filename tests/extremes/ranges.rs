@@ -13,8 +13,8 @@
 //! -1 separator: for them the outside value must raise that rule instead.
 
 use proptest::prelude::*;
+use x3dcheck::diagnostic::Level;
 use x3dcheck::schema::{schema, Bound, FieldDef, NodeDef, Scalar, Version};
-use x3dcheck::validate::Level;
 
 use crate::support::{check, document, of, El, Encoding, ENCODINGS};
 

@@ -13,9 +13,10 @@
 use proptest::prelude::*;
 use quick_xml::events::Event;
 use x3dcheck::config::CheckConfig;
+use x3dcheck::diagnostic::{Level, Severity};
 use x3dcheck::report::{concise, github, human, json, junit, sarif, FileReport};
 use x3dcheck::schema::{schema, Scalar, Version};
-use x3dcheck::validate::{Level, Severity};
+use x3dcheck::validate::RULES;
 
 use crate::support::{check_with, document, has_non_finite_word, El, Encoding, ENCODINGS};
 
@@ -176,7 +177,7 @@ fn outputs(report: &FileReport, source: &str) -> Vec<(&'static str, String)> {
     let reports = std::slice::from_ref(report);
     vec![
         ("json", json::render(reports, None)),
-        ("sarif", sarif::render(reports)),
+        ("sarif", sarif::render(reports, &RULES)),
         ("human", human::render(report, source.as_bytes(), false)),
         ("concise", concise::render(report)),
         ("github", github::render(report)),

@@ -1,10 +1,10 @@
 //! Scenes written in both encodings, and what the checker says of them.
 
 use x3dcheck::config::CheckConfig;
+use x3dcheck::diagnostic::Level;
 use x3dcheck::model::{Document, Value};
 use x3dcheck::report::{FileReport, Resolved};
 use x3dcheck::schema::{schema, Version};
-use x3dcheck::validate::Level;
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub enum Encoding {

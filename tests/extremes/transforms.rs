@@ -7,9 +7,9 @@
 //! computation leaves f64's range.
 
 use proptest::prelude::*;
+use x3dcheck::diagnostic::Level;
 use x3dcheck::model::bounds::{scene_bounds, Affine};
 use x3dcheck::schema::Version;
-use x3dcheck::validate::Level;
 
 use crate::support::{check, document, has_non_finite_word, of, read, El, Encoding, ENCODINGS};
 

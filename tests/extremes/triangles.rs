@@ -6,9 +6,9 @@
 //! FIELD_VALUE_NONFINITE (no NaN from them, no count).
 
 use proptest::prelude::*;
+use x3dcheck::diagnostic::Level;
 use x3dcheck::schema::Version;
 use x3dcheck::validate::rendering::geometry::is_degenerate;
-use x3dcheck::validate::Level;
 
 use crate::support::{check, document, has_non_finite_word, of, El, ENCODINGS};
 

@@ -15,7 +15,8 @@ use lexer::{Kind, Lexer, Token};
 
 use crate::diagnostic::Diagnostic;
 use crate::limits::{MAX_DEPTH, MAX_INPUT_BYTES};
-use crate::model::builder::{Limit, Parent};
+use crate::model::builder::Parent;
+use crate::model::draft::Limit;
 use crate::model::*;
 use crate::parse::behind::{self, Progress};
 use crate::parse::directive::place_following;

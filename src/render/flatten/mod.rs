@@ -26,8 +26,8 @@ use glam::{DMat4, DVec3, DVec4};
 use super::draw_list::{DrawList, Light, Viewport, MAX_CLIP_PLANES};
 use super::fields::{boolean, floats};
 use crate::model::bounds::{local_transform, Bounds};
+use crate::model::data_url;
 use crate::model::{units, Document, Node, NodeId};
-use crate::validate::texturing::data_url;
 use place::Pending;
 
 /// Inline files nested deeper than this are not loaded (and cycles end here).

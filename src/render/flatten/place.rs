@@ -6,7 +6,7 @@ use glam::{DMat3, DMat4, DQuat, DVec3, DVec4};
 
 use super::Scope;
 use crate::render::draw_list::{Material, Mesh, Primitive, Stroke, Textures};
-use crate::render::geometry::LocalMesh;
+use crate::render::mesh::LocalMesh;
 use crate::render::tangents::tangents;
 use crate::render::texgen::{Frame, Generator};
 

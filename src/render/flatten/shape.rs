@@ -15,7 +15,8 @@ use crate::render::draw_list::{
     CubeLookup, LightingModel, Primitive, Stage, Stroke, TextureRef, Textures, MAX_TEX_COORD_SETS,
 };
 use crate::render::fields::{child, type_is};
-use crate::render::geometry::{self, Built, LocalMesh, Needs, TexCoordSource};
+use crate::render::geometry::{self, Built, Needs, TexCoordSource};
+use crate::render::mesh::LocalMesh;
 use crate::render::texgen::{Generator, Mode};
 
 /// A texture coordinate set as the shape's textures ask for it: its source node (None:

@@ -4,7 +4,8 @@ use super::{Context, Walker};
 use crate::limits::MAX_RENDER_TEXT_CHARACTERS;
 use crate::model::NodeId;
 use crate::render::fields::boolean;
-use crate::render::geometry::{LocalMesh, Needs, Shading};
+use crate::render::geometry::{Needs, Shading};
+use crate::render::mesh::LocalMesh;
 use crate::render::text;
 
 impl Walker<'_> {

@@ -29,7 +29,8 @@ use ttf_parser::{Face, GlyphId};
 use self::fonts::{family_of, style_of, FaceId};
 use super::draw_list::Primitive;
 use super::fields::{boolean, child, float, floats, type_is};
-use super::geometry::{LocalMesh, Needs};
+use super::geometry::Needs;
+use super::mesh::LocalMesh;
 use crate::model::{Document, NodeId};
 pub use glyphs::Glyphs;
 

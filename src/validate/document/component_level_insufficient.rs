@@ -3,9 +3,8 @@
 
 use std::collections::BTreeMap;
 
-use crate::diagnostic::{Applicability, Fix, Span};
+use crate::diagnostic::{Applicability, Diagnostic, Fix, Span};
 use crate::model::{Encoding, NodeId, NodeKind};
-use crate::report::Diagnostic;
 use crate::schema::{profiles, Version};
 use crate::validate::{edits, Ctx};
 

@@ -1,8 +1,8 @@
 //! COMPONENT_UNKNOWN: a `component` statement names no component, or a level it lacks.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::{Diagnostic, Severity};
 use crate::schema::{self, Version};
-use crate::validate::{suggest, Ctx, Severity};
+use crate::validate::{suggest, Ctx};
 
 crate::declare_rule! {
     /// ## What it does

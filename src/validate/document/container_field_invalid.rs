@@ -1,8 +1,8 @@
 //! CONTAINER_FIELD_INVALID: a child node placed in a field its parent does not have as a
 //! node field.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::{FieldRef, NodeKind, Origin};
-use crate::report::Diagnostic;
 use crate::schema::Scalar;
 use crate::validate::{suggest, Ctx};
 

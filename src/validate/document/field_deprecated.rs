@@ -1,8 +1,7 @@
 //! FIELD_DEPRECATED: TextureProperties.borderColor and borderWidth in X3D 4.
 
-use crate::diagnostic::Applicability;
+use crate::diagnostic::{Applicability, Diagnostic};
 use crate::model::Origin;
-use crate::report::Diagnostic;
 use crate::validate::{edits, Ctx};
 
 crate::declare_rule! {

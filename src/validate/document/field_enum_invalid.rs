@@ -1,7 +1,7 @@
 //! FIELD_ENUM_INVALID: a string not among a field's enumerated values.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::Value;
-use crate::report::Diagnostic;
 use crate::schema::FieldDef;
 use crate::validate::{suggest, Ctx};
 

@@ -2,8 +2,8 @@
 //! X3D added to a VRML97 node).
 
 use super::node_not_in_version::first_with;
+use crate::diagnostic::Diagnostic;
 use crate::model::{FieldRef, NodeKind};
-use crate::report::Diagnostic;
 use crate::schema::{self, versions, Version};
 use crate::validate::Ctx;
 

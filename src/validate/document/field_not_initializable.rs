@@ -1,7 +1,7 @@
 //! FIELD_NOT_INITIALIZABLE: a value given for an inputOnly or outputOnly field.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::{FieldRef, NodeKind, Origin};
-use crate::report::Diagnostic;
 use crate::schema::AccessType;
 use crate::validate::Ctx;
 

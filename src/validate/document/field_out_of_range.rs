@@ -1,8 +1,8 @@
 //! FIELD_OUT_OF_RANGE: a value outside the range of the node's interface table.
 
 use super::failures;
+use crate::diagnostic::Diagnostic;
 use crate::model::{range_applies, FieldEntry, NodeId, Value};
-use crate::report::Diagnostic;
 use crate::schema::{in_range_f32, in_range_f64, range_text, FieldDef, FieldType};
 use crate::validate::Ctx;
 

@@ -1,8 +1,7 @@
 //! FIELD_UNKNOWN: a field no version of the node's type has.
 
-use crate::diagnostic::{Applicability, Fix};
+use crate::diagnostic::{Applicability, Diagnostic, Fix};
 use crate::model::{statement_attributes, FieldRef, NodeKind, Origin};
-use crate::report::Diagnostic;
 use crate::validate::{edits, suggest, Ctx};
 
 crate::declare_rule! {

@@ -1,8 +1,8 @@
 //! FIELD_VALUE_NONFINITE: NaN or infinity in a numeric field.
 
 use super::failures;
+use crate::diagnostic::Diagnostic;
 use crate::model::Value;
-use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,8 +1,7 @@
 //! NODE_DEPRECATED: TwoSidedMaterial in X3D 4, GeoOrigin in X3D 3.3.
 
-use crate::diagnostic::{Applicability, Fix, Span};
+use crate::diagnostic::{Applicability, Diagnostic, Fix, Span};
 use crate::model::{Encoding, NodeId, Origin, Place, Value};
-use crate::report::Diagnostic;
 use crate::schema::Version;
 use crate::validate::{edits, Ctx};
 

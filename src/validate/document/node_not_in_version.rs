@@ -2,9 +2,8 @@
 
 use std::collections::HashSet;
 
-use crate::diagnostic::{Applicability, Fix, Span};
+use crate::diagnostic::{Applicability, Diagnostic, Fix, Span};
 use crate::model::{Encoding, LibraryPlace, NodeId, NodeKind};
-use crate::report::Diagnostic;
 use crate::schema::{self, versions, Version};
 use crate::validate::{edits, Ctx};
 

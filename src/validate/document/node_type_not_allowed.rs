@@ -1,7 +1,7 @@
 //! NODE_TYPE_NOT_ALLOWED: a node given to a field that does not accept its type.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::{ChildRef, Document, FieldRef, NodeKind};
-use crate::report::Diagnostic;
 use crate::schema::NodeDef;
 use crate::validate::Ctx;
 

@@ -1,8 +1,7 @@
 //! NODE_UNKNOWN: an element or object names no X3D node or statement.
 
-use crate::diagnostic::{Applicability, Fix};
+use crate::diagnostic::{Applicability, Diagnostic, Fix};
 use crate::model::NodeKind;
-use crate::report::Diagnostic;
 use crate::schema::{self, Version};
 use crate::validate::{edits, suggest, Ctx};
 

@@ -1,6 +1,6 @@
 //! PROFILE_MISSING: the root has no `profile`.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::schema::Version;
 use crate::validate::Ctx;
 

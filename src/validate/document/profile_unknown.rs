@@ -1,6 +1,6 @@
 //! PROFILE_UNKNOWN: the root's `profile` names no X3D profile.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::{suggest, Ctx};
 
 /// The profiles of 19775-1 (clause 7.2.5.3 and Annexes A–F, H, I).

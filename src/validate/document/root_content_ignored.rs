@@ -1,7 +1,7 @@
 //! ROOT_CONTENT_IGNORED: content of the X3D root or its head that X3D gives no meaning.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::HeaderPart;
-use crate::report::Diagnostic;
 use crate::schema::{self, Version};
 use crate::validate::{suggest, Ctx};
 

@@ -1,7 +1,7 @@
 //! SFNODE_MULTIPLE: more than one node in a single-node field.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::Value;
-use crate::report::Diagnostic;
 use crate::schema::FieldType;
 use crate::validate::Ctx;
 

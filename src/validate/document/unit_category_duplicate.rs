@@ -2,7 +2,7 @@
 
 use std::collections::HashMap;
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::schema::Version;
 use crate::validate::Ctx;
 

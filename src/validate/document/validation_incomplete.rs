@@ -1,11 +1,11 @@
 //! VALIDATION_INCOMPLETE: a part of the scene x3dcheck does not check.
 
+use crate::diagnostic::{Diagnostic, Level};
 use crate::model::Span;
-use crate::report::Diagnostic;
 use crate::validate::networking::inlines::InlineTarget;
 use crate::validate::prototypes::externs::Resolved;
 use crate::validate::texturing::files::{not_fetched, Resolution, Resolver};
-use crate::validate::{Ctx, Level};
+use crate::validate::Ctx;
 
 crate::declare_rule! {
     /// ## What it does

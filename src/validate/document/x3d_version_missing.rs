@@ -1,6 +1,6 @@
 //! X3D_VERSION_MISSING: the root has no `version`.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::schema::Version;
 use crate::validate::Ctx;
 

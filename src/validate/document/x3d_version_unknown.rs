@@ -1,6 +1,6 @@
 //! X3D_VERSION_UNKNOWN: the root's `version` is not a known X3D version.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::schema::Version;
 use crate::validate::{suggest, Ctx};
 

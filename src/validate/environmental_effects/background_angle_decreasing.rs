@@ -2,7 +2,7 @@
 //! before it.
 
 use super::{is_background, GRADIENTS};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::numbers::first_decrease;
 use crate::validate::Ctx;

@@ -2,8 +2,8 @@
 //! more than it has angles.
 
 use super::{is_background, Gradient, GRADIENTS};
+use crate::diagnostic::Diagnostic;
 use crate::model::{NodeId, Span};
-use crate::report::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::numbers::plural;
 use crate::validate::Ctx;

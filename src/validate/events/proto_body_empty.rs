@@ -1,6 +1,6 @@
 //! PROTO_BODY_EMPTY: a ProtoDeclare whose body holds no node.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

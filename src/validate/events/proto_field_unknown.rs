@@ -1,8 +1,8 @@
 //! PROTO_FIELD_UNKNOWN: a ProtoInstance fieldValue names no field of its prototype.
 
 use super::endpoint::did_you_mean;
+use crate::diagnostic::Diagnostic;
 use crate::model::{NodeId, NodeKind};
-use crate::report::Diagnostic;
 use crate::validate::terms::Terms;
 use crate::validate::Ctx;
 

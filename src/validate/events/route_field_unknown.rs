@@ -4,8 +4,8 @@
 use super::endpoint::{
     did_you_mean, not_input_output_text, only_in_text, route_end, Direction, End, Lookup,
 };
+use crate::diagnostic::Diagnostic;
 use crate::model::{Named, RouteEnd};
-use crate::report::Diagnostic;
 use crate::validate::terms::Terms;
 use crate::validate::Ctx;
 

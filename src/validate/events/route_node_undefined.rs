@@ -1,7 +1,7 @@
 //! ROUTE_NODE_UNDEFINED: a ROUTE end names no DEF in the ROUTE's name scope.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::{Document, Named, Route, RouteEnd};
-use crate::report::Diagnostic;
 use crate::validate::{suggest, Ctx};
 
 crate::declare_rule! {

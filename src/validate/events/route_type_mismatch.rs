@@ -1,7 +1,7 @@
 //! ROUTE_TYPE_MISMATCH: a ROUTE connects fields of different types.
 
 use super::endpoint::{route_ends, End, Lookup};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,6 +1,6 @@
 //! DISK2D_RADII_INVERTED: a Disk2D whose inner radius is greater than its outer radius.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{any_set_elsewhere, routed_fields};
 use crate::validate::numbers::readable;
 use crate::validate::Ctx;

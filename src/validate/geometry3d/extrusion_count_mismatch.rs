@@ -1,7 +1,7 @@
 //! EXTRUSION_COUNT_MISMATCH: an Extrusion with more than one but fewer scale or
 //! orientation values than spine points.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::Ctx;
 

@@ -2,7 +2,7 @@
 //! frame the value names.
 
 use super::{frames, geo_systems, quoted, Argument, Frame, ELLIPSOIDS};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -2,7 +2,7 @@
 //! them, a UTM frame without a valid zone, or two different zones or ellipsoids.
 
 use super::{frames, geo_systems, quoted, Argument, Frame};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

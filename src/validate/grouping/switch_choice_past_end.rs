@@ -1,7 +1,7 @@
 //! SWITCH_CHOICE_PAST_END: a Switch whose whichChoice names no child.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::{Document, NodeId};
-use crate::report::Diagnostic;
 use crate::validate::events::wiring::{any_set_elsewhere, routed_fields};
 use crate::validate::numbers::plural;
 use crate::validate::Ctx;

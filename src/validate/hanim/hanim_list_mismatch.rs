@@ -4,8 +4,8 @@
 use std::collections::HashSet;
 
 use super::{describe, humanoids, Humanoid};
+use crate::diagnostic::Diagnostic;
 use crate::model::{NodeId, NodeKind};
-use crate::report::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::Ctx;
 

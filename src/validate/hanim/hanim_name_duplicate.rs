@@ -4,8 +4,8 @@
 use std::collections::HashMap;
 
 use super::{humanoids, written_name};
+use crate::diagnostic::Diagnostic;
 use crate::model::NodeId;
-use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -3,8 +3,8 @@
 
 use super::names::{JOINT_ALIASES, JOINT_NAMES, SEGMENT_ALIASES, SEGMENT_NAMES};
 use super::{humanoids, name_suffix, written_name, Humanoid};
+use crate::diagnostic::Diagnostic;
 use crate::model::{Document, NodeId};
-use crate::report::Diagnostic;
 use crate::schema::Version;
 use crate::validate::Ctx;
 

@@ -4,8 +4,8 @@
 use std::collections::HashSet;
 
 use super::{humanoids, name_suffix};
+use crate::diagnostic::Diagnostic;
 use crate::model::{NodeId, NodeKind, Span};
-use crate::report::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::rendering::geometry::ScalarSpans;
 use crate::validate::Ctx;

@@ -1,7 +1,7 @@
 //! HANIM_SKIN_WEIGHT_COUNT_MISMATCH: an HAnimJoint whose skinCoordWeight is not one weight
 //! per skinCoordIndex entry.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{any_set_elsewhere, routed_fields};
 use crate::validate::Ctx;
 

@@ -1,7 +1,7 @@
 //! HANIM_SKIN_WEIGHT_OUT_OF_RANGE: a skinCoordWeight outside [0, 1].
 
 use super::name_suffix;
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::rendering::geometry::ScalarSpans;
 use crate::validate::Ctx;

@@ -1,7 +1,7 @@
 //! EASE_IN_EASE_OUT_COUNT_MISMATCH: an EaseInEaseOut without one easeInEaseOut pair per
 //! key.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{any_set_elsewhere, routed_fields};
 use crate::validate::numbers::plural;
 use crate::validate::Ctx;

@@ -1,8 +1,9 @@
 //! KEY_DECREASING: an interpolator or sequencer key smaller than the key before it.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::numbers::first_decrease;
+use crate::schema::clauses::SEQUENCER_KEYS;
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -48,10 +49,6 @@ crate::declare_rule! {
     }
 }
 
-/// The clause a sequencer's finding cites: 30.3.1 X3DSequencerNode, which says of the
-/// sequencers' keys what 19.2.2 says of the interpolators'.
-pub const SEQUENCER_CLAUSE: &str = "30.3.1";
-
 fn check(ctx: &mut Ctx) {
     let doc = ctx.doc;
     let routed = routed_fields(doc);
@@ -74,7 +71,7 @@ fn check(ctx: &mut Ctx) {
         };
         if let Some(at) = first_decrease(keys) {
             let clause = if node.is_a("X3DSequencerNode") {
-                SEQUENCER_CLAUSE
+                SEQUENCER_KEYS
             } else {
                 KEY_DECREASING.clause
             };

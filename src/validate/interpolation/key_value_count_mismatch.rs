@@ -1,8 +1,8 @@
 //! KEY_VALUE_COUNT_MISMATCH: an interpolator or sequencer whose keyValue (or keyVelocity)
 //! count does not match its key count.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::{NodeId, Span, Value};
-use crate::report::Diagnostic;
 use crate::validate::events::wiring::{any_set_elsewhere, routed_fields, set_elsewhere};
 use crate::validate::numbers::plural;
 use crate::validate::Ctx;

@@ -1,7 +1,7 @@
 //! LAYERSET_DUPLICATE: a second LayerSet in the scene.
 
 use crate::model::Scope;
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

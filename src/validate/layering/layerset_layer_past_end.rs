@@ -1,6 +1,6 @@
 //! LAYERSET_LAYER_PAST_END: a LayerSet order or activeLayer value that names no layer.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{any_set_elsewhere, routed_fields};
 use crate::validate::numbers::plural;
 use crate::validate::Ctx;

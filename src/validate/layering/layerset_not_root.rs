@@ -2,7 +2,7 @@
 
 use super::is_layer_set;
 use crate::model::{FieldEntry, FieldRef, NodeId};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,6 +1,6 @@
 //! VIEWPORT_CLIP_BOUNDARY_COUNT: a Viewport.clipBoundary without exactly four values.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::numbers::plural;
 use crate::validate::Ctx;

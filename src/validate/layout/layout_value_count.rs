@@ -1,6 +1,6 @@
 //! LAYOUT_VALUE_COUNT: a Layout field without its one or two values.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::numbers::plural;
 use crate::validate::Ctx;

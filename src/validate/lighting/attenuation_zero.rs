@@ -1,7 +1,7 @@
 //! ATTENUATION_ZERO: attenuation 0 0 0, which means 1 0 0.
 
 use super::{all_zero, is_positional_light, lights_setting};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,7 +1,7 @@
 //! LIGHT_DIRECTION_ZERO: a DirectionalLight or SpotLight pointing nowhere.
 
 use super::{all_zero, lights_setting};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,7 +1,7 @@
 //! LIGHT_RADIUS_ZERO: a PointLight or SpotLight with radius 0.
 
 use super::{is_positional_light, lights_setting};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -3,9 +3,9 @@
 use std::collections::HashMap;
 
 use super::is_positional_light;
+use crate::diagnostic::Diagnostic;
 use crate::model::bounds::{self, Affine, Bounds};
 use crate::model::NodeId;
-use crate::report::Diagnostic;
 use crate::validate::numbers::readable;
 use crate::validate::Ctx;
 

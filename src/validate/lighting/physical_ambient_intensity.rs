@@ -1,7 +1,7 @@
 //! PHYSICAL_AMBIENT_INTENSITY: ambientIntensity in a scene lit only physically.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::{Document, NodeId};
-use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,6 +1,6 @@
 //! SPOT_BEAM_EXCEEDS_CUTOFF: a SpotLight whose beamWidth is wider than its cutOffAngle.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::numbers::readable;
 use crate::validate::Ctx;
 

@@ -1,6 +1,6 @@
 //! LOD_LEVEL_COUNT_MISMATCH: an LOD without one level more than it has ranges.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{any_set_elsewhere, routed_fields};
 use crate::validate::numbers::plural;
 use crate::validate::Ctx;

@@ -1,6 +1,6 @@
 //! LOD_RANGE_NOT_INCREASING: an LOD range not greater than the range before it.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::Ctx;
 

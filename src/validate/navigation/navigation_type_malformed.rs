@@ -1,8 +1,8 @@
 //! NAVIGATION_TYPE_MALFORMED: a NavigationInfo `type` or `transitionType` string that is a
 //! standard value miswritten: in another case, or several values in one string.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::{FieldEntry, Origin};
-use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,7 +1,7 @@
 //! ORTHO_FIELD_OF_VIEW_INVALID: an OrthoViewpoint whose fieldOfView is not four values
 //! with each minimum below its maximum.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::Ctx;
 

@@ -1,6 +1,6 @@
 //! VIEWPOINT_ORIENTATION_AXIS_ZERO: a viewpoint whose orientation has no rotation axis.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,6 +1,6 @@
 //! ANCHOR_PARAMETER_MALFORMED: an Anchor.parameter string that is not `keyword=value`.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::Ctx;
 

@@ -1,7 +1,7 @@
 //! EXPORT_UNDEFINED: an EXPORT statement names no DEF of the file's top-level scene.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::Scope;
-use crate::report::Diagnostic;
 use crate::validate::{suggest, Ctx};
 
 crate::declare_rule! {

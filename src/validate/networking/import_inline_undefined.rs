@@ -1,7 +1,7 @@
 //! IMPORT_INLINE_UNDEFINED: an IMPORT whose inlineDEF names no Inline of its scope.
 
 use super::imports::named_inline;
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::{suggest, Ctx};
 
 crate::declare_rule! {

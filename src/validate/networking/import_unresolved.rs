@@ -1,7 +1,7 @@
 //! IMPORT_UNRESOLVED: an IMPORT names a name its Inline's file does not export.
 
 use super::imports::ImportTarget;
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::document::validation_incomplete::VALIDATION_INCOMPLETE;
 use crate::validate::prototypes::externs::display_path;
 use crate::validate::{suggest, Ctx};

@@ -5,11 +5,11 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use super::inlines::{InlineTarget, Inlines};
+use crate::diagnostic::Diagnostic;
 use crate::library::Library;
 use crate::limits::MAX_LIBRARY_FILES;
 use crate::model::rules::LIMIT_EXCEEDED;
 use crate::model::{Document, Span};
-use crate::report::Diagnostic;
 use crate::validate::prototypes::externs::{Resolved, Tree};
 use crate::validate::Ctx;
 

@@ -157,7 +157,7 @@ fn target(urls: &[String], resolver: &Resolver, tree: &Tree, checked: bool) -> I
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::validate::Level;
+    use crate::diagnostic::Level;
 
     #[test]
     fn the_first_local_file_is_loaded_and_read_once() {

@@ -11,9 +11,9 @@ use std::collections::HashSet;
 
 use super::events::wiring::{any_set_elsewhere, routed_fields, set_elsewhere};
 use super::numbers::plural;
-use super::{Check, Ctx, Rule};
+use super::{Check, Ctx};
+use crate::diagnostic::{Diagnostic, Rule};
 use crate::model::{Document, NodeId, Span};
-use crate::report::Diagnostic;
 use crate::schema::FieldType;
 
 /// This group's rules, in catalogue order.

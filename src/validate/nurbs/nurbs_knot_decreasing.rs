@@ -1,7 +1,7 @@
 //! NURBS_KNOT_DECREASING: a knot vector with a knot smaller than the one before it.
 
 use super::{is_surface, CURVES};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::numbers::first_decrease;
 use crate::validate::rendering::geometry::ScalarSpans;

@@ -1,7 +1,7 @@
 //! PARTICLE_COLOR_RAMP_SHORT: a ParticleSystem with fewer ramp colours than colour keys.
 
 use super::ramps;
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::numbers::plural;
 use crate::validate::Ctx;
 

@@ -1,6 +1,6 @@
 //! PARTICLE_KEY_DECREASING: a ParticleSystem colorKey smaller than the key before it.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::numbers::first_decrease;
 use crate::validate::Ctx;

@@ -2,7 +2,7 @@
 //! points than its keys need for the particles' geometry type.
 
 use super::ramps;
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::numbers::plural;
 use crate::validate::Ctx;
 

@@ -1,7 +1,7 @@
 //! PICKING_GEOMETRY_TYPE_INVALID: a pick sensor whose pickingGeometry is a geometry its
 //! type does not pick with.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -2,8 +2,8 @@
 //! names lacks or declares otherwise.
 
 use super::externs::display_path;
+use crate::diagnostic::Diagnostic;
 use crate::model::{FieldDecl, Span};
-use crate::report::Diagnostic;
 use crate::validate::events::endpoint::did_you_mean;
 use crate::validate::Ctx;
 

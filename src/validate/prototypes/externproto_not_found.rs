@@ -1,7 +1,7 @@
 //! EXTERNPROTO_NOT_FOUND: the local file an ExternProtoDeclare names has no such prototype.
 
 use super::externs::{display_path, Resolved};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

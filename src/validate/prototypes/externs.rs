@@ -327,7 +327,7 @@ fn top_level(doc: &Document, name: Option<&str>) -> Option<usize> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::validate::Level;
+    use crate::diagnostic::Level;
 
     fn scene(body: &str) -> String {
         format!("<X3D version='4.0'><Scene>{body}</Scene></X3D>")

@@ -1,7 +1,7 @@
 //! IS_FIELD_UNKNOWN: an `IS`/`connect` names a field that is not there.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::{IsConnect, NodeId, Scope};
-use crate::report::Diagnostic;
 use crate::validate::events::endpoint::{did_you_mean, lookup, only_in_text, type_label, Lookup};
 use crate::validate::terms::Terms;
 use crate::validate::Ctx;

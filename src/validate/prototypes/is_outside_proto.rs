@@ -1,7 +1,7 @@
 //! IS_OUTSIDE_PROTO: an `IS`/`connect` outside any ProtoBody.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::Scope;
-use crate::report::Diagnostic;
 use crate::validate::terms::Terms;
 use crate::validate::Ctx;
 

@@ -1,8 +1,8 @@
 //! IS_TYPE_MISMATCH: an `IS`/`connect` joins fields of different types, or access types
 //! that may not be connected.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::{FieldDecl, IsConnect, NodeId, Scope};
-use crate::report::Diagnostic;
 use crate::schema::AccessType;
 use crate::validate::events::endpoint::{lookup, type_label, Direction, Field, Lookup};
 use crate::validate::terms::Terms;

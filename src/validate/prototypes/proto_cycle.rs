@@ -10,13 +10,13 @@ use petgraph::visit::EdgeRef;
 
 use super::definitions;
 use super::externs::{Externs, Resolved, Tree};
+use crate::diagnostic::{Diagnostic, Level};
 use crate::library::Library;
 use crate::limits::MAX_LIBRARY_FILES;
 use crate::model::rules::LIMIT_EXCEEDED;
 use crate::model::{Document, NodeId};
-use crate::report::Diagnostic;
 use crate::validate::terms::Terms;
-use crate::validate::{Ctx, Level};
+use crate::validate::Ctx;
 
 crate::declare_rule! {
     /// ## What it does
@@ -313,7 +313,7 @@ fn cycle(graph: &Graph, edges: &DiGraph<Key, NodeId>, steps: &[(NodeIndex, NodeI
 #[cfg(test)]
 mod tests {
     use crate::config::CheckConfig;
-    use crate::validate::Level;
+    use crate::diagnostic::Level;
 
     /// `count` files, each with a prototype whose body holds the next file's; the last
     /// names the first when `closed`.

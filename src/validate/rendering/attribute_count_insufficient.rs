@@ -4,9 +4,9 @@
 use super::geometry::{
     attribute_lists, coord_list, polygonal, shape_is_known, Checked, PropertyList,
 };
+use crate::diagnostic::Diagnostic;
 use crate::model::faces::{runs, Attribute, Binding, PolygonKind};
 use crate::model::{NodeId, Span, Value};
-use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,7 +1,7 @@
 //! COLOR_PER_VERTEX_IGNORED: colorPerVertex FALSE on a node that ignores it.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::faces::PolygonKind;
-use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

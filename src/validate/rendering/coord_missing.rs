@@ -1,7 +1,7 @@
 //! COORD_MISSING: a geometry that draws from coordinates has none.
 
 use super::geometry::{property, Property};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 /// The geometry types that draw nothing without a `coord` node.

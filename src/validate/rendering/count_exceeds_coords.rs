@@ -2,7 +2,7 @@
 //! there are coordinates.
 
 use super::geometry::counted;
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

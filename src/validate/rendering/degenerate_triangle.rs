@@ -2,9 +2,9 @@
 
 use super::face_survey::counts_runs;
 use super::geometry::{Checked, ScalarSpans};
+use crate::diagnostic::Diagnostic;
 use crate::model::faces::PolygonKind;
 use crate::model::Span;
-use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

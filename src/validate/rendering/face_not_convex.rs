@@ -5,8 +5,8 @@ use super::geometry::{
     corner_point, cross, dot, face_normal, judge_polygonal, length, sub, unit, Checked, Points,
     ScalarSpans,
 };
+use crate::diagnostic::Diagnostic;
 use crate::model::faces::{Face, PolygonKind};
-use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
 /// How far a corner may lie off its face's plane, relative to the face's size (its

@@ -4,7 +4,7 @@
 use super::face_not_convex::{face_corners, is_warped};
 use super::geometry::{judge_polygonal, Points, ScalarSpans};
 use crate::model::faces::PolygonKind;
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

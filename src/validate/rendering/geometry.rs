@@ -10,10 +10,10 @@
 
 use rayon::prelude::*;
 
+use crate::diagnostic::{Diagnostic, Rule};
 use crate::model::faces::{Attribute, Face, Polygonal};
 use crate::model::{ChildRef, Document, FieldEntry, Node, NodeId, Span, Value};
-use crate::report::Diagnostic;
-use crate::validate::{Ctx, Rule};
+use crate::validate::Ctx;
 
 /// Fields that decide a geometry's topology and binding: when one of them is unknown
 /// the geometry is not checked.

@@ -1,8 +1,8 @@
 //! HEIGHT_COUNT_MISMATCH: an ElevationGrid (or GeoElevationGrid) whose height count is not
 //! xDimension × zDimension.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::Value;
-use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

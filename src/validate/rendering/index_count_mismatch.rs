@@ -2,8 +2,8 @@
 //! not follow coordIndex vertex for vertex.
 
 use super::geometry::{shape_is_known, ScalarSpans};
+use crate::diagnostic::Diagnostic;
 use crate::model::{NodeId, Value};
-use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

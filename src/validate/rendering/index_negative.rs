@@ -2,8 +2,8 @@
 //! no separators.
 
 use super::geometry::{shape_is_known, ScalarSpans};
+use crate::diagnostic::Diagnostic;
 use crate::model::NodeId;
-use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

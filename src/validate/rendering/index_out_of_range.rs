@@ -2,9 +2,9 @@
 
 use super::geometry::ScalarSpans;
 use super::geometry::{attribute_lists, coord_list, shape_is_known, PropertyList};
+use crate::diagnostic::Diagnostic;
 use crate::model::faces::Attribute;
 use crate::model::NodeId;
-use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

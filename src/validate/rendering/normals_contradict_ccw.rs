@@ -1,7 +1,7 @@
 //! NORMALS_CONTRADICT_CCW: supplied normals point against the faces' winding (deep level).
 
 use super::face_survey::NormalsCount;
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,8 +1,8 @@
 //! POLYLINE_TOO_SHORT: an IndexedLineSet polyline of a single vertex.
 
 use super::geometry::{shape_is_known, ScalarSpans};
+use crate::diagnostic::Diagnostic;
 use crate::model::faces::{next_to_invalid_index, runs};
-use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,8 +1,8 @@
 //! STRIP_FAN_TOO_SHORT: an indexed strip or fan of fewer than three indices.
 
 use super::geometry::{shape_is_known, ScalarSpans};
+use crate::diagnostic::Diagnostic;
 use crate::model::faces::{next_to_invalid_index, runs};
-use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

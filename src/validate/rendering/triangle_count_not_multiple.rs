@@ -2,7 +2,7 @@
 //! triangle (or quad) at the end.
 
 use super::geometry::{coord_list, is_known, shape_is_known};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,6 +1,6 @@
 //! RIGID_BODY_MASS_ZERO: a RigidBody whose mass is zero.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::Ctx;
 

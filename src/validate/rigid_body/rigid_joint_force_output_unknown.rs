@@ -1,8 +1,8 @@
 //! RIGID_JOINT_FORCE_OUTPUT_UNKNOWN: a joint's `forceOutput` value that names no output
 //! field of the joint, or that is ignored because "NONE" is listed too.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::Value;
-use crate::report::Diagnostic;
 use crate::schema::AccessType;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::{suggest, Ctx};

@@ -24,9 +24,10 @@ mod sources;
 
 use std::path::Path;
 
-use super::{Check, Ctx, Level};
+use super::{Check, Ctx};
+use crate::diagnostic::Level;
+use crate::model::data_url;
 use crate::model::{Encoding, Node, NodeId, Origin, Span};
-use crate::validate::texturing::data_url;
 use crate::validate::texturing::files::{not_fetched, Resolution, Resolver};
 use mapped::Mapped;
 

@@ -1,6 +1,6 @@
 //! SCRIPT_HANDLER_MISSING: a Script input field with no function to receive its events.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::schema::AccessType;
 use crate::validate::Ctx;
 

@@ -1,7 +1,7 @@
 //! SCRIPT_SYNTAX_ERROR: a Script's ECMAScript code does not parse.
 
 use super::{line_column, Place};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

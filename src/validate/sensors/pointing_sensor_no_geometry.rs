@@ -2,8 +2,8 @@
 
 use std::collections::{HashMap, HashSet};
 
+use crate::diagnostic::Diagnostic;
 use crate::model::{Document, Node, NodeId, NodeKind, Place};
-use crate::report::Diagnostic;
 use crate::schema::FieldType;
 use crate::validate::events::wiring::Wiring;
 use crate::validate::Ctx;

@@ -1,7 +1,7 @@
 //! SENSOR_NEVER_ENABLED: a sensor with `enabled FALSE` that nothing can enable.
 
 use super::{is_sensor, written_disabled, written_in_scene};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::Wiring;
 use crate::validate::Ctx;
 

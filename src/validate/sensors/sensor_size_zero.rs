@@ -1,8 +1,8 @@
 //! SENSOR_SIZE_ZERO: a ProximitySensor or TransformSensor whose box has no volume.
 
 use super::written_in_scene;
+use crate::diagnostic::Diagnostic;
 use crate::model::{Node, Span};
-use crate::report::Diagnostic;
 use crate::validate::events::wiring::Wiring;
 use crate::validate::Ctx;
 

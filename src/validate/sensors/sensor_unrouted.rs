@@ -1,7 +1,7 @@
 //! SENSOR_UNROUTED: a sensor with a DEF name that no ROUTE, IS, Script or EXPORT connects.
 
 use super::{is_sensor, written_disabled, written_in_scene};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::Wiring;
 use crate::validate::Ctx;
 

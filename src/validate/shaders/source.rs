@@ -183,7 +183,7 @@ pub fn find(doc: &Document, file: &[u8], id: NodeId, resolver: Option<&Resolver>
 
 /// A data: URL that does not decode: nothing to compile.
 fn unreadable(name: &str, url: &str, why: String) -> Found {
-    let shown = crate::validate::texturing::data_url::shown(url);
+    let shown = crate::model::data_url::shown(url);
     Found::Unavailable(Some(format!("{name}: url \"{shown}\" {why}")))
 }
 

@@ -1,7 +1,7 @@
 //! VERTEX_ATTRIBUTE_COUNT_NOT_MULTIPLE: a FloatVertexAttribute whose values do not make
 //! whole vertices.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{any_set_elsewhere, routed_fields};
 use crate::validate::numbers::plural;
 use crate::validate::Ctx;

@@ -1,6 +1,6 @@
 //! ALPHA_CUTOFF_UNUSED: alphaCutoff set while alphaMode never uses it.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::schema::Version;
 use crate::validate::Ctx;
 

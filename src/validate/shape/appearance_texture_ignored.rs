@@ -1,7 +1,7 @@
 //! APPEARANCE_TEXTURE_IGNORED: Appearance.texture shadowed by the material's main texture.
 
 use super::analysis::appearances;
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 /// Each material class's "main" texture, the one Appearance.texture stands in for (12.2.5).

@@ -1,7 +1,7 @@
 //! BACK_MATERIAL_CLASS_MISMATCH: material and backMaterial of different node types.
 
 use super::analysis::front_and_back;
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,7 +1,7 @@
 //! BACK_MATERIAL_MAPPING_MISMATCH: material and backMaterial use different texture mappings.
 
 use super::back_textures::material_pairs;
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,7 +1,7 @@
 //! BACK_MATERIAL_NO_EFFECT: backMaterial on a Shape whose back faces are never drawn.
 
 use super::analysis::{back_material, shape_pairs};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,7 +1,7 @@
 //! BACK_MATERIAL_TEXTURE_MISMATCH: material and backMaterial use different textures.
 
 use super::back_textures::{equal_content, material_pairs};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,7 +1,7 @@
 //! BACK_MATERIAL_TEXTURE_NOT_SHARED: equal copies of one texture in material and backMaterial.
 
 use super::back_textures::{equal_content, material_pairs};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,7 +1,7 @@
 //! BACK_MATERIAL_WITH_TWO_SIDED: backMaterial set while material is a TwoSidedMaterial.
 
 use super::analysis::front_and_back;
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

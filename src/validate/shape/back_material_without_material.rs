@@ -1,7 +1,7 @@
 //! BACK_MATERIAL_WITHOUT_MATERIAL: backMaterial set while material is NULL.
 
 use super::analysis::{appearances, back_material};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,7 +1,7 @@
 //! BBOX_TOO_SMALL: a declared bounding box that does not enclose the geometry.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::bounds::{self, Affine, Bounds};
-use crate::report::Diagnostic;
 use crate::validate::numbers::readable;
 use crate::validate::Ctx;
 

@@ -2,11 +2,11 @@
 //! RGBA texture.
 
 use super::analysis::shape_pairs;
+use crate::diagnostic::{Diagnostic, Level};
+use crate::model::data_url;
 use crate::model::NodeId;
-use crate::report::Diagnostic;
-use crate::validate::texturing::data_url;
 use crate::validate::texturing::files::{bytes_channels, file_channels, Resolution, Resolver};
-use crate::validate::{Ctx, Level};
+use crate::validate::Ctx;
 
 crate::declare_rule! {
     /// ## What it does

@@ -1,7 +1,7 @@
 //! HATCH_STYLE_UNSUPPORTED: a hatchStyle browsers need not support.
 
-use crate::report::Diagnostic;
-use crate::validate::{Ctx, Severity};
+use crate::diagnostic::{Diagnostic, Severity};
+use crate::validate::Ctx;
 
 crate::declare_rule! {
     /// ## What it does

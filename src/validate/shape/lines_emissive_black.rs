@@ -1,7 +1,7 @@
 //! LINES_EMISSIVE_BLACK: lines or points drawn black by a Material's emissiveColor.
 
 use super::analysis::shape_pairs;
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::Ctx;
 

@@ -1,6 +1,6 @@
 //! MARKER_TYPE_UNSUPPORTED: a markerType outside the registered 1–26.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::schema::Version;
 use crate::validate::Ctx;
 

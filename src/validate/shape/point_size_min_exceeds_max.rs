@@ -1,6 +1,6 @@
 //! POINT_SIZE_MIN_EXCEEDS_MAX: PointProperties.pointSizeMinValue above pointSizeMaxValue.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::numbers::readable;
 use crate::validate::Ctx;
 

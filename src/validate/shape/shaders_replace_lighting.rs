@@ -1,7 +1,7 @@
 //! SHADERS_REPLACE_LIGHTING: an Appearance with shaders.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::NodeKind;
-use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,6 +1,6 @@
 //! SHAPE_GEOMETRY_MISSING: a Shape without geometry.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

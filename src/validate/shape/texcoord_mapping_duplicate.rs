@@ -1,7 +1,7 @@
 //! TEXCOORD_MAPPING_DUPLICATE: two texture coordinate nodes of one list share a mapping.
 
 use super::analysis::{repeated_mappings, RepeatedMapping};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

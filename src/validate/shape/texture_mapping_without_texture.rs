@@ -1,7 +1,7 @@
 //! TEXTURE_MAPPING_WITHOUT_TEXTURE: an xxxTextureMapping whose xxxTexture is NULL.
 
 use super::analysis::texture_fields;
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,10 +1,10 @@
 //! TEXTURE_TRANSFORM_MAPPING_UNRESOLVED: a material's texture mapping names no texture transform.
 
 use super::analysis::{appearances, one_sided_materials, texture_fields};
+use crate::diagnostic::{Diagnostic, Severity};
 use crate::model::texture_mapping::{texture_transforms, Resolution};
-use crate::report::Diagnostic;
 use crate::schema::Version;
-use crate::validate::{Ctx, Severity};
+use crate::validate::Ctx;
 
 crate::declare_rule! {
     /// ## What it does

@@ -2,9 +2,9 @@
 
 use std::collections::HashMap;
 
+use crate::diagnostic::Diagnostic;
 use crate::model::texture_mapping::texture_coordinates;
 use crate::model::{ChildRef, Document, Node, NodeId};
-use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
 /// TextureCoordinateGenerator modes computed from normals (18.4.8 Table 18.6): the two

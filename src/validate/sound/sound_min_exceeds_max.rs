@@ -1,7 +1,7 @@
 //! SOUND_MIN_EXCEEDS_MAX: a Sound whose inner ellipsoid reaches past its outer one
 //! (minFront above maxFront, or minBack above maxBack).
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::numbers::readable;
 use crate::validate::Ctx;

@@ -1,6 +1,6 @@
 //! JUSTIFY_EXTRA_VALUES: a FontStyle.justify with more than two values.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::Ctx;
 

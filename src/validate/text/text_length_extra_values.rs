@@ -1,6 +1,6 @@
 //! TEXT_LENGTH_EXTRA_VALUES: a Text with more length values than strings.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{any_set_elsewhere, routed_fields};
 use crate::validate::numbers::plural;
 use crate::validate::Ctx;

@@ -1,6 +1,6 @@
 //! TEXTURE_PROJECTOR_DIRECTION_ZERO: a texture projector pointing nowhere.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::lighting::{all_zero, lights_setting};
 use crate::validate::Ctx;
 

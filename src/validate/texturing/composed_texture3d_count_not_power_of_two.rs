@@ -1,7 +1,7 @@
 //! COMPOSED_TEXTURE3D_COUNT_NOT_POWER_OF_TWO: a ComposedTexture3D whose slices are not
 //! 2^n textures.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::events::wiring::{any_set_elsewhere, routed_fields};
 use crate::validate::numbers::plural;
 use crate::validate::Ctx;

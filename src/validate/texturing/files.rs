@@ -21,7 +21,7 @@ use std::collections::HashMap;
 use std::ffi::OsString;
 use std::path::{Component, Path, PathBuf};
 
-use crate::limits::{MAX_IMAGE_BYTES, MAX_IMAGE_SIDE};
+use crate::limits::{image_limits, MAX_IMAGE_BYTES, MAX_IMAGE_SIDE};
 use crate::model::{Document, FieldEntry, NodeId};
 
 /// What a url field's entries hold.
@@ -488,16 +488,6 @@ fn probe_format<R: std::io::BufRead + std::io::Seek>(
         Err(image::ImageError::Limits(_)) => Probe::TooLarge(too_large()),
         Err(e) => Probe::Broken(format!("does not decode as {}: {e}", format_name(format))),
     }
-}
-
-/// The decoder's limits: the header's size is checked against them before any pixel is
-/// decoded, so a small file claiming 100000×100000 pixels costs nothing.
-pub fn image_limits() -> image::Limits {
-    let mut limits = image::Limits::default();
-    limits.max_image_width = Some(MAX_IMAGE_SIDE);
-    limits.max_image_height = Some(MAX_IMAGE_SIDE);
-    limits.max_alloc = Some(MAX_IMAGE_BYTES);
-    limits
 }
 
 /// Why an image went past [`image_limits`], with the size its header claims when known.

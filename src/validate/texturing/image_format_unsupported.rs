@@ -1,7 +1,7 @@
 //! IMAGE_FORMAT_UNSUPPORTED: a texture in a format browsers need not support.
 
 use super::files::{format_name, url_fields, Content, Probe, Prober, Resolution, Resolver};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

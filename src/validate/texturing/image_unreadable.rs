@@ -1,9 +1,9 @@
 //! IMAGE_UNREADABLE: a texture file that exists but does not decode.
 
-use super::data_url;
 use super::files::{probe_bytes, url_fields, Content, Probe, Prober, Resolution, Resolver};
+use crate::diagnostic::Diagnostic;
+use crate::model::data_url;
 use crate::model::rules::LIMIT_EXCEEDED;
-use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

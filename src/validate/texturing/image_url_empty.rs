@@ -1,7 +1,7 @@
 //! IMAGE_URL_EMPTY: an ImageTexture or MovieTexture without a url.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::{Document, NodeId, NodeKind};
-use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,7 +1,6 @@
 //! Texturing component (clause 18), RULES.md §5.
 
 pub mod composed_texture3d_count_not_power_of_two;
-pub(crate) mod data_url;
 pub(crate) mod files;
 pub mod image_format_unsupported;
 pub mod image_unreadable;

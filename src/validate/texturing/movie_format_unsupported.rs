@@ -4,7 +4,7 @@ use std::io::Read;
 use std::path::Path;
 
 use super::files::{url_fields, Resolution, Resolver};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 /// How much of a file is read to tell its format: enough for an MPEG-2 sequence

@@ -2,7 +2,7 @@
 
 use std::collections::HashSet;
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

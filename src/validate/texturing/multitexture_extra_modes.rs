@@ -1,6 +1,6 @@
 //! MULTITEXTURE_EXTRA_MODES: more mode/source/function entries than textures.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,7 +1,7 @@
 //! PIXEL_TEXTURE_SIZE_MISMATCH: an SFImage whose pixels do not match its header.
 
+use crate::diagnostic::Diagnostic;
 use crate::model::{FieldEntry, NodeId, Value};
-use crate::report::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,6 +1,6 @@
 //! TEXGEN_PARAMETER_COUNT: TextureCoordinateGenerator parameter count wrong for its mode.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,6 +1,6 @@
 //! TEXTURE_MIPMAP_REQUIRED: a MIPMAP minification filter without mipmaps.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

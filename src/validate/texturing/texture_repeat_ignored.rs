@@ -1,6 +1,6 @@
 //! TEXTURE_REPEAT_IGNORED: repeatS/repeatT on a texture whose TextureProperties override them.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,6 +1,6 @@
 //! TEXTURE_TRANSFORM_SINGULAR: a texture transform scale of 0.
 
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

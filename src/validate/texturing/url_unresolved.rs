@@ -1,7 +1,7 @@
 //! URL_UNRESOLVED: no entry of a url field names a readable local file.
 
 use super::files::{not_fetched, url_fields, Resolution, Resolver};
-use crate::report::Diagnostic;
+use crate::diagnostic::Diagnostic;
 use crate::validate::document::validation_incomplete::VALIDATION_INCOMPLETE;
 use crate::validate::prototypes::externs::{display_path, Resolved};
 use crate::validate::shaders::source::is_source_text;

@@ -15,6 +15,7 @@
 //! reaches it.
 
 use std::collections::HashSet;
+use std::panic::RefUnwindSafe;
 use std::path::{Component, Path, PathBuf};
 
 use rayon::prelude::*;
@@ -23,8 +24,6 @@ use crate::config_file::{Effective, Resolver};
 use crate::library::Libraries;
 use crate::report::FileReport;
 use crate::shard::Shard;
-
-use super::{render_text, Format, Presentation};
 
 /// One inlined file's report, its text in the per-file formats, and its configuration.
 pub struct InlinedReport {
@@ -39,8 +38,9 @@ pub struct Batch<'a> {
     /// Every listed file (of every shard).
     pub listed: &'a [PathBuf],
     pub shard: Option<Shard>,
-    pub format: Option<Format>,
-    pub color: bool,
+    /// A report's text in the formats written per file, from the report and the source
+    /// text its positions are in (empty where nothing is written per file).
+    pub text: &'a (dyn Fn(&FileReport, &[u8]) -> String + Sync + RefUnwindSafe),
 }
 
 /// Checks the inlined files the batch does not list, round after round; Err for a file
@@ -92,16 +92,7 @@ pub fn check_inlined(batch: &Batch, resolver: &mut Resolver) -> Vec<Result<Inlin
                 let failure = format!("internal error while checking {name}");
                 std::panic::catch_unwind(|| {
                     let report = crate::check::check_library(&name, &library, &effective.check);
-                    let text = render_text(
-                        &report,
-                        &library.text,
-                        &(),
-                        Presentation {
-                            format: batch.format,
-                            color: batch.color,
-                            unsafe_fixes: false,
-                        },
-                    );
+                    let text = (batch.text)(&report, &library.text);
                     (report, text)
                 })
                 .map(|(report, text)| InlinedReport {

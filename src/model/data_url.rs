@@ -4,7 +4,7 @@
 //! Fetch Standard's data: URL processing: forgiving base64, percent-decoding, the MIME
 //! type), never looked up as files. The decoded bytes are never more than the url's own
 //! text, which the input size limit already bounds; images in them are decoded within
-//! the same limits as image files ([`super::files::image_limits`]).
+//! the same limits as image files ([`crate::limits::image_limits`]).
 
 /// A data: URL's content. Its MIME type is not consulted: as browsers do, an image's
 /// format is told from its bytes.
