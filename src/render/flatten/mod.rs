@@ -136,6 +136,8 @@ struct Walker<'o> {
     shapes: Vec<Pending>,
     lights: Vec<lights::PendingLight>,
     global_lights: u32,
+    /// The layer's first EnvironmentLight drawn.
+    image_light: Option<super::draw_list::Environment>,
     textures: Vec<super::draw_list::Texture>,
     /// (document serial, node) → loaded texture.
     texture_cache: HashMap<(usize, NodeId), Option<appearance::LoadedTexture>>,
@@ -185,6 +187,7 @@ pub fn flatten(doc: &Document, options: &Options) -> Result<Flattened, String> {
         shapes: Vec::new(),
         lights: Vec::new(),
         global_lights: 0,
+        image_light: None,
         textures: Vec::new(),
         texture_cache: HashMap::new(),
         viewpoint: None,
@@ -644,6 +647,7 @@ impl Walker<'_> {
             background,
             fog: environment.fog.flatten(),
             lights,
+            environment: self.image_light.take(),
             meshes,
         });
         self.lights.clear();

@@ -5,6 +5,7 @@
 
 use wgpu::util::DeviceExt;
 
+use super::environment;
 use super::pipelines::{PipelineKey, Pipelines, COLOR_FORMAT, DEPTH_FORMAT, VERTEX_SLOTS};
 use super::resources::{
     index_bounds, upload_indices, upload_mesh, upload_surface_part, MeshBuffers, SurfacePart,
@@ -95,13 +96,32 @@ pub async fn draw(
                 contents: bytemuck::bytes_of(&globals),
                 usage: pipelines.parameters.usage(),
             });
+            let maps = environment::Maps::new(device, queue, layer.environment.as_ref());
             device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: None,
                 layout: &pipelines.globals_layout,
-                entries: &[wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: buffer.as_entire_binding(),
-                }],
+                entries: &[
+                    wgpu::BindGroupEntry {
+                        binding: 0,
+                        resource: buffer.as_entire_binding(),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 1,
+                        resource: wgpu::BindingResource::TextureView(&maps.specular),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 2,
+                        resource: wgpu::BindingResource::TextureView(&maps.diffuse),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 3,
+                        resource: wgpu::BindingResource::TextureView(&maps.brdf),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 4,
+                        resource: wgpu::BindingResource::Sampler(&maps.sampler),
+                    },
+                ],
             })
         })
         .collect();
