@@ -63,7 +63,8 @@ pub struct Layer {
     pub background: Option<Background>,
     pub fog: Option<Fog>,
     pub lights: Vec<Light>,
-    /// The image-based light of the layer's first EnvironmentLight (one of `lights`).
+    /// The image-based light of the layer's first EnvironmentLight; its colour,
+    /// intensity, ambientIntensity and reach are those of its entry in `lights`.
     pub environment: Option<Environment>,
     pub meshes: Vec<Mesh>,
 }
@@ -171,9 +172,6 @@ pub enum LightKind {
 /// direction of a distant environment, as glTF's EXT_lights_image_based gives it.
 #[derive(Clone, Debug)]
 pub struct Environment {
-    /// Its index in the layer's lights (colour, intensity, ambientIntensity, which meshes
-    /// it reaches).
-    pub light: usize,
     /// Rotation from world axes to the environment's: the inverse of the light's world
     /// rotation composed with its `rotation` field.
     pub from_world: glam::Quat,

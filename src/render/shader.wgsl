@@ -27,7 +27,7 @@ struct Globals {
     lights: array<Light, 16>,
     env_sh: array<vec4<f32>, 9>,         // EnvironmentLight irradiance, L2 spherical harmonics
     env_from_world: array<vec4<f32>, 3>, // columns: world axes to the environment's
-    env_info: vec4<u32>,                 // light index, ENV_ bits, prefiltered mip levels
+    env_info: vec4<u32>,                 // ENV_ bits, prefiltered mip levels
 };
 
 struct Material {
@@ -229,7 +229,7 @@ fn phong(s: Surface, p: vec3<f32>, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
     return s.emissive + s.occlusion * min(sum, vec3<f32>(MAX_RADIANCE));
 }
 
-// What the EnvironmentLight has (bits of env_info.y; `gpu/environment.rs`).
+// What the EnvironmentLight has (bits of env_info.x; `gpu/environment.rs`).
 const ENV_SH: u32 = 1u;
 const ENV_SPECULAR: u32 = 2u;
 const ENV_DIFFUSE: u32 = 4u;
@@ -259,7 +259,7 @@ fn sh_irradiance(n: vec3<f32>) -> vec3<f32> {
 
 // The diffuse light along the world normal n: the irradiance map, else the coefficients.
 fn env_diffuse(n: vec3<f32>) -> vec3<f32> {
-    let flags = globals.env_info.y;
+    let flags = globals.env_info.x;
     let d = env_direction(n);
     if (flags & ENV_DIFFUSE) != 0u {
         return textureSampleLevel(t_env_diffuse, s_env, d, 0.0).rgb;
@@ -274,10 +274,10 @@ fn env_diffuse(n: vec3<f32>) -> vec3<f32> {
 // specularTexture the coefficients' irradiance stands in: the environment as blurred as
 // roughness 1 blurs it (darker and duller than a real reflection at low roughness).
 fn env_specular(r: vec3<f32>, roughness: f32) -> vec3<f32> {
-    let flags = globals.env_info.y;
+    let flags = globals.env_info.x;
     let d = env_direction(r);
     if (flags & ENV_SPECULAR) != 0u {
-        let lod = roughness * f32(max(globals.env_info.z, 1u) - 1u);
+        let lod = roughness * f32(max(globals.env_info.y, 1u) - 1u);
         return textureSampleLevel(t_env_specular, s_env, d, lod).rgb;
     }
     if (flags & ENV_SH) != 0u {

@@ -89,31 +89,23 @@ impl Walker<'_> {
             cut_off_angle,
         };
         if kind == LightKind::Environment {
-            let environment = self.image_light(context, id, world, self.lights.len());
+            let environment = self.image_light(context, id, world);
             self.image_light = Some(environment);
         }
         self.lights.push(PendingLight { light, location });
         Some(1 << (self.lights.len() - 1))
     }
 
-    /// An EnvironmentLight's image-based part, the light being the layer's `index`th.
-    fn image_light(
-        &mut self,
-        context: Context,
-        id: NodeId,
-        world: DMat4,
-        index: usize,
-    ) -> Environment {
+    /// An EnvironmentLight's image-based part.
+    fn image_light(&mut self, context: Context, id: NodeId, world: DMat4) -> Environment {
         let doc = context.doc;
         let turned = world.to_scale_rotation_translation().1 * rotation(doc, id, "rotation");
         let coefficients = floats(doc, id, "diffuseCoefficients");
         let irradiance = match coefficients.len() {
             0 => None,
-            27 if coefficients.iter().all(|c| c.is_finite()) => {
-                Some(std::array::from_fn(|i| {
-                    std::array::from_fn(|c| coefficients[3 * i + c])
-                }))
-            }
+            27 if coefficients.iter().all(|c| c.is_finite()) => Some(std::array::from_fn(|i| {
+                std::array::from_fn(|c| coefficients[3 * i + c])
+            })),
             n => {
                 self.note(
                     context,
@@ -145,7 +137,6 @@ impl Walker<'_> {
             );
         }
         Environment {
-            light: index,
             from_world: turned.inverse().as_quat(),
             irradiance,
             specular: None,

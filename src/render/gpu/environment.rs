@@ -12,7 +12,7 @@ use wgpu::util::DeviceExt;
 
 use crate::render::draw_list::{CubeImage, Environment};
 
-/// Bits of `env_info.y` in the shader.
+/// Bits of `env_info.x` in the shader.
 pub const ENV_SH: u32 = 1;
 pub const ENV_SPECULAR: u32 = 2;
 pub const ENV_DIFFUSE: u32 = 4;
@@ -90,21 +90,30 @@ impl Maps {
             None => blank(),
         };
         let diffuse = match (environment, &radiance) {
-            (Some(Environment {
-                diffuse: Some(cube), ..
-            }), _) => cube_view(&upload_cube(device, queue, cube)),
+            (
+                Some(Environment {
+                    diffuse: Some(cube),
+                    ..
+                }),
+                _,
+            ) => cube_view(&upload_cube(device, queue, cube)),
             (Some(e), Some(source)) if e.irradiance.is_none() => {
                 cube_view(&irradiance(device, queue, source, &sampler))
             }
             _ => blank(),
+        };
+        // Without an environment the table is not read: one texel stands in.
+        let (side, table) = match environment {
+            Some(_) => (BRDF_SIZE, brdf_table()),
+            None => (1, &[0u8, 0, 0, 255][..]),
         };
         let brdf = device.create_texture_with_data(
             queue,
             &wgpu::TextureDescriptor {
                 label: Some("brdf table"),
                 size: wgpu::Extent3d {
-                    width: BRDF_SIZE,
-                    height: BRDF_SIZE,
+                    width: side,
+                    height: side,
                     depth_or_array_layers: 1,
                 },
                 mip_level_count: 1,
@@ -115,7 +124,7 @@ impl Maps {
                 view_formats: &[],
             },
             wgpu::util::TextureDataOrder::LayerMajor,
-            brdf_table(),
+            table,
         );
         Maps {
             specular,
@@ -194,7 +203,15 @@ pub fn prefilter(
     let levels = specular_levels(size);
     let target = cube_target(device, size, levels);
     let roughness = |level: u32| level as f32 / (levels - 1).max(1) as f32;
-    draw_faces(device, queue, source, sampler, &target, "fs_prefilter", roughness);
+    draw_faces(
+        device,
+        queue,
+        source,
+        sampler,
+        &target,
+        "fs_prefilter",
+        roughness,
+    );
     target
 }
 
@@ -206,7 +223,15 @@ pub fn irradiance(
     sampler: &wgpu::Sampler,
 ) -> wgpu::Texture {
     let target = cube_target(device, IRRADIANCE_SIZE, 1);
-    draw_faces(device, queue, source, sampler, &target, "fs_irradiance", |_| 1.0);
+    draw_faces(
+        device,
+        queue,
+        source,
+        sampler,
+        &target,
+        "fs_irradiance",
+        |_| 1.0,
+    );
     target
 }
 

@@ -34,7 +34,7 @@ pub struct Globals {
     env_sh: [[f32; 4]; 9],
     /// Columns of the rotation from world axes to the environment's.
     env_from_world: [[f32; 4]; 3],
-    /// Its light's index, what it has (`environment::ENV_…`), prefiltered mip levels.
+    /// What it has (`environment::ENV_…`), its prefiltered mip levels.
     env_info: [u32; 4],
 }
 
@@ -259,9 +259,9 @@ pub fn globals(list: &Layer, width: u32, height: u32, scale: u32) -> Globals {
         },
         env_info: match &list.environment {
             Some(e) => [
-                e.light as u32,
                 super::environment::flags(e),
                 super::environment::specular_levels(e.specular.as_ref().map_or(1, |c| c.size)),
+                0,
                 0,
             ],
             None => [0; 4],
