@@ -47,7 +47,7 @@ fn places(page: &str, code: &str) -> Vec<(usize, usize)> {
 fn lower_case_names_are_read_as_x3d_names() {
     // `diffusecolor` is Material's diffuseColor: its range is checked, at its own place.
     let page = "<html><body><x3d><scene><shape><appearance>\n  <material diffusecolor='2 0 0'></material>\n</appearance><box></box></shape></scene></x3d></body></html>";
-    assert_eq!(places(page, "FIELD_OUT_OF_RANGE"), [(2, 28)]);
+    assert_eq!(places(page, "FIELD_OUT_OF_RANGE"), [(2, 27)]);
     assert!(places(page, "NODE_UNKNOWN").is_empty());
     assert!(places(page, "FIELD_UNKNOWN").is_empty());
 }

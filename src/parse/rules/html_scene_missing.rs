@@ -22,7 +22,7 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19776-1 4.2 (X3D element); x3d-4.0.xsd, the X3D element's content.
-    /// > `<xs:sequence><xs:element ref="head" minOccurs="0"/><xs:element ref="Scene"/>` (x3d-4.0.xsd, the X3D element: Scene without minOccurs, so required)
+    /// > "<xs:element ref="Scene"/>" (x3d-4.0.xsd, the X3D element's sequence, after `<xs:element ref="head" minOccurs="0"/>`: Scene has no minOccurs="0", so it is required)
     pub static HTML_SCENE_MISSING = {
         severity: Error,
         level: Fast,
