@@ -90,7 +90,7 @@ pub fn detect(source: &[u8]) -> Detected {
 }
 
 /// Whether `text` is an HTML page: after an XML declaration and comments, a DOCTYPE
-/// `html`, an `html`, `head` or `body` element, or an X3DOM fragment's lower-case `<x3d>`
+/// that does not name X3D, an `html`, `head` or `body` element, or an X3DOM fragment's lower-case `<x3d>`
 /// (an X3D document's root is `X3D`). Some(true) when it has an XML declaration: an XHTML
 /// page, which a browser reads as XML when it is served as such (`.xhtml`).
 fn html_page(text: &[u8]) -> Option<bool> {
@@ -115,9 +115,12 @@ fn html_page(text: &[u8]) -> Option<bool> {
             && rest[..prefix.len()].eq_ignore_ascii_case(prefix)
             && (rest[prefix.len()].is_ascii_whitespace() || rest[prefix.len()] == b'>')
     };
-    let html = [&b"<!doctype html"[..], b"<html", b"<head", b"<body"]
-        .into_iter()
-        .any(opens);
+    // A DOCTYPE naming anything but X3D (`<!DOCTYPE>` alone among them, which browsers take).
+    let doctype = rest.len() >= 9 && rest[..9].eq_ignore_ascii_case(b"<!doctype") && {
+        let name = rest[9..].trim_ascii_start();
+        !(name.len() >= 3 && name[..3].eq_ignore_ascii_case(b"x3d"))
+    };
+    let html = doctype || [&b"<html"[..], b"<head", b"<body"].into_iter().any(opens);
     let fragment = rest.starts_with(b"<x3d") && opens(b"<x3d");
     (html || fragment).then_some(declared)
 }

@@ -82,7 +82,8 @@ pub const ROOT_ATTRIBUTES: &[&str] = &[
 ];
 
 /// Fields X3DOM adds to X3D node types (e.g. `render` on every bounded node, `zNear` on
-/// viewpoints), which no X3D node type has.
+/// viewpoints, `nameSpaceName` and `mapDEFToID` on Inline, `lit` on geometry), which no X3D
+/// node type has.
 pub const NODE_ATTRIBUTES: &[&str] = &[
     "render",
     "ispickable",
@@ -100,6 +101,9 @@ pub const NODE_ATTRIBUTES: &[&str] = &[
     "shadowsplitfactor",
     "shadowsplitoffset",
     "shadowexcludetransparentobjects",
+    "lit",
+    "namespacename",
+    "mapdeftoid",
 ];
 
 /// Whether `name` (lower case) is an attribute X3DOM gives a meaning on an element
