@@ -68,14 +68,72 @@ fn check_decoded<'a>(
     progress: &dyn Progress,
 ) -> Checked<'a> {
     let text = decoded.text;
-    let parsed = match decoded.failure {
-        Some(failure) => Parsed {
-            encoding: None,
-            document: None,
-            diagnostics: vec![failure],
-        },
-        None => parse::read_with_progress(&text, config.keep_values(), progress),
+    let islands = match decoded.failure {
+        Some(failure) => vec![(
+            Parsed {
+                encoding: None,
+                document: None,
+                diagnostics: vec![failure],
+            },
+            None,
+        )],
+        None => parse::read_islands(&text, config.keep_values(), progress),
     };
+    // Each island of an HTML page is a scene of its own; the report holds them all, each
+    // finding named by its island when there are several.
+    let count = islands.len();
+    let mut report: Option<FileReport> = None;
+    let mut document = None;
+    for (index, (parsed, start)) in islands.into_iter().enumerate() {
+        let (mut island_report, island_document) =
+            check_parsed(path, parsed, decoded.compressed, &text, config, progress);
+        if index + 1 == config.island.max(1) || count == 1 {
+            document = island_document;
+        }
+        if count > 1 {
+            let line = start.map_or(1, |s| {
+                1 + memchr::memchr_iter(b'\n', &text[..s.start as usize]).count()
+            });
+            for d in &mut island_report.diagnostics {
+                d.message = format!(
+                    "island {} of {count} (line {line}): {}",
+                    index + 1,
+                    d.message
+                );
+            }
+        }
+        match &mut report {
+            None => report = Some(island_report),
+            Some(first) => {
+                first.diagnostics.extend(island_report.diagnostics);
+                first.truncated |= island_report.truncated;
+                first.suppressed += island_report.suppressed;
+            }
+        }
+    }
+    let mut report = report.expect("reading gives at least one document or finding");
+    if count > 1 {
+        report
+            .diagnostics
+            .sort_by(|a, b| (a.line, a.column, a.code).cmp(&(b.line, b.column, b.code)));
+    }
+    Checked {
+        report,
+        document,
+        text,
+    }
+}
+
+/// Checks one document read from `text` (a file, or one island of a page): the report, and
+/// the document for the caller.
+fn check_parsed(
+    path: &str,
+    parsed: Parsed,
+    compressed: bool,
+    text: &[u8],
+    config: &CheckConfig,
+    progress: &dyn Progress,
+) -> (FileReport, Option<Document>) {
     let mut diagnostics = parsed.diagnostics;
     let file = (path != STDIN_NAME).then(|| Path::new(path));
     let deep = config.level >= Level::Deep;
@@ -102,9 +160,9 @@ fn check_decoded<'a>(
         path,
         diagnostics,
         parsed.encoding,
-        decoded.compressed,
+        compressed,
         document.as_ref(),
-        &text,
+        text,
         progress,
         config,
         externs_for_rules,
@@ -121,11 +179,7 @@ fn check_decoded<'a>(
             ));
         }
     }
-    Checked {
-        report,
-        document,
-        text,
-    }
+    (report, document)
 }
 
 /// The report of a file an Inline loads, from the file as the batch read and parsed it

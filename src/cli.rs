@@ -686,6 +686,7 @@ fn check_input(
     let config = if render.render.is_some() {
         Cow::Owned(CheckConfig {
             render: true,
+            island: render.island as usize,
             ..config.clone()
         })
     } else {

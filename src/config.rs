@@ -27,6 +27,11 @@ pub struct CheckConfig {
     ///
     /// [`check_document`]: crate::check::check_document
     pub render: bool,
+    /// Which X3D island of an HTML page (1-based) [`check_document`] hands back as the
+    /// document (`--island`); every island is checked.
+    ///
+    /// [`check_document`]: crate::check::check_document
+    pub island: usize,
     /// The prototype libraries read so far (deep level): one cache for every file of a
     /// batch, so that a library many scenes name is read once. Cloning the configuration
     /// shares it.
@@ -45,6 +50,7 @@ impl Default for CheckConfig {
             normal_tolerance: 0.01,
             root: None,
             render: false,
+            island: 1,
             libraries: crate::library::Libraries::default(),
         }
     }

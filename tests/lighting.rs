@@ -85,6 +85,7 @@ impl Case {
             LightKind::Directional => 0.0,
             LightKind::Point => 1.0,
             LightKind::Spot => 2.0,
+            LightKind::Environment => 3.0,
         };
         let v4 = |a: [f32; 3], w: f32| [a[0], a[1], a[2], w];
         [

@@ -2,7 +2,8 @@
 //! walker), which honours `.gitignore`, `.ignore` and git's exclude files (in a repository
 //! or not) and skips hidden files and folders; `--exclude` and the configuration's
 //! `exclude` prune more. A walk takes every X3D and VRML file name ([`is_scene_name`]) and
-//! a `.json` file only when its top-level object has an `X3D` member; a file named on the
+//! a `.json` file only when its top-level object has an `X3D` member, an HTML page
+//! (`.html`, `.htm`, `.xhtml`) only when it holds an X3D island; a file named on the
 //! command line is always checked. A file reached twice (two arguments, a link) is checked
 //! once.
 //!
@@ -116,8 +117,8 @@ pub fn find_inputs(
     }
     if !any && !found.failed {
         return Err(format!(
-            "no X3D files found in {} (looked for {} and their .gz forms, and .json \
-             files holding an X3D object)",
+            "no X3D files found in {} (looked for {} and their .gz forms, .json files \
+             holding an X3D object and HTML pages holding X3D)",
             paths
                 .iter()
                 .map(|p| p.display().to_string())
@@ -208,7 +209,8 @@ fn walk(dir: &Path, excludes: Excludes, found: &mut Found) -> Vec<PathBuf> {
         let Some(file_type) = entry.file_type() else {
             continue;
         };
-        if file_type.is_dir() || !(is_scene_name(path) || is_json_name(path)) {
+        if file_type.is_dir() || !(is_scene_name(path) || is_json_name(path) || is_html_name(path))
+        {
             continue;
         }
         if file_type.is_symlink() {
@@ -239,7 +241,8 @@ fn walk(dir: &Path, excludes: Excludes, found: &mut Found) -> Vec<PathBuf> {
                 Ok(_) => {}
             }
         }
-        if is_scene_name(path) || is_x3d_json(path) {
+        let html_island = || is_html_name(path) && holds_island(path);
+        if is_scene_name(path) || (is_json_name(path) && is_x3d_json(path)) || html_island() {
             files.push(path.to_path_buf());
         }
     }
@@ -267,6 +270,46 @@ fn is_json_name(path: &Path) -> bool {
         .unwrap_or_default();
     let name = name.to_ascii_lowercase();
     name.ends_with(".json") || name.ends_with(".json.gz")
+}
+
+fn is_html_name(path: &Path) -> bool {
+    let name = path
+        .file_name()
+        .and_then(|n| n.to_str())
+        .unwrap_or_default()
+        .to_ascii_lowercase();
+    [".html", ".htm", ".xhtml"]
+        .iter()
+        .any(|e| name.ends_with(e))
+}
+
+/// Bytes of an HTML page read to tell whether it holds X3D.
+const PAGE_SNIFF_BYTES: u64 = 16 * 1024 * 1024;
+
+/// Whether an HTML page found in a walk holds an X3D island: an `<x3d>` or `<x3d-canvas>`
+/// tag (any case) in its first [`PAGE_SNIFF_BYTES`]. What cannot be opened as a regular
+/// file is taken, to be reported when it is read.
+fn holds_island(path: &Path) -> bool {
+    let Ok(file) = read::open(path) else {
+        return true;
+    };
+    if !file.metadata().is_ok_and(|m| m.is_file()) {
+        return true;
+    }
+    let mut page = Vec::new();
+    if file.take(PAGE_SNIFF_BYTES).read_to_end(&mut page).is_err() {
+        return true;
+    }
+    has_island_tag(&page)
+}
+
+fn has_island_tag(page: &[u8]) -> bool {
+    memchr::memchr_iter(b'<', page).any(|at| {
+        let rest = &page[at + 1..];
+        rest.len() > 3
+            && rest[..3].eq_ignore_ascii_case(b"x3d")
+            && (matches!(rest[3], b'>' | b'/' | b'-') || rest[3].is_ascii_whitespace())
+    })
 }
 
 /// Whether a `.json` file found in a walk is an X3D input: its top-level object has an
@@ -383,6 +426,15 @@ fn value_end(text: &[u8], at: usize) -> Option<usize> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn html_pages_are_taken_when_they_hold_an_island() {
+        assert!(has_island_tag(b"<body><X3D width='3'><Scene>"));
+        assert!(has_island_tag(b"<body><x3d-canvas src='a.x3d'>"));
+        assert!(has_island_tag(b"<p>\n<x3d>"));
+        assert!(!has_island_tag(b"<body><x3dom-note><p>x3d</p>"));
+        assert!(is_html_name(Path::new("a/b.XHTML")));
+    }
 
     #[test]
     fn x3d_json_is_told_by_its_top_level_member() {

@@ -491,6 +491,9 @@ pub struct Document {
     /// The root element or `"X3D"` object.
     pub root_span: Span,
     pub scene_span: Option<Span>,
+    /// Read from an X3D island of an HTML page (X3DOM, X_ITE), which needs no `version` or
+    /// `profile`.
+    pub in_page: bool,
     pub nodes: Vec<Node>,
     /// The Scene's top-level nodes.
     pub scene: Vec<ChildRef>,
@@ -562,6 +565,7 @@ impl Document {
             head: Head::default(),
             root_span: Span::default(),
             scene_span: None,
+            in_page: false,
             nodes: Vec::new(),
             scene: Vec::new(),
             routes: Vec::new(),

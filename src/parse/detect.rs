@@ -11,6 +11,10 @@ pub enum Detected {
     Json,
     /// ClassicVRML (`#X3D`) or VRML97 (`#VRML V2.0`).
     Classic,
+    /// An HTML page (`xhtml`: one that starts with an XML declaration, read as XML).
+    Html {
+        xhtml: bool,
+    },
     Unsupported(Diagnostic),
 }
 
@@ -64,6 +68,9 @@ pub fn detect(source: &[u8]) -> Detected {
     if text.starts_with(b"#X3D") || text.starts_with(b"#VRML") {
         return Detected::Classic;
     }
+    if let Some(xhtml) = html_page(text) {
+        return Detected::Html { xhtml };
+    }
     match text.first() {
         Some(b'<') => Detected::Xml,
         Some(b'{') | Some(b'[') => Detected::Json,
@@ -80,6 +87,42 @@ pub fn detect(source: &[u8]) -> Detected {
             "an X3D document starts with `<X3D` (XML), `{ \"X3D\"` (JSON) or `#X3D V4.0 utf8` (ClassicVRML), a VRML97 one with `#VRML V2.0 utf8`",
         ),
     }
+}
+
+/// Whether `text` is an HTML page: after an XML declaration and comments, a DOCTYPE
+/// that does not name X3D, an `html`, `head` or `body` element, or an X3DOM fragment's lower-case `<x3d>`
+/// (an X3D document's root is `X3D`). Some(true) when it has an XML declaration: an XHTML
+/// page, which a browser reads as XML when it is served as such (`.xhtml`).
+fn html_page(text: &[u8]) -> Option<bool> {
+    let mut rest = text;
+    let mut declared = false;
+    loop {
+        let start = rest.iter().position(|b| !b.is_ascii_whitespace())?;
+        rest = &rest[start..];
+        let close: &[u8] = if rest.starts_with(b"<?xml") {
+            declared = true;
+            b"?>"
+        } else if rest.starts_with(b"<!--") {
+            b"-->"
+        } else {
+            break;
+        };
+        let end = memchr::memmem::find(rest, close)?;
+        rest = &rest[end + close.len()..];
+    }
+    let opens = |prefix: &[u8]| {
+        rest.len() > prefix.len()
+            && rest[..prefix.len()].eq_ignore_ascii_case(prefix)
+            && (rest[prefix.len()].is_ascii_whitespace() || rest[prefix.len()] == b'>')
+    };
+    // A DOCTYPE naming anything but X3D (`<!DOCTYPE>` alone among them, which browsers take).
+    let doctype = rest.len() >= 9 && rest[..9].eq_ignore_ascii_case(b"<!doctype") && {
+        let name = rest[9..].trim_ascii_start();
+        !(name.len() >= 3 && name[..3].eq_ignore_ascii_case(b"x3d"))
+    };
+    let html = doctype || [&b"<html"[..], b"<head", b"<body"].into_iter().any(opens);
+    let fragment = rest.starts_with(b"<x3d") && opens(b"<x3d");
+    (html || fragment).then_some(declared)
 }
 
 /// NUL bytes or invalid UTF-8 near the start (a multi-byte character cut by the window is fine).

@@ -7,6 +7,7 @@ pub mod classic;
 pub mod decode;
 mod detect;
 mod directive;
+pub mod html;
 pub mod huge_vec;
 pub mod json;
 pub mod number;
@@ -21,7 +22,7 @@ pub use decode::{decode, Decoded};
 pub use detect::{detect, Detected};
 
 use crate::diagnostic::Diagnostic;
-use crate::model::{Document, Encoding};
+use crate::model::{Document, Encoding, Span};
 
 /// What a reader keeps of the numeric MF values of schema fields.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
@@ -48,11 +49,46 @@ pub fn read_with_progress(source: &[u8], keep: KeepValues, progress: &dyn Progre
         Detected::Xml => xml::read_with(source, keep, progress),
         Detected::Json => json::read_with(source, keep, progress),
         Detected::Classic => classic::read_with(source, keep, progress),
+        Detected::Html { xhtml } => html::read_with(source, xhtml, keep, progress),
         Detected::Unsupported(diagnostic) => Parsed {
             encoding: None,
             document: None,
             diagnostics: vec![diagnostic],
         },
+    }
+}
+
+/// Reads an input as [`read_with_progress`] does, every X3D island of an HTML page apart
+/// (an input of another encoding is one document), each with where it starts.
+pub fn read_islands(
+    source: &[u8],
+    keep: KeepValues,
+    progress: &dyn Progress,
+) -> Vec<(Parsed, Option<Span>)> {
+    let Detected::Html { xhtml } = detect(source) else {
+        return vec![(read_with_progress(source, keep, progress), None)];
+    };
+    match html::read_islands(source, xhtml, keep, progress) {
+        Ok(islands) if islands.is_empty() => vec![(
+            Parsed {
+                encoding: Some(Encoding::Xml),
+                document: None,
+                diagnostics: vec![html::no_island()],
+            },
+            None,
+        )],
+        Ok(islands) => islands
+            .into_iter()
+            .map(|island| (island.parsed, Some(island.span)))
+            .collect(),
+        Err(diagnostic) => vec![(
+            Parsed {
+                encoding: None,
+                document: None,
+                diagnostics: vec![diagnostic],
+            },
+            None,
+        )],
     }
 }
 

@@ -30,39 +30,9 @@ pub fn read(source: &[u8]) -> Parsed {
 /// Reads an X3D XML document, keeping numeric MF values whole or as summaries, telling
 /// `progress` how far it has got.
 pub fn read_with(source: &[u8], keep: KeepValues, progress: &dyn Progress) -> Parsed {
-    let mut reader = XmlReader {
-        source,
-        pass: Pass::new(source, progress),
-        keep,
-        builder: Builder::new(Encoding::Xml),
-        stack: Vec::new(),
-        root_closed: false,
-        entities: Entities::default(),
-        directives: Following::default(),
-    };
+    let mut reader = XmlReader::new(source, keep, progress);
     let result = reader.run();
-    // The pieces' vectors pay off from one long value to the next; after the document
-    // (a render follows, or other files) they would only hold memory.
-    super::split::scratch::release();
-    let (mut document, mut diagnostics) = reader.builder.finish();
-    match result {
-        Ok(()) => {
-            document.directives = reader.directives.finish(source.len());
-            Parsed {
-                encoding: Some(Encoding::Xml),
-                document: Some(document),
-                diagnostics,
-            }
-        }
-        Err(stop) => {
-            diagnostics.push(*stop);
-            Parsed {
-                encoding: Some(Encoding::Xml),
-                document: None,
-                diagnostics,
-            }
-        }
-    }
+    reader.finish(result)
 }
 
 /// The first character that XML 1.0's Char production (2.2) leaves out, looked for a
@@ -213,7 +183,9 @@ enum DeclOwner {
     Proto(usize),
 }
 
-struct XmlReader<'s> {
+/// Builds the model from elements, attributes and text: fed by quick-xml's events here and by
+/// the HTML tree of a page's X3D island in [`html`](super::html), so that both read the same.
+pub(super) struct XmlReader<'s> {
     source: &'s [u8],
     pass: Pass<'s>,
     /// Whether numeric MF values of schema fields are kept or summarized.
@@ -228,17 +200,56 @@ struct XmlReader<'s> {
 }
 
 /// An attribute's name and value as text, with the value's place in the input.
-struct Attr<'a> {
-    name: &'a str,
-    name_span: Span,
-    value: Cow<'a, str>,
-    value_span: Span,
+pub(super) struct Attr<'a> {
+    pub(super) name: &'a str,
+    pub(super) name_span: Span,
+    pub(super) value: Cow<'a, str>,
+    pub(super) value_span: Span,
     /// Whether `value` is the input text itself (no entity was replaced), so offsets into
     /// it are offsets into the input.
-    verbatim: bool,
+    pub(super) verbatim: bool,
 }
 
 impl<'s> XmlReader<'s> {
+    pub(super) fn new(source: &'s [u8], keep: KeepValues, progress: &'s dyn Progress) -> Self {
+        XmlReader {
+            source,
+            pass: Pass::new(source, progress),
+            keep,
+            builder: Builder::new(Encoding::Xml),
+            stack: Vec::new(),
+            root_closed: false,
+            entities: Entities::default(),
+            directives: Following::default(),
+        }
+    }
+
+    /// The document built, or none when reading stopped at `result`'s error.
+    pub(super) fn finish(self, result: Result<(), Box<Diagnostic>>) -> Parsed {
+        // The pieces' vectors pay off from one long value to the next; after the document
+        // (a render follows, or other files) they would only hold memory.
+        super::split::scratch::release();
+        let (mut document, mut diagnostics) = self.builder.finish();
+        match result {
+            Ok(()) => {
+                document.directives = self.directives.finish(self.source.len());
+                Parsed {
+                    encoding: Some(Encoding::Xml),
+                    document: Some(document),
+                    diagnostics,
+                }
+            }
+            Err(stop) => {
+                diagnostics.push(*stop);
+                Parsed {
+                    encoding: Some(Encoding::Xml),
+                    document: None,
+                    diagnostics,
+                }
+            }
+        }
+    }
+
     fn run(&mut self) -> Result<(), Box<Diagnostic>> {
         if self.source.len() > MAX_INPUT_BYTES {
             return Err(self.malformed(0, "the input is larger than 4 GiB"));
@@ -269,12 +280,8 @@ impl<'s> XmlReader<'s> {
                 return Err(self.forbidden_char(bad));
             }
             match event {
-                Event::Start(element) => {
-                    self.directives.start(self.stack.len(), start);
-                    self.start(&element, start, end, false)?;
-                }
+                Event::Start(element) => self.start(&element, start, end, false)?,
                 Event::Empty(element) => {
-                    self.directives.start(self.stack.len(), start);
                     self.start(&element, start, end, true)?;
                     self.end(end);
                 }
@@ -324,7 +331,12 @@ impl<'s> XmlReader<'s> {
 
     /// Text and CDATA: source code for Script and shader parts; elsewhere only whitespace
     /// is expected, and the root must be followed by nothing but whitespace.
-    fn text(&mut self, start: usize, end: usize, cdata: bool) -> Result<(), Box<Diagnostic>> {
+    pub(super) fn text(
+        &mut self,
+        start: usize,
+        end: usize,
+        cdata: bool,
+    ) -> Result<(), Box<Diagnostic>> {
         let blank = self.source[start..end]
             .iter()
             .all(|b| b.is_ascii_whitespace());
@@ -427,9 +439,23 @@ impl<'s> XmlReader<'s> {
         end: usize,
         empty: bool,
     ) -> Result<(), Box<Diagnostic>> {
-        let name = element.name().0.to_string();
-        let name_span = Span::new(start + 1, start + 1 + name.len());
+        let name = element.name().0;
         let attrs = self.attributes(element, start)?;
+        self.open(name, &attrs, start, end, empty)
+    }
+
+    /// An element `name` from `start` to the end of its start tag (`end`), `name` written
+    /// right after `start`'s `<`; `empty` when it has no content. Its end is [`Self::end`].
+    pub(super) fn open(
+        &mut self,
+        name: &str,
+        attrs: &[Attr],
+        start: usize,
+        end: usize,
+        empty: bool,
+    ) -> Result<(), Box<Diagnostic>> {
+        self.directives.start(self.stack.len(), start);
+        let name_span = Span::new(start + 1, start + 1 + name.len());
         let frame = match self.stack.last() {
             None => {
                 if self.root_closed {
@@ -442,12 +468,12 @@ impl<'s> XmlReader<'s> {
                         format!("the root element is `{name}`, not `X3D`"),
                     )));
                 }
-                self.root(&attrs, Span::new(start, end));
+                self.root(attrs, Span::new(start, end));
                 Frame::Root
             }
             Some(parent) => {
                 let context = Context::of(parent);
-                self.child(context, &name, name_span, &attrs, start, end, empty)
+                self.child(context, name, name_span, attrs, start, end, empty)
             }
         };
         self.stack.push(frame);
@@ -648,7 +674,7 @@ impl<'s> XmlReader<'s> {
 
     /// A comment `<!-- … -->` from `start` to `end`: kept when addressed to x3dcheck; one
     /// before the root element applies to the whole file.
-    fn comment(&mut self, start: usize, end: usize) {
+    pub(super) fn comment(&mut self, start: usize, end: usize) {
         let inner = Span::new(start + 4, end.saturating_sub(3).max(start + 4));
         if let Some(text) = addressed(self.source, inner) {
             let before_root = self.stack.is_empty() && !self.root_closed;
@@ -657,7 +683,7 @@ impl<'s> XmlReader<'s> {
         }
     }
 
-    fn end(&mut self, end: usize) {
+    pub(super) fn end(&mut self, end: usize) {
         if !self.stack.is_empty() {
             self.directives.end(self.stack.len() - 1, end);
         }

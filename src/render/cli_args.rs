@@ -20,6 +20,10 @@ pub struct RenderArgs {
     /// 0 0 10, as a browser binds) or the DEF name of a Viewpoint
     #[arg(long, value_name = "auto|browser|DEF", default_value = "auto")]
     pub camera: String,
+    /// The X3D island of an HTML page to render, 1-based (a page may hold several
+    /// `<x3d>` elements; the report names each when there are several)
+    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..))]
+    pub island: u32,
 }
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]

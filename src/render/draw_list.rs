@@ -67,6 +67,9 @@ pub struct Layer {
     pub background: Option<Background>,
     pub fog: Option<Fog>,
     pub lights: Vec<Light>,
+    /// The image-based light of the layer's first EnvironmentLight; its colour,
+    /// intensity, ambientIntensity and reach are those of its entry in `lights`.
+    pub environment: Option<Environment>,
     pub meshes: Vec<Mesh>,
 }
 
@@ -168,6 +171,33 @@ pub enum LightKind {
     Directional,
     Point,
     Spot,
+    /// An EnvironmentLight: its image-based part is the layer's [`Environment`].
+    Environment,
+}
+
+/// An EnvironmentLight's image-based lighting (X3D 4.1, 17.4): light arriving from every
+/// direction of a distant environment, as glTF's EXT_lights_image_based gives it.
+#[derive(Clone, Debug)]
+pub struct Environment {
+    /// Rotation from world axes to the environment's: the inverse of the light's world
+    /// rotation composed with its `rotation` field.
+    pub from_world: glam::Quat,
+    /// `diffuseCoefficients`: the irradiance of the environment as L2 spherical
+    /// harmonics, nine RGB coefficients in the order L00, L1−1, L10, L11, L2−2, L2−1, L20,
+    /// L21, L22 (glTF's irradianceCoefficients), finite.
+    pub irradiance: Option<[[f32; 3]; 9]>,
+    /// The environment's radiance (`specularTexture`), prefiltered by roughness on the GPU.
+    pub specular: Option<CubeImage>,
+    /// A precomputed irradiance map (`diffuseTexture`), sampled along the normal.
+    pub diffuse: Option<CubeImage>,
+}
+
+/// A cube map in linear light: six square faces in the order +X, −X, +Y, −Y, +Z, −Z,
+/// each `size` × `size` RGBA8 with rows from the top, oriented as WebGPU's cube faces.
+#[derive(Clone, Debug)]
+pub struct CubeImage {
+    pub size: u32,
+    pub faces: [Vec<u8>; 6],
 }
 
 #[derive(Copy, Clone, Debug)]
@@ -304,6 +334,11 @@ pub struct Material {
     /// and sets aside the Color node (else, and always in 4.x, the texture multiplies
     /// it: 17.2.2.3 mixTexture). Its alpha always multiplies 1 − transparency.
     pub texture_replaces_rgb: bool,
+    /// Which colour the Phong ambient term scales: X3D 3.x's diffuse factor ODrgb (after
+    /// the main texture and the Color node, 3.3 17.2.2.4) when true; X3D 4's
+    /// `ambientIntensity × diffuseColor × textureSample(ambientTexture).rgb` (17.2.2.5)
+    /// when false. See `plain_surface` in `shader.wgsl`.
+    pub ambient_of_diffuse_factor: bool,
 }
 
 /// A texture as a material samples it: the image, and the mesh's coordinate set.

@@ -9,7 +9,7 @@
 
 struct Light {
     color_intensity: vec4<f32>,    // rgb colour, intensity
-    location_kind: vec4<f32>,      // xyz location, kind (0 directional, 1 point, 2 spot)
+    location_kind: vec4<f32>,      // xyz location, kind (0 directional, 1 point, 2 spot, 3 environment)
     direction_ambient: vec4<f32>,  // xyz unit direction of travel, ambientIntensity
     attenuation_radius: vec4<f32>, // c1, c2, c3, radius
     spot: vec4<f32>,               // beamWidth, cutOffAngle
@@ -53,6 +53,13 @@ fn incidence(light: Light, p: vec3<f32>) -> Incidence {
     if kind == 0u {
         result.factor = 1.0;
         result.to_light = -light.direction_ambient.xyz;
+        return result;
+    }
+    if kind == 3u {
+        // An EnvironmentLight has no direction: of the equations here only the Phong
+        // ambient term reaches (its image-based light is `environment_physical`).
+        result.factor = 1.0;
+        result.to_light = vec3<f32>(0.0);
         return result;
     }
     let offset = light.location_kind.xyz - p;

@@ -28,6 +28,9 @@ struct Globals {
     sky: array<vec4<f32>, 8>,      // rgb, angle from the zenith
     ground: array<vec4<f32>, 8>,   // rgb, angle from the nadir
     lights: array<Light, 16>,
+    env_sh: array<vec4<f32>, 9>,         // EnvironmentLight irradiance, L2 spherical harmonics
+    env_from_world: array<vec4<f32>, 3>, // columns: world axes to the environment's
+    env_info: vec4<u32>,                 // ENV_ bits, prefiltered mip levels
 };
 
 struct Material {
@@ -35,7 +38,7 @@ struct Material {
     emissive_model: vec4<f32>,     // emissive colour, model (0 unlit, 1 Phong, 2 physical)
     specular_shininess: vec4<f32>, // specular colour, shininess × 128
     params: vec4<f32>,             // ambientIntensity, metallic, roughness, normalScale
-    extra: vec4<f32>,              // occlusionStrength, texture replaces rgb, replaces alpha (3.x)
+    extra: vec4<f32>,              // occlusionStrength, texture replaces rgb (3.x), ambient of the diffuse factor (3.x)
 };
 
 struct Draw {
@@ -63,10 +66,14 @@ const ROLE_AMBIENT: u32 = 32u;
 
 // Read-only storage buffers on most devices: `Parameters` in `gpu/pipelines.rs` says why.
 @group(0) @binding(0) var<uniform> globals: Globals;
+@group(0) @binding(1) var t_env_specular: texture_cube<f32>;
+@group(0) @binding(2) var t_env_diffuse: texture_cube<f32>;
+@group(0) @binding(3) var t_brdf: texture_2d<f32>;
+@group(0) @binding(4) var s_env: sampler;
 @group(1) @binding(0) var<uniform> draw: Draw;
 // The Background's panorama (transparent where it has none).
-@group(0) @binding(1) var t_panorama: texture_cube<f32>;
-@group(0) @binding(2) var s_panorama: sampler;
+@group(0) @binding(5) var t_panorama: texture_cube<f32>;
+@group(0) @binding(6) var s_panorama: sampler;
 @group(2) @binding(0) var t_stage0: texture_2d<f32>;
 @group(2) @binding(1) var t_stage1: texture_2d<f32>;
 @group(2) @binding(2) var t_stage2: texture_2d<f32>;
@@ -231,11 +238,91 @@ fn phong(s: Surface, p: vec3<f32>, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
     return s.emissive + s.occlusion * min(sum, vec3<f32>(MAX_RADIANCE));
 }
 
+// What the EnvironmentLight has (bits of env_info.x; `gpu/environment.rs`).
+const ENV_SH: u32 = 1u;
+const ENV_SPECULAR: u32 = 2u;
+const ENV_DIFFUSE: u32 = 4u;
+
+fn env_direction(d: vec3<f32>) -> vec3<f32> {
+    let m = globals.env_from_world;
+    return m[0].xyz * d.x + m[1].xyz * d.y + m[2].xyz * d.z;
+}
+
+// The irradiance E(n) of the diffuseCoefficients over π: the light a white Lambertian
+// surface facing n reflects. The coefficients are of the irradiance (glTF's
+// irradianceCoefficients), on the real L2 basis of Ramamoorthi and Hanrahan (2001), in
+// the order L00, L1−1, L10, L11, L2−2, L2−1, L20, L21, L22.
+fn sh_irradiance(n: vec3<f32>) -> vec3<f32> {
+    let c = globals.env_sh;
+    let e = c[0].rgb * 0.282095
+        + c[1].rgb * (0.488603 * n.y)
+        + c[2].rgb * (0.488603 * n.z)
+        + c[3].rgb * (0.488603 * n.x)
+        + c[4].rgb * (1.092548 * n.x * n.y)
+        + c[5].rgb * (1.092548 * n.y * n.z)
+        + c[6].rgb * (0.315392 * (3.0 * n.z * n.z - 1.0))
+        + c[7].rgb * (1.092548 * n.x * n.z)
+        + c[8].rgb * (0.546274 * (n.x * n.x - n.y * n.y));
+    return max(e, vec3<f32>(0.0)) / PI;
+}
+
+// The diffuse light along the world normal n: the irradiance map, else the coefficients.
+fn env_diffuse(n: vec3<f32>) -> vec3<f32> {
+    let flags = globals.env_info.x;
+    let d = env_direction(n);
+    if (flags & ENV_DIFFUSE) != 0u {
+        return textureSampleLevel(t_env_diffuse, s_env, d, 0.0).rgb;
+    }
+    if (flags & ENV_SH) != 0u {
+        return sh_irradiance(d);
+    }
+    return vec3<f32>(0.0);
+}
+
+// The radiance along the world reflection r prefiltered for `roughness`. Without a
+// specularTexture the coefficients' irradiance stands in: the environment as blurred as
+// roughness 1 blurs it (darker and duller than a real reflection at low roughness).
+fn env_specular(r: vec3<f32>, roughness: f32) -> vec3<f32> {
+    let flags = globals.env_info.x;
+    let d = env_direction(r);
+    if (flags & ENV_SPECULAR) != 0u {
+        let lod = roughness * f32(max(globals.env_info.y, 1u) - 1u);
+        return textureSampleLevel(t_env_specular, s_env, d, lod).rgb;
+    }
+    if (flags & ENV_SH) != 0u {
+        return sh_irradiance(d);
+    }
+    return vec3<f32>(0.0);
+}
+
+// An EnvironmentLight's image-based light on a PhysicalMaterial, as the glTF Sample
+// Viewer computes it (split sum): diffuse = irradiance × c_diff, specular = prefiltered
+// radiance × (F × A + B) with the BRDF table's A and B at (n·v, roughness) and a Fresnel
+// term raised for rough surfaces; times the light's colour and intensity.
+fn environment_physical(light: Light, s: Surface, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
+    let metallic = clamp(s.metallic, 0.0, 1.0);
+    let roughness = clamp(s.roughness, 0.0, 1.0);
+    let c_diff = mix(s.diffuse, vec3<f32>(0.0), metallic);
+    let f0 = mix(vec3<f32>(0.04), s.diffuse, metallic);
+    let n_dot_v = clamp(dot(n, v), 0.0, 1.0);
+    let brdf = textureSampleLevel(t_brdf, s_env, vec2<f32>(n_dot_v, roughness), 0.0).rg;
+    let fresnel = f0 + (max(vec3<f32>(1.0 - roughness), f0) - f0) * pow(1.0 - n_dot_v, 5.0);
+    let specular = env_specular(reflect(-v, n), roughness) * (fresnel * brdf.x + brdf.y);
+    let diffuse = env_diffuse(n) * c_diff;
+    let radiance = light.color_intensity.rgb * light.color_intensity.w * (diffuse + specular);
+    return min(radiance, vec3<f32>(MAX_RADIANCE));
+}
+
 fn physical(s: Surface, p: vec3<f32>, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
     var sum = vec3<f32>(0.0);
     for (var i = 0u; i < globals.counts.y; i = i + 1u) {
         if (draw.misc.x & (1u << i)) != 0u {
-            sum = sum + light_physical(globals.lights[i], s, p, n, v);
+            let light = globals.lights[i];
+            if u32(light.location_kind.w) == 3u {
+                sum = sum + environment_physical(light, s, n, v);
+            } else {
+                sum = sum + light_physical(light, s, p, n, v);
+            }
         }
     }
     return s.emissive + s.occlusion * min(sum, vec3<f32>(MAX_RADIANCE));
@@ -261,9 +348,12 @@ fn plain_surface(m: Material, color: vec3<f32>) -> Surface {
     s.emissive = m.emissive_model.rgb;
     s.specular = m.specular_shininess.rgb;
     s.shininess = m.specular_shininess.w;
-    // ambientParameter: ambientIntensity × the diffuse factor (as 3.3's ODrgb, which the
-    // 4.0 backward-compatibility note keeps).
-    s.ambient = m.params.x * color;
+    // ambientParameter. X3D 4 (17.2.2.5): ambientIntensity × diffuseColor ×
+    // textureSample(ambientTexture).rgb: the Material's own diffuseColor, neither the main
+    // texture nor a Color node (the ambient texture, multiplied in by `fs_phong`, is the
+    // ambient term's own texture). X3D 3.x (3.3's ambient_i = Iia × ODrgb × Oa): the
+    // diffuse factor ODrgb of Table 17.3, main texture and Color node included.
+    s.ambient = m.params.x * select(m.diffuse_alpha.rgb, color, m.extra.z != 0.0);
     s.metallic = m.params.y;
     s.roughness = m.params.z;
     s.occlusion = 1.0;

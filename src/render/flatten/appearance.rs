@@ -543,6 +543,7 @@ impl Walker<'_> {
         let doc = context.doc;
         let alpha = |field: &str| 1.0 - unit(float(doc, id, field, 0.0));
         let name = doc.node(id).type_name();
+        let version_3 = self.options.x3d_version_3;
         let shared = |m: Material| Material {
             normal_scale: float(doc, id, "normalScale", 1.0).max(0.0),
             occlusion_strength: unit(float(doc, id, "occlusionStrength", 1.0)),
@@ -566,6 +567,7 @@ impl Walker<'_> {
                 ambient_intensity: unit(float(doc, id, &field("ambientIntensity"), 0.2)),
                 shininess: unit(float(doc, id, &field("shininess"), 0.2)) * 128.0,
                 alpha: alpha(&field("transparency")),
+                ambient_of_diffuse_factor: version_3,
                 ..default_unlit()
             }
         };
@@ -696,6 +698,7 @@ pub fn default_unlit() -> Material {
         normal_scale: 1.0,
         occlusion_strength: 1.0,
         texture_replaces_rgb: false,
+        ambient_of_diffuse_factor: false,
     }
 }
 

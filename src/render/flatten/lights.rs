@@ -5,8 +5,8 @@ use glam::{DMat4, DQuat, DVec3};
 
 use super::{place, Context, Walker};
 use crate::model::NodeId;
-use crate::render::draw_list::{Light, LightKind, MAX_LIGHTS};
-use crate::render::fields::{boolean, color, float, unit, vec3};
+use crate::render::draw_list::{Environment, Light, LightKind, MAX_LIGHTS};
+use crate::render::fields::{boolean, child, color, float, floats, rotation, unit, vec3};
 
 /// The largest intensity drawn (4.x allows [0, ∞)).
 pub const MAX_INTENSITY: f32 = 1e15;
@@ -37,6 +37,15 @@ impl Walker<'_> {
             "DirectionalLight" => LightKind::Directional,
             "PointLight" => LightKind::Point,
             "SpotLight" => LightKind::Spot,
+            "EnvironmentLight" if self.image_light.is_some() => {
+                self.note(
+                    context,
+                    id,
+                    "only the first EnvironmentLight of a layer is drawn".into(),
+                );
+                return None;
+            }
+            "EnvironmentLight" => LightKind::Environment,
             other => {
                 self.note(context, id, format!("{other} is not drawn"));
                 return None;
@@ -79,8 +88,60 @@ impl Walker<'_> {
             beam_width,
             cut_off_angle,
         };
+        if kind == LightKind::Environment {
+            let environment = self.image_light(context, id, world);
+            self.image_light = Some(environment);
+        }
         self.lights.push(PendingLight { light, location });
         Some(1 << (self.lights.len() - 1))
+    }
+
+    /// An EnvironmentLight's image-based part.
+    fn image_light(&mut self, context: Context, id: NodeId, world: DMat4) -> Environment {
+        let doc = context.doc;
+        let turned = world.to_scale_rotation_translation().1 * rotation(doc, id, "rotation");
+        let coefficients = floats(doc, id, "diffuseCoefficients");
+        let irradiance = match coefficients.len() {
+            0 => None,
+            27 if coefficients.iter().all(|c| c.is_finite()) => Some(std::array::from_fn(|i| {
+                std::array::from_fn(|c| coefficients[3 * i + c])
+            })),
+            n => {
+                self.note(
+                    context,
+                    id,
+                    format!(
+                        "EnvironmentLight diffuseCoefficients is not used: it needs 27 finite \
+                         values (nine RGB spherical harmonic coefficients), it has {n}"
+                    ),
+                );
+                None
+            }
+        };
+        // The cube-map texture nodes are read by another part of the renderer, not yet
+        // joined to this one.
+        for field in ["specularTexture", "diffuseTexture"] {
+            if child(doc, id, field).is_some() {
+                self.note(
+                    context,
+                    id,
+                    format!("EnvironmentLight {field} not loaded yet"),
+                );
+            }
+        }
+        if irradiance.is_none() {
+            self.note(
+                context,
+                id,
+                "EnvironmentLight without diffuseCoefficients lights nothing yet".into(),
+            );
+        }
+        Environment {
+            from_world: turned.inverse().as_quat(),
+            irradiance,
+            specular: None,
+            diffuse: None,
+        }
     }
 }
 

@@ -136,6 +136,8 @@ struct Walker<'o> {
     shapes: Vec<Pending>,
     lights: Vec<lights::PendingLight>,
     global_lights: u32,
+    /// The layer's first EnvironmentLight drawn.
+    image_light: Option<super::draw_list::Environment>,
     textures: Vec<super::draw_list::Texture>,
     cube_textures: Vec<super::cube_map::CubeImage>,
     /// (document serial, node) → loaded texture.
@@ -186,6 +188,7 @@ pub fn flatten(doc: &Document, options: &Options) -> Result<Flattened, String> {
         shapes: Vec::new(),
         lights: Vec::new(),
         global_lights: 0,
+        image_light: None,
         textures: Vec::new(),
         cube_textures: Vec::new(),
         texture_cache: HashMap::new(),
@@ -647,6 +650,7 @@ impl Walker<'_> {
             background,
             fog: environment.fog.flatten(),
             lights,
+            environment: self.image_light.take(),
             meshes,
         });
         self.lights.clear();

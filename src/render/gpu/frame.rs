@@ -5,6 +5,7 @@
 
 use wgpu::util::DeviceExt;
 
+use super::environment;
 use super::pipelines::{PipelineKey, Pipelines, COLOR_FORMAT, DEPTH_FORMAT, VERTEX_SLOTS};
 use super::resources::{
     index_bounds, upload_indices, upload_mesh, upload_surface_part, MeshBuffers, SurfacePart,
@@ -104,6 +105,7 @@ pub async fn draw(
                 contents: bytemuck::bytes_of(&globals),
                 usage: pipelines.parameters.usage(),
             });
+            let maps = environment::Maps::new(device, queue, layer.environment.as_ref());
             device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: None,
                 layout: &pipelines.globals_layout,
@@ -114,12 +116,28 @@ pub async fn draw(
                     },
                     wgpu::BindGroupEntry {
                         binding: 1,
+                        resource: wgpu::BindingResource::TextureView(&maps.specular),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 2,
+                        resource: wgpu::BindingResource::TextureView(&maps.diffuse),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 3,
+                        resource: wgpu::BindingResource::TextureView(&maps.brdf),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 4,
+                        resource: wgpu::BindingResource::Sampler(&maps.sampler),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: 5,
                         resource: wgpu::BindingResource::TextureView(
                             bindings.panorama(layer.background.as_ref().and_then(|b| b.panorama)),
                         ),
                     },
                     wgpu::BindGroupEntry {
-                        binding: 2,
+                        binding: 6,
                         resource: wgpu::BindingResource::Sampler(bindings.cube_sampler()),
                     },
                 ],

@@ -1,6 +1,7 @@
 //! The GPU part: draws a [`DrawList`] offscreen with wgpu and reads the image back. It
 //! trusts the draw list's guarantees (see [`super::draw_list`]) and knows nothing of X3D.
 
+mod environment;
 mod frame;
 mod pipelines;
 mod resources;

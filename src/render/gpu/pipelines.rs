@@ -186,11 +186,32 @@ impl<'d> Pipelines<'d> {
                 },
             ]
         };
-        let [panorama, panorama_sampler] = cube_entries(1);
+        let [panorama, panorama_sampler] = cube_entries(5);
+        // The globals, then the EnvironmentLight's maps (`environment::Maps`): the
+        // prefiltered radiance and the irradiance cubes, the BRDF table, their sampler.
+        let environment_texture = |binding, view_dimension| wgpu::BindGroupLayoutEntry {
+            binding,
+            visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+            ty: wgpu::BindingType::Texture {
+                sample_type: wgpu::TextureSampleType::Float { filterable: true },
+                view_dimension,
+                multisampled: false,
+            },
+            count: None,
+        };
         let globals_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("globals"),
             entries: &[
                 parameter_entry(false, size_of::<Globals>()),
+                environment_texture(1, wgpu::TextureViewDimension::Cube),
+                environment_texture(2, wgpu::TextureViewDimension::Cube),
+                environment_texture(3, wgpu::TextureViewDimension::D2),
+                wgpu::BindGroupLayoutEntry {
+                    binding: 4,
+                    visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+                    count: None,
+                },
                 panorama,
                 panorama_sampler,
             ],

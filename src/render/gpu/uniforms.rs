@@ -33,6 +33,12 @@ pub struct Globals {
     sky: [[f32; 4]; MAX_GRADIENT],
     ground: [[f32; 4]; MAX_GRADIENT],
     lights: [GpuLight; MAX_LIGHTS],
+    /// The EnvironmentLight's SH irradiance coefficients (rgb).
+    env_sh: [[f32; 4]; 9],
+    /// Columns of the rotation from world axes to the environment's.
+    env_from_world: [[f32; 4]; 3],
+    /// What it has (`environment::ENV_…`), its prefiltered mip levels.
+    env_info: [u32; 4],
 }
 
 #[repr(C)]
@@ -87,7 +93,7 @@ fn gpu_material(m: &Material) -> GpuMaterial {
         extra: [
             m.occlusion_strength,
             f32::from(u8::from(m.texture_replaces_rgb)),
-            0.0,
+            f32::from(u8::from(m.ambient_of_diffuse_factor)),
             0.0,
         ],
     }
@@ -199,6 +205,7 @@ pub fn globals(list: &Layer, width: u32, height: u32, scale: u32, cubes: &[CubeI
             LightKind::Directional => 0.0,
             LightKind::Point => 1.0,
             LightKind::Spot => 2.0,
+            LightKind::Environment => 3.0,
         };
         let [r, g, b] = light.color;
         let [x, y, z] = light.location;
@@ -264,6 +271,27 @@ pub fn globals(list: &Layer, width: u32, height: u32, scale: u32, cubes: &[CubeI
         sky: gradient(&background.sky),
         ground: gradient(&background.ground),
         lights,
+        env_sh: match list.environment.as_ref().and_then(|e| e.irradiance) {
+            Some(sh) => sh.map(|[r, g, b]| [r, g, b, 0.0]),
+            None => [[0.0; 4]; 9],
+        },
+        env_from_world: {
+            let rotation = list
+                .environment
+                .as_ref()
+                .map_or(glam::Quat::IDENTITY, |e| e.from_world);
+            let m = glam::Mat3::from_quat(rotation);
+            [m.x_axis, m.y_axis, m.z_axis].map(|c| c.extend(0.0).to_array())
+        },
+        env_info: match &list.environment {
+            Some(e) => [
+                super::environment::flags(e),
+                super::environment::specular_levels(e.specular.as_ref().map_or(1, |c| c.size)),
+                0,
+                0,
+            ],
+            None => [0; 4],
+        },
     }
 }
 

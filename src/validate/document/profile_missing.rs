@@ -26,6 +26,9 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 7.2.5.3 (PROFILE statement).
+    ///
+    /// Not reported for an X3D island of an HTML page, which X3DOM and X_ITE read without
+    /// `profile`.
     pub static PROFILE_MISSING = {
         severity: Warning,
         level: Fast,
@@ -36,7 +39,8 @@ crate::declare_rule! {
 }
 
 fn check(ctx: &mut Ctx) {
-    if ctx.doc.profile.is_none() && ctx.version != Version::Vrml97 {
+    // An island of an HTML page is read by X3DOM and X_ITE without one.
+    if ctx.doc.profile.is_none() && ctx.version != Version::Vrml97 && !ctx.doc.in_page {
         ctx.report(
             Diagnostic::new(
                 &PROFILE_MISSING,

@@ -26,6 +26,10 @@ crate::declare_rule! {
     /// appinfo quoted below (the same in 3.x and 4.1); the JSON schema's X3D object requires
     /// `@version` likewise.
     /// > "Warning: version is required and must be specified in source document." (x3d-4.0.xsd, X3D element, version attribute)
+    ///
+    /// Not reported for an X3D island of an HTML page: that is no document of the XML
+    /// encoding, and X3DOM and X_ITE read islands without `version` (their own examples
+    /// have none); such an island is checked against 4.1.
     pub static X3D_VERSION_MISSING = {
         severity: Error,
         level: Fast,
@@ -37,7 +41,9 @@ crate::declare_rule! {
 
 fn check(ctx: &mut Ctx) {
     // A VRML97 file has its version from its header line, not from a `version`.
-    if ctx.doc.version_text.is_some() || ctx.doc.version == Some(Version::Vrml97) {
+    // An island of an HTML page is read by X3DOM and X_ITE without one.
+    if ctx.doc.version_text.is_some() || ctx.doc.version == Some(Version::Vrml97) || ctx.doc.in_page
+    {
         return;
     }
     let help = match ctx.doc.version_hint {
