@@ -245,6 +245,7 @@ fn render_at_fast_keeps_the_values_and_draws_what_standard_draws() {
             },
             quality: x3dcheck::render::Quality::Balanced,
             camera: "auto".to_string(),
+            island: 1,
         };
         let preview =
             x3dcheck::render::prepare(&args, &scene, None, &source, doc.as_ref(), &mut report)

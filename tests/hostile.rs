@@ -353,6 +353,7 @@ fn image_bombs_are_not_drawn() {
         },
         quality: Quality::Fast,
         camera: "auto".to_string(),
+        island: 1,
     };
     let started = Instant::now();
     render_image(

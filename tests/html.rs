@@ -8,7 +8,7 @@ use std::path::Path;
 use common::{scratch, stdout, x3dcheck};
 use x3dcheck::check::check_document;
 use x3dcheck::config::CheckConfig;
-use x3dcheck::validate::Level;
+use x3dcheck::diagnostic::Level;
 
 fn deep() -> CheckConfig {
     CheckConfig {

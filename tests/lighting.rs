@@ -519,6 +519,7 @@ fn flattened_lights(fields: &str) -> Vec<Light> {
         },
         quality: Quality::Fast,
         camera: "auto".to_string(),
+        island: 1,
     };
     let settings = Settings {
         shading: Shading::Gouraud,

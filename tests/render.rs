@@ -50,6 +50,7 @@ fn args() -> RenderArgs {
         },
         quality: Quality::Balanced,
         camera: "auto".to_string(),
+        island: 1,
     }
 }
 

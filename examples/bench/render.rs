@@ -404,6 +404,7 @@ impl Loaded {
             size,
             quality: Quality::Balanced,
             camera: self.camera.clone(),
+            island: 1,
         };
         let mut report = self.report.clone();
         let started = Instant::now();

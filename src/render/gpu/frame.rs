@@ -872,6 +872,7 @@ mod tests {
             },
             quality: Quality::Balanced,
             camera: "auto".to_string(),
+            island: 1,
         };
         let list = preview(
             &args,
