@@ -1,5 +1,6 @@
 //! Texturing component (clause 18), RULES.md §5.
 
+pub mod cube_map_face_size;
 pub(crate) mod data_url;
 pub(crate) mod files;
 pub mod image_format_unsupported;
@@ -26,6 +27,7 @@ pub static RULES: &[&Check] = &[
     &texture_repeat_ignored::CHECK,
     &texture_transform_singular::CHECK,
     &pixel_texture_size_mismatch::CHECK,
+    &cube_map_face_size::CHECK,
     &image_url_empty::CHECK,
     &url_unresolved::CHECK,
     &image_unreadable::CHECK,
