@@ -12,8 +12,8 @@ use std::path::Path;
 use x3dcheck::config::CheckConfig;
 use x3dcheck::diagnostic::Level;
 use x3dcheck::report::FileReport;
-use x3dcheck::schema::{clauses, Version};
 use x3dcheck::schema::clauses::SEQUENCER_KEYS;
+use x3dcheck::schema::{clauses, Version};
 use x3dcheck::validate::find_rule;
 
 /// Codes whose findings always concern a node or a statement inside the Scene.

@@ -14,8 +14,8 @@ use super::resolve::VRML97_GRAMMAR;
 use super::{FileReport, Related, Resolved, ResolvedEdit, ResolvedFix, Stats, Summary};
 use crate::diagnostic::{find_rule_in, Applicability, Rule, Severity};
 use crate::model::{Encoding, Span};
-use crate::shard::Shard;
 use crate::schema::clauses::SEQUENCER_KEYS;
+use crate::shard::Shard;
 
 const TOOL: &str = "x3dcheck";
 const VERSION: &str = env!("CARGO_PKG_VERSION");

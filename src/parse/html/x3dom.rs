@@ -46,7 +46,6 @@ pub const NODES: &[&str] = &[
     "rectangulartorus",
     "refinementtexture",
     "remoteselectiongroup",
-    "renderedtexture",
     "slopedcylinder",
     "snout",
     "solidofrevolution",

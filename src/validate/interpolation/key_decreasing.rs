@@ -1,9 +1,9 @@
 //! KEY_DECREASING: an interpolator or sequencer key smaller than the key before it.
 
 use crate::diagnostic::Diagnostic;
+use crate::schema::clauses::SEQUENCER_KEYS;
 use crate::validate::events::wiring::{routed_fields, set_elsewhere};
 use crate::validate::numbers::first_decrease;
-use crate::schema::clauses::SEQUENCER_KEYS;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

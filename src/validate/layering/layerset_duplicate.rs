@@ -1,7 +1,7 @@
 //! LAYERSET_DUPLICATE: a second LayerSet in the scene.
 
-use crate::model::Scope;
 use crate::diagnostic::Diagnostic;
+use crate::model::Scope;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -1,8 +1,8 @@
 //! LAYERSET_NOT_ROOT: a LayerSet held in a field of another node.
 
 use super::is_layer_set;
-use crate::model::{FieldEntry, FieldRef, NodeId};
 use crate::diagnostic::Diagnostic;
+use crate::model::{FieldEntry, FieldRef, NodeId};
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -10,12 +10,14 @@ pub mod export_undefined;
 pub mod import_inline_undefined;
 pub mod import_unresolved;
 pub mod imports;
+pub mod inline_components_exceed;
 pub mod inline_cycle;
 pub mod inlines;
 
 /// This group's rules, in catalogue order.
 pub static RULES: &[&Check] = &[
     &inline_cycle::CHECK,
+    &inline_components_exceed::CHECK,
     &export_undefined::CHECK,
     &import_inline_undefined::CHECK,
     &import_unresolved::CHECK,

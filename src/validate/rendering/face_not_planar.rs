@@ -3,8 +3,8 @@
 
 use super::face_not_convex::{face_corners, is_warped};
 use super::geometry::{judge_polygonal, Points, ScalarSpans};
-use crate::model::faces::PolygonKind;
 use crate::diagnostic::Diagnostic;
+use crate::model::faces::PolygonKind;
 use crate::validate::Ctx;
 
 crate::declare_rule! {

@@ -434,6 +434,26 @@ pub fn bytes_channels(bytes: &[u8]) -> Option<u8> {
     Some(image::ImageDecoder::color_type(&reader.into_decoder().ok()?).channel_count())
 }
 
+/// The width and height an image file's header announces, without decoding its pixels;
+/// None when it cannot be read as an image.
+pub fn file_dimensions(path: &Path) -> Option<(u32, u32)> {
+    image::ImageReader::open(path)
+        .ok()?
+        .with_guessed_format()
+        .ok()?
+        .into_dimensions()
+        .ok()
+}
+
+/// [`file_dimensions`] of the image a `data:` URL carries.
+pub fn bytes_dimensions(bytes: &[u8]) -> Option<(u32, u32)> {
+    image::ImageReader::new(std::io::Cursor::new(bytes))
+        .with_guessed_format()
+        .ok()?
+        .into_dimensions()
+        .ok()
+}
+
 /// What the image a `data:` URL carries is (decoded within the same limits as files).
 pub fn probe_bytes(bytes: &[u8]) -> Probe {
     let reader = image::ImageReader::new(std::io::Cursor::new(bytes));

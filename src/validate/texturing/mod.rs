@@ -1,6 +1,7 @@
 //! Texturing component (clause 18), RULES.md §5.
 
 pub mod composed_texture3d_count_not_power_of_two;
+pub mod cube_map_face_size;
 pub(crate) mod files;
 pub mod image_format_unsupported;
 pub mod image_unreadable;
@@ -27,6 +28,7 @@ pub static RULES: &[&Check] = &[
     &texture_transform_singular::CHECK,
     &pixel_texture_size_mismatch::CHECK,
     &composed_texture3d_count_not_power_of_two::CHECK,
+    &cube_map_face_size::CHECK,
     &image_url_empty::CHECK,
     &url_unresolved::CHECK,
     &image_unreadable::CHECK,
