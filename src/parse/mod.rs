@@ -85,7 +85,7 @@ pub fn read_islands(
             Parsed {
                 encoding: None,
                 document: None,
-                diagnostics: vec![diagnostic],
+                diagnostics: vec![*diagnostic],
             },
             None,
         )],

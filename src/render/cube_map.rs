@@ -290,7 +290,7 @@ fn source_of(layer: usize, column: u32, row: u32, side: u32) -> (Face, u32, u32)
         4 => [sc, -tc, n],
         _ => [-sc, -tc, -n],
     };
-    let face = Face::of_axis(layer / 2, layer % 2 == 0);
+    let face = Face::of_axis(layer / 2, layer.is_multiple_of(2));
     let (right, up) = face.right_up();
     let dot = |a: [i64; 3]| a[0] * d[0] + a[1] * d[1] + a[2] * d[2];
     let (u, v) = (dot(right), dot(up));

@@ -40,13 +40,14 @@ pub fn read_islands(
     xhtml: bool,
     keep: KeepValues,
     progress: &dyn Progress,
-) -> Result<Vec<Island>, Diagnostic> {
+) -> Result<Vec<Island>, Box<Diagnostic>> {
     let text = std::str::from_utf8(source).map_err(|e| {
-        Diagnostic::new(
+        // Boxed: a Diagnostic is large, and this error is rare.
+        Box::new(Diagnostic::new(
             &ENCODING_UNSUPPORTED,
             Span::new(e.valid_up_to(), e.valid_up_to()),
             "an HTML page that is not UTF-8 after decoding".to_string(),
-        )
+        ))
     })?;
     if xhtml {
         return Ok(xhtml_islands(source, keep, progress));
@@ -81,7 +82,7 @@ pub fn read_with(source: &[u8], xhtml: bool, keep: KeepValues, progress: &dyn Pr
         Err(diagnostic) => Parsed {
             encoding: None,
             document: None,
-            diagnostics: vec![diagnostic],
+            diagnostics: vec![*diagnostic],
         },
     }
 }
