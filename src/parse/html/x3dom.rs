@@ -11,8 +11,8 @@ pub const NODES: &[&str] = &[
     "binarygeometry",
     "bitlodgeocomponent",
     "bitlodgeometry",
-    "block",
     "blendmode",
+    "block",
     "bufferaccessor",
     "buffergeometry",
     "buffergeometryaccessor",
@@ -50,7 +50,6 @@ pub const NODES: &[&str] = &[
     "snout",
     "solidofrevolution",
     "spheresegment",
-    "staticgroup",
     "surfaceshadertexture",
     "texture",
     "torus",
@@ -85,7 +84,6 @@ pub const ROOT_ATTRIBUTES: &[&str] = &[
 /// node type has.
 pub const NODE_ATTRIBUTES: &[&str] = &[
     "render",
-    "ispickable",
     "sortkey",
     "sorttype",
     "idmap",
