@@ -10,7 +10,7 @@
 use std::collections::{HashMap, HashSet};
 
 use super::endpoint::route_node;
-use crate::model::{Document, Encoding, NodeId, NodeKind, RouteEnd, Scope, Value};
+use crate::model::{Document, Encoding, FieldEntry, NodeId, NodeKind, RouteEnd, Scope, Value};
 use crate::parse::behind::{Pass, Progress};
 use crate::validate::Ctx;
 
@@ -206,6 +206,19 @@ pub(crate) fn set_elsewhere(
     field: &str,
 ) -> bool {
     doc.node(id).is_connected(field) || routed.contains(&(id, field.to_string()))
+}
+
+/// Each `type_name` node with a written `field` whose value is the one the node uses (not
+/// set by a ROUTE or IS), with that entry.
+pub(crate) fn written_entries<'d>(
+    doc: &'d Document,
+    routed: &'d HashSet<(NodeId, String)>,
+    type_name: &'d str,
+    field: &'d str,
+) -> impl Iterator<Item = (NodeId, &'d FieldEntry)> + 'd {
+    doc.nodes_of_type(type_name)
+        .filter(move |&id| !set_elsewhere(doc, routed, id, field))
+        .filter_map(move |id| Some((id, doc.node(id).entry(field)?)))
 }
 
 /// Whether any of `fields` of node `id` is set other than by its written value.

@@ -1,7 +1,7 @@
 //! VIEWPORT_CLIP_BOUNDARY_COUNT: a Viewport.clipBoundary without exactly four values.
 
 use crate::diagnostic::Diagnostic;
-use crate::validate::events::wiring::{routed_fields, set_elsewhere};
+use crate::validate::events::wiring::{routed_fields, written_entries};
 use crate::validate::numbers::plural;
 use crate::validate::Ctx;
 
@@ -49,13 +49,7 @@ fn check(ctx: &mut Ctx) {
     let doc = ctx.doc;
     let routed = routed_fields(doc);
     let mut found = Vec::new();
-    for id in doc.nodes_of_type("Viewport") {
-        if set_elsewhere(doc, &routed, id, "clipBoundary") {
-            continue;
-        }
-        let Some(entry) = doc.node(id).entry("clipBoundary") else {
-            continue;
-        };
+    for (id, entry) in written_entries(doc, &routed, "Viewport", "clipBoundary") {
         let Some(values) = entry.value.as_floats() else {
             continue;
         };

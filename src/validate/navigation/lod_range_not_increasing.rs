@@ -1,7 +1,7 @@
 //! LOD_RANGE_NOT_INCREASING: an LOD range not greater than the range before it.
 
 use crate::diagnostic::Diagnostic;
-use crate::validate::events::wiring::{routed_fields, set_elsewhere};
+use crate::validate::events::wiring::{routed_fields, written_entries};
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -50,13 +50,7 @@ fn check(ctx: &mut Ctx) {
     let doc = ctx.doc;
     let routed = routed_fields(doc);
     let mut found = Vec::new();
-    for id in doc.nodes_of_type("LOD") {
-        if set_elsewhere(doc, &routed, id, "range") {
-            continue;
-        }
-        let Some(entry) = doc.node(id).entry("range") else {
-            continue;
-        };
+    for (id, entry) in written_entries(doc, &routed, "LOD", "range") {
         let Some(ranges) = entry.value.as_floats() else {
             continue;
         };

@@ -2,7 +2,7 @@
 //! with each minimum below its maximum.
 
 use crate::diagnostic::Diagnostic;
-use crate::validate::events::wiring::{routed_fields, set_elsewhere};
+use crate::validate::events::wiring::{routed_fields, written_entries};
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -51,13 +51,7 @@ fn check(ctx: &mut Ctx) {
     let doc = ctx.doc;
     let routed = routed_fields(doc);
     let mut found = Vec::new();
-    for id in doc.nodes_of_type("OrthoViewpoint") {
-        if set_elsewhere(doc, &routed, id, "fieldOfView") {
-            continue;
-        }
-        let Some(entry) = doc.node(id).entry("fieldOfView") else {
-            continue;
-        };
+    for (id, entry) in written_entries(doc, &routed, "OrthoViewpoint", "fieldOfView") {
         let Some(values) = entry.value.as_floats() else {
             continue;
         };

@@ -1,7 +1,7 @@
 //! ANCHOR_PARAMETER_MALFORMED: an Anchor.parameter string that is not `keyword=value`.
 
 use crate::diagnostic::Diagnostic;
-use crate::validate::events::wiring::{routed_fields, set_elsewhere};
+use crate::validate::events::wiring::{routed_fields, written_entries};
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -45,13 +45,7 @@ fn check(ctx: &mut Ctx) {
     let doc = ctx.doc;
     let routed = routed_fields(doc);
     let mut found = Vec::new();
-    for id in doc.nodes_of_type("Anchor") {
-        if set_elsewhere(doc, &routed, id, "parameter") {
-            continue;
-        }
-        let Some(entry) = doc.node(id).entry("parameter") else {
-            continue;
-        };
+    for (id, entry) in written_entries(doc, &routed, "Anchor", "parameter") {
         let Some(strings) = entry.value.as_strings() else {
             continue;
         };

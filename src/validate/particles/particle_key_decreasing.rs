@@ -1,7 +1,7 @@
 //! PARTICLE_KEY_DECREASING: a ParticleSystem colorKey smaller than the key before it.
 
 use crate::diagnostic::Diagnostic;
-use crate::validate::events::wiring::{routed_fields, set_elsewhere};
+use crate::validate::events::wiring::{routed_fields, written_entries};
 use crate::validate::numbers::first_decrease;
 use crate::validate::Ctx;
 
@@ -60,13 +60,7 @@ fn check(ctx: &mut Ctx) {
     let doc = ctx.doc;
     let routed = routed_fields(doc);
     let mut found = Vec::new();
-    for id in doc.nodes_of_type("ParticleSystem") {
-        if set_elsewhere(doc, &routed, id, "colorKey") {
-            continue;
-        }
-        let Some(entry) = doc.node(id).entry("colorKey") else {
-            continue;
-        };
+    for (id, entry) in written_entries(doc, &routed, "ParticleSystem", "colorKey") {
         let Some(keys) = entry.value.as_floats() else {
             continue;
         };
