@@ -1,7 +1,7 @@
 //! x3dcheck: checks X3D scene documents (XML and JSON encodings) against ISO/IEC 19775-1
 //! and reports like a compiler.
 //!
-//! bytes ─parse→ [`model::Document`] ─validate→ [`report::Diagnostic`]s ─report→ formats
+//! bytes ─parse→ [`model::Document`] ─validate→ [`diagnostic::Diagnostic`]s ─report→ formats
 //!
 //! Programs (and the Python and Node.js packages in `bindings/`) call [`api`]: a scene in
 //! memory or a file, checked as the command line checks it, into the command line's JSON

@@ -1,6 +1,6 @@
 //! A document being made and the findings made on the way, each limit of
 //! [`crate::limits`] reported once: what the [`Builder`](super::Builder) writes while a
-//! reader reads, and what instantiating prototypes ([`super::instantiate`]) writes after.
+//! reader reads, and what instantiating prototypes (`model::instantiate`) writes after.
 
 use super::rules::LIMIT_EXCEEDED;
 use super::{Document, Encoding, FieldRef, NodeId, NodeKind, Span};

@@ -13,7 +13,7 @@
 //! texel the X3D face shows in that direction.
 //!
 //! **Sources.** Six 2D texture nodes or url lists (PNG, JPEG, GIF, data: URLs,
-//! PixelTexture, through [`textures`]); one image holding a cross (4:3 horizontal or 3:4
+//! PixelTexture, through `textures`); one image holding a cross (4:3 horizontal or 3:4
 //! vertical); Radiance `.hdr` (kept as linear half floats, not tone-mapped); DDS and KTX2
 //! cube files with uncompressed RGBA8, RGBA16F or RGBA32F faces (their layers used as
 //! stored). Block-compressed and supercompressed files are reported as not drawn.

@@ -1,4 +1,4 @@
-//! Reporting: [`Diagnostic`]s are resolved once per file ([`resolve`]: line, column, path)
+//! Reporting: [`Diagnostic`](crate::diagnostic::Diagnostic)s are resolved once per file ([`resolve`]: line, column, path)
 //! into a [`FileReport`], which each format renders: [`human`], [`concise`], [`json`].
 
 pub mod concise;

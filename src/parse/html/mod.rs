@@ -1,11 +1,11 @@
 //! X3D inside web pages: the islands of an HTML page (`<x3d>` of X3DOM, `<X3D>` inside an
 //! X_ITE `<x3d-canvas>`, or `<x3d-canvas src=…>`), each read into the scene model by the
-//! XML reader's own element handling ([`XmlReader`]), so that every rule applies.
+//! XML reader's own element handling (`XmlReader`), so that every rule applies.
 //!
 //! An HTML page is parsed as a browser parses it (html5ever, the HTML standard's
 //! tokenizer and tree construction): an element written `<Box/>` stays open and takes
-//! what follows as children, and names arrive lower-cased; [`names`] gives them their X3D
-//! spelling back as X3DOM and X_ITE do. Positions are those of the page: [`tags`] finds
+//! what follows as children, and names arrive lower-cased; `names` gives them their X3D
+//! spelling back as X3DOM and X_ITE do. Positions are those of the page: `tags` finds
 //! each tag of the tree in the text. An XHTML page is XML, and is read by the XML reader
 //! over the island's text, the rest of the page blanked out.
 

@@ -441,7 +441,7 @@ pub fn counted(doc: &Document) -> impl Iterator<Item = (NodeId, Counted<'_>)> {
 /// length", 19.4).
 const NORMAL_FIELDS: [(&str, &str); 2] = [("Normal", "vector"), ("NormalInterpolator", "keyValue")];
 
-/// Reports every normal vector (of [`NORMAL_FIELDS`]) that `judge` (given its f64 length)
+/// Reports every normal vector (of `NORMAL_FIELDS`) that `judge` (given its f64 length)
 /// finds fault with, as `Normal.vector[k] = x y z <what judge says>` (or
 /// `NormalInterpolator.keyValue[k] = …`) with the vector as the document writes it, folded
 /// per node. Non-finite vectors are skipped:
