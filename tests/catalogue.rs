@@ -54,7 +54,7 @@ const LOWERED: &[(&str, Severity, &str)] = &[
     (
         "FIELD_DUPLICATE",
         Severity::Warning,
-        "issue 32: JSON only says member names SHOULD be unique (RFC 8259 4); no 'shall' found against two fieldValue or field statements of one name",
+        "issue 32: JSON only says member names SHOULD be unique (RFC 8259 4); no 'shall' found against two fieldValue statements of one name (duplicate Script and shader field declarations are errors per finding, issue 33)",
     ),
     (
         "PROTO_FIELD_UNKNOWN",

@@ -179,6 +179,7 @@ impl Builder {
             height = height.max(child.height + 1);
             instances = instances.saturating_add(child.instances);
         }
+        self.report_duplicate_declarations(id);
         let node = &mut self.draft.doc.nodes[id.index()];
         node.height = height;
         node.instances = instances;
@@ -208,6 +209,33 @@ impl Builder {
             .find(|c| c.node == id && !c.is_use)
         {
             child.span = span;
+        }
+    }
+
+    /// Reports a `field` declared twice on a Script or shader node (all its declarations
+    /// are read once the node closes). An error, unlike other repeats of a field: "Name
+    /// shall be an identifier that is unique for this Script node" (29.4.1), and the same
+    /// "for this shader node" (31, X3DProgrammableShaderObject).
+    fn report_duplicate_declarations(&mut self, id: NodeId) {
+        let mut first_spans: std::collections::HashMap<&str, Span> = Default::default();
+        let mut duplicates = Vec::new();
+        for decl in &self.draft.doc.nodes[id.index()].declared {
+            let Some(&first) = first_spans.get(decl.name.text.as_str()) else {
+                first_spans.insert(&decl.name.text, decl.name.span);
+                continue;
+            };
+            let diagnostic = Diagnostic::new(
+                &FIELD_DUPLICATE,
+                decl.name.span,
+                format!("field `{}` is declared twice on this node", decl.name.text),
+            )
+            .severity(Severity::Error)
+            .node(id)
+            .related(first, "first declared here");
+            duplicates.push(diagnostic);
+        }
+        for diagnostic in duplicates {
+            self.report(diagnostic);
         }
     }
 

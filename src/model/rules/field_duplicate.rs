@@ -1,5 +1,6 @@
-//! FIELD_DUPLICATE: reported by the model builder (`Builder::add_field`) and, for
-//! duplicate JSON keys of node fields, by the JSON reader. The first value is kept.
+//! FIELD_DUPLICATE: reported by the model builder (`Builder::add_field`, and
+//! `Builder::end_node` for `field` declarations) and, for duplicate JSON keys of node
+//! fields, by the JSON reader. The first value is kept.
 
 crate::declare_rule! {
     /// ## What it does
@@ -10,7 +11,9 @@ crate::declare_rule! {
     ///
     /// ## Why it matters
     /// Which value wins differs between browsers and JSON parsers; x3dcheck keeps the
-    /// first. Either way one of the author's values is silently lost.
+    /// first. Either way one of the author's values is silently lost. Two declarations of
+    /// one name on a Script or shader node leave the script's or the shader's variable
+    /// with two types or values.
     ///
     /// ## Example
     /// ```json
@@ -22,9 +25,16 @@ crate::declare_rule! {
     ///
     /// A warning (issue 32): JSON itself only recommends unique member names ("The names
     /// within an object SHOULD be unique", RFC 8259 4), the X3D JSON schema cannot say
-    /// it, and no sentence was found that forbids two `fieldValue` statements or two
-    /// `field` declarations of one name. (The XML attribute case is XML 1.0's
-    /// well-formedness constraint Unique Att Spec, reported as XML_MALFORMED.)
+    /// it, and no sentence was found that forbids two `fieldValue` statements of one
+    /// name. (The XML attribute case is XML 1.0's well-formedness constraint Unique Att
+    /// Spec, reported as XML_MALFORMED.)
+    ///
+    /// Two `field` declarations of one name on a Script or shader node are reported as
+    /// an error, the severity ../shared/RULES.md gives the code (issue 33):
+    ///
+    /// > "Name shall be an identifier that is unique for this Script node." (19775-1 29.4.1 Script; read in the 3.x text copied in H3D and Coin)
+    ///
+    /// > "Name shall be an identifier that is unique for this shader node" (19775-1 31, X3DProgrammableShaderObject; read in H3D's copy)
     pub static FIELD_DUPLICATE = {
         severity: Warning,
         level: Fast,
