@@ -1,6 +1,6 @@
 //! PIXEL_TEXTURE_SIZE_MISMATCH: an SFImage whose pixels do not match its header.
 
-use crate::diagnostic::Diagnostic;
+use crate::diagnostic::{Diagnostic, Severity};
 use crate::model::{FieldEntry, NodeId, Value};
 use crate::validate::Ctx;
 
@@ -13,7 +13,9 @@ crate::declare_rule! {
     /// (more than 8 bits per component: above 0xFF for one component, 0xFFFF for two,
     /// 0xFFFFFF for three). Negative pixel values are read as their 32-bit two's
     /// complement, so they only fit four components. Repeats of a too-large pixel on one
-    /// field are folded into one diagnostic.
+    /// field are folded into one diagnostic. PixelTexture3D asks for "at least"
+    /// width × height × depth pixels, so more than that is a warning there (the extra
+    /// values are likely a wrong header, but break no sentence); fewer stay an error.
     ///
     /// ## Why it matters
     /// 5.3.6 (SFImage): "Each pixel is read as a single unsigned number", "width × height"
@@ -28,6 +30,11 @@ crate::declare_rule! {
     /// ## Clause
     /// 19775-1 5.3.6 SFImage and MFImage; 18.4.6 PixelTexture; 33.4.5 PixelTexture3D.
     /// > "SFImage fields contain three integers representing the width, height and number of components in the image, followed by width×height hexadecimal or integer values" (19775-1 5.3.6, the form of the value)
+    ///
+    /// > "There shall be at least width × height × depth number of pixel values provided." (19775-1 PixelTexture3D, read in H3D's copy of the 3.x text, `Pixel3DTexture.h`)
+    ///
+    /// Issue 33: the PixelTexture3D sentence is a minimum, so extra pixels there are
+    /// reported per finding as a warning under this code.
     pub static PIXEL_TEXTURE_SIZE_MISMATCH = {
         severity: Error,
         level: Standard,
@@ -44,6 +51,9 @@ struct Header {
     components: i64,
     /// Whether 0 components is allowed (SFImage: the empty image `0 0 0`).
     zero_components: bool,
+    /// Whether the pixel count is a minimum (PixelTexture3D: "at least"), so that extra
+    /// pixels are a warning, not an error.
+    at_least: bool,
     /// Scalar positions in the field's text of the first size number, the component count
     /// and the first pixel.
     sizes_at: usize,
@@ -63,6 +73,7 @@ fn check(ctx: &mut Ctx) {
                             sizes: vec![image.width.into(), image.height.into()],
                             components: image.components.into(),
                             zero_components: true,
+                            at_least: false,
                             sizes_at: offset,
                             components_at: offset + 2,
                             pixels_at: offset + 3,
@@ -83,6 +94,7 @@ fn check(ctx: &mut Ctx) {
                         components: values[0].into(),
                         sizes: values[1..4].iter().map(|&v| i64::from(v)).collect(),
                         zero_components: false,
+                        at_least: true,
                         sizes_at: 1,
                         components_at: 0,
                         pixels_at: 4,
@@ -151,9 +163,14 @@ fn check_image(
             .map(i64::to_string)
             .collect::<Vec<_>>()
             .join(" × ");
-        let span = match pixels.len() as u128 > expected {
+        let excess = pixels.len() as u128 > expected;
+        let span = match excess {
             true => ctx.scalar_span(entry, pixels_at + expected as usize),
             false => entry.span,
+        };
+        let severity = match excess && header.at_least {
+            true => Severity::Warning,
+            false => PIXEL_TEXTURE_SIZE_MISMATCH.severity,
         };
         ctx.report(
             Diagnostic::new(
@@ -164,6 +181,7 @@ fn check_image(
                     pixels.len()
                 ),
             )
+            .severity(severity)
             .node(id),
         );
     }
