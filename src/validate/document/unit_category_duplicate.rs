@@ -39,12 +39,18 @@ crate::declare_rule! {
     /// ## Clause
     /// 19775-1 7.2.5.5 UNIT statement (one conversion per base unit category, the
     /// categories of 4.3.6 Table 4.2); 19776-1 4.2.3.4, 19776-2 the UNIT statement.
-    /// The sentence as the X3D 3.3 Units proposal wrote it into 7.2.5.5, quoted by
-    /// D. Brutzman on x3d-public, 2011-06-19 ("important questions regarding Units
-    /// proposal"); a secondary copy of the clause's text.
-    /// > "At most one UNIT statement shall be provided for each base unit type." (19775-1 V3.3 7.2.5.5)
+    ///
+    /// A warning (issue 33): no "shall" found in 19775-1 itself. The sentence below is the
+    /// X3D 3.3 Units proposal's wording for 7.2.5.5, as D. Brutzman quoted it on
+    /// x3d-public, 2011-06-19 ("important questions regarding Units proposal"); neither the
+    /// 3.3 nor the 4.0 text of 7.2.5.5, nor a copy of it in a browser's source, was found
+    /// to confirm that the standard kept it, and the XML schema does not constrain it
+    /// (no uniqueness constraint on `unit/@category`).
+    ///
+    /// "At most one UNIT statement shall be provided for each base unit type." (the 3.3
+    /// Units proposal, for 19775-1 7.2.5.5)
     pub static UNIT_CATEGORY_DUPLICATE = {
-        severity: Error,
+        severity: Warning,
         level: Fast,
         clause: "7.2.5.5",
         versions: "all",

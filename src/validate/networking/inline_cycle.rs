@@ -52,6 +52,11 @@ crate::declare_rule! {
     /// children), 4.4.5 External prototype semantics.
     /// > "The transformation hierarchy shall be a directed acyclic graph" (14772-1 4.4.4)
     ///
+    /// The sentence goes on "; results are undefined if a node in the transformation
+    /// hierarchy is its own ancestor" (read in GPAC's copy of 14772-1 4.4.4, issue 33).
+    /// The severity is the one ../shared/RULES.md gives the code (error), which is API;
+    /// the "shall" above is what the file breaks.
+    ///
     /// The inlined scene's nodes are the Inline's children, so a scene that inlines itself
     /// makes the Inline its own ancestor. (A library cycle of EXTERNPROTOs is a prototype
     /// instantiated in its own implementation, PROTO_CYCLE's sentence.)

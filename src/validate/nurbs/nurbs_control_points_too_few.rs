@@ -31,11 +31,14 @@ crate::declare_rule! {
     /// ```
     ///
     /// ## Clause
-    /// 19775-1 27.4.4 NurbsCurve ("The number of control points shall be equal to or
-    /// greater than the order"), and the same for each direction of the surfaces
+    /// 19775-1 27.4.4 NurbsCurve, and the same for each direction of the surfaces
     /// (27.3.2 X3DNurbsSurfaceGeometryNode: `uDimension` and `vDimension` are the numbers
-    /// of control points in each direction).
-    /// > "The number of control points shall be equal to or greater than the order" (19775-1 27.4.4)
+    /// of control points in each direction). The sentences as the 3.x text has them (read
+    /// in H3D's copies, `NurbsCurve.h` and the surface nodes; issue 33 corrected the
+    /// wording this doc quoted before, which no copy has):
+    /// > "The number of control points shall be at least equal to the order of the curve." (19775-1 27.4.4 NurbsCurve)
+    ///
+    /// > "The number of control points shall be equal or greater than the order." (19775-1 27.3.2 X3DNurbsSurfaceGeometryNode)
     pub static NURBS_CONTROL_POINTS_TOO_FEW = {
         severity: Error,
         level: Standard,

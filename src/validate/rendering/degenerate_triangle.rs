@@ -41,6 +41,12 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 11.4.6, 11.4.8 (strips and fans), 13.3.6 (IndexedFaceSet faces).
+    ///
+    /// An info, the severity ../shared/RULES.md gives the code, which is API (issue 33).
+    /// IndexedFaceSet's "shall" comes with its consequence: "Each face of the
+    /// IndexedFaceSet shall have: at least three non-coincident vertices; … Otherwise, The
+    /// results are undefined." (H3D's copy of the 3.x text, `IndexedFaceSet.h`); a
+    /// zero-area triangle draws nothing, and exporters write many of them.
     pub static DEGENERATE_TRIANGLE = {
         severity: Info,
         level: Deep,

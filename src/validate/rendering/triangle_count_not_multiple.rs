@@ -30,6 +30,12 @@ crate::declare_rule! {
     /// 32.4.6 QuadSet; 14.4.8 TriangleSet2D ("The number of vertices provided shall be
     /// evenly divisible by three. Excess vertices shall be ignored."), the same leftover
     /// entries dropped, so the same code.
+    ///
+    /// A warning although TriangleSet2D's sentence says "shall" (issue 33): the severity
+    /// is the one ../shared/RULES.md gives the code, which is API, and the next sentence
+    /// defines what a browser does with the file: "Excess vertices shall be ignored." (read
+    /// in H3D's copy of the 3.x text, `TriangleSet2D.h`). The scene renders the same in
+    /// every browser, minus the leftover vertices.
     pub static TRIANGLE_COUNT_NOT_MULTIPLE = {
         severity: Warning,
         level: Standard,

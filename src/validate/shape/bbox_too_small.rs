@@ -31,6 +31,15 @@ crate::declare_rule! {
     ///
     /// ## Clause
     /// 19775-1 12.4.8 Shape; 10.2.2 Bounding boxes.
+    ///
+    /// A warning, the severity ../shared/RULES.md gives the code, which is API (issue 33).
+    /// Transform's text has a "shall" ("The bounding box shall be large enough at all
+    /// times to enclose the union of the group's children's bounding boxes"), but the
+    /// same paragraph says what follows when it is not, as do those of Group, Shape,
+    /// Anchor, Collision and Inline: "This is a hint that may be used for optimization
+    /// purposes. The results are undefined if the specified bounding box is smaller than
+    /// the actual bounding box of the children at any time." (H3D's copy of the 3.x text,
+    /// `Transform.h`). A small box changes what a browser may cull, not what the file means.
     pub static BBOX_TOO_SMALL = {
         severity: Warning,
         level: Deep,
