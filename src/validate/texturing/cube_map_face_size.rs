@@ -1,5 +1,6 @@
 //! CUBE_MAP_FACE_SIZE: a ComposedCubeMapTexture face that is not square, not a power of
-//! two, or not the size of the other faces.
+//! two, or not the size of the other faces; an ImageCubeMapTexture whose file's faces are
+//! not square or not a power of two.
 
 use super::files::{bytes_dimensions, file_dimensions, Resolution, Resolver};
 use crate::diagnostic::Diagnostic;
@@ -17,8 +18,15 @@ crate::declare_rule! {
     /// misshapen face is reported for its shape only). Faces of other texture types
     /// (MovieTexture, …), empty PixelTextures, urls that do not resolve to a readable
     /// image, and fields that take their value through `IS` are left out.
-    /// ImageCubeMapTexture is not checked: its one file holds all six faces in a cube-map
-    /// layout (DDS), which x3dcheck does not read.
+    ///
+    /// ImageCubeMapTexture (issue 33): the first local file or `data:` URL of its `url`
+    /// is read as the preview reads it. A DDS cube map (the `CUBEMAP` caps or the DX10
+    /// `TEXTURECUBE` flag) has six faces of the header's width × height: reported when
+    /// they are not square or not a power of two. An image of 4:3 or 3:4 holds a cross of
+    /// six square faces a quarter of its longer side wide: reported when that side is not
+    /// a power of two. Other files are left alone: a DDS that is not a cube, KTX2, and 2D
+    /// images of other shapes (the text read gives no layout for one image; browsers
+    /// differ in the layouts they read, panoramas among them).
     ///
     /// ## Why it matters
     /// A cube map is six equal square images in graphics hardware; a browser handed
@@ -34,7 +42,9 @@ crate::declare_rule! {
     /// ```
     ///
     /// ## Use instead
-    /// Six faces of one square, power-of-two size (`2 2 1 …` for each).
+    /// Six faces of one square, power-of-two size (`2 2 1 …` for each); for
+    /// ImageCubeMapTexture, a DDS cube of 2ⁿ × 2ⁿ faces or a cross of 2ⁿ-pixel faces
+    /// (4·2ⁿ × 3·2ⁿ).
     ///
     /// ## Clause
     /// 19775-1 34.2 Concepts, read in the 3.3 page (web3d.org
@@ -126,9 +136,110 @@ fn check(ctx: &mut Ctx) {
             );
         }
     }
+    for cube in doc.nodes_of_type("ImageCubeMapTexture") {
+        if let Some(diagnostic) = image_cube_faces(ctx, cube) {
+            found.push(diagnostic);
+        }
+    }
     for diagnostic in found {
         ctx.report(diagnostic);
     }
+}
+
+/// How an ImageCubeMapTexture's one file holds its six faces.
+#[derive(Debug, PartialEq)]
+enum CubeFile {
+    /// A DDS cube map: each face is width × height.
+    DdsCube { width: u32, height: u32 },
+    /// A 2D image of 4:3 or 3:4 read as a cross of square faces of this side.
+    Cross { width: u32, height: u32, side: u32 },
+}
+
+/// The finding on an ImageCubeMapTexture whose file's faces are misshapen.
+fn image_cube_faces(ctx: &Ctx, cube: NodeId) -> Option<Diagnostic> {
+    let node = ctx.doc.node(cube);
+    if node.is_connected("url") {
+        return None;
+    }
+    let entry = node.entry("url")?;
+    let message = match cube_file(ctx, cube, entry.value.as_strings()?)? {
+        CubeFile::DdsCube { width, height } if width != height => format!(
+            "ImageCubeMapTexture: its DDS cube map's faces are {width}×{height}, not square; cube-map faces shall be square"
+        ),
+        CubeFile::DdsCube { width, height } if !width.is_power_of_two() => format!(
+            "ImageCubeMapTexture: its DDS cube map's faces are {width}×{height}; cube-map faces shall be a power of two pixels on a side"
+        ),
+        CubeFile::Cross { width, height, side } if !side.is_power_of_two() => format!(
+            "ImageCubeMapTexture: its {width}×{height} image is a cross of {side}×{side} faces; cube-map faces shall be a power of two pixels on a side"
+        ),
+        _ => return None,
+    };
+    Some(Diagnostic::new(&CUBE_MAP_FACE_SIZE, entry.span, message).node(cube))
+}
+
+/// The faces of the file a browser would load from `urls`: the first local file or
+/// `data:` URL, skipping missing files; None when it is neither a DDS cube nor a cross,
+/// or cannot be read.
+fn cube_file(ctx: &Ctx, cube: NodeId, urls: &[String]) -> Option<CubeFile> {
+    let resolver = Resolver::new(ctx.base, ctx.config.root.as_deref());
+    for url in urls {
+        let bytes = if let Some(data) = data_url::decode(url) {
+            data.ok()?.bytes
+        } else {
+            match resolver.resolve_node(ctx.doc, cube, url) {
+                Resolution::Local(path) => read_head(&path)?,
+                Resolution::Missing { .. } => continue,
+                _ => return None,
+            }
+        };
+        if bytes.starts_with(b"DDS ") {
+            return dds_cube(&bytes);
+        }
+        let (width, height) = bytes_dimensions(&bytes)?;
+        let (wide, high) = (u64::from(width), u64::from(height));
+        let side = if wide * 3 == high * 4 {
+            width / 4
+        } else if wide * 4 == high * 3 {
+            height / 4
+        } else {
+            return None;
+        };
+        return Some(CubeFile::Cross {
+            width,
+            height,
+            side,
+        });
+    }
+    None
+}
+
+/// The first bytes of a file, enough for the image headers read here (a JPEG's size may
+/// stand after its metadata, so more than a DDS header).
+fn read_head(path: &std::path::Path) -> Option<Vec<u8>> {
+    use std::io::Read;
+    const HEAD: u64 = 1 << 20;
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .ok()?
+        .take(HEAD)
+        .read_to_end(&mut bytes)
+        .ok()?;
+    Some(bytes)
+}
+
+/// A DDS file's faces when it is a cube map (Microsoft's DDS_HEADER: height at byte 12,
+/// width at 16, the pixel format's FourCC at 84, caps2 at 112; with FourCC `DX10`, the
+/// DDS_HEADER_DXT10 follows at 128 with its misc flag at 136).
+fn dds_cube(bytes: &[u8]) -> Option<CubeFile> {
+    const CAPS2_CUBEMAP: u32 = 0x200;
+    const MISC_TEXTURECUBE: u32 = 0x4;
+    let word = |at: usize| -> Option<u32> {
+        Some(u32::from_le_bytes(bytes.get(at..at + 4)?.try_into().ok()?))
+    };
+    let (height, width) = (word(12)?, word(16)?);
+    let dx10 = bytes.get(84..88) == Some(b"DX10".as_slice());
+    let cube = word(112)? & CAPS2_CUBEMAP != 0 || (dx10 && word(136)? & MISC_TEXTURECUBE != 0);
+    cube.then_some(CubeFile::DdsCube { width, height })
 }
 
 /// The face `field` holds with its size, when the size can be told.
@@ -177,4 +288,44 @@ fn image_dimensions(ctx: &Ctx, texture: NodeId, urls: &[String]) -> Option<(u32,
         }
     }
     None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A DDS header of `width` × `height` with the given caps2 and, when `dx10_misc` is
+    /// set, a DX10 header with that misc flag.
+    fn dds(width: u32, height: u32, caps2: u32, dx10_misc: Option<u32>) -> Vec<u8> {
+        let mut bytes = vec![0u8; 148];
+        bytes[..4].copy_from_slice(b"DDS ");
+        bytes[4..8].copy_from_slice(&124u32.to_le_bytes());
+        bytes[12..16].copy_from_slice(&height.to_le_bytes());
+        bytes[16..20].copy_from_slice(&width.to_le_bytes());
+        bytes[112..116].copy_from_slice(&caps2.to_le_bytes());
+        if let Some(misc) = dx10_misc {
+            bytes[84..88].copy_from_slice(b"DX10");
+            bytes[136..140].copy_from_slice(&misc.to_le_bytes());
+        }
+        bytes
+    }
+
+    #[test]
+    fn dds_cube_maps_are_told_from_2d_dds() {
+        let cube = CubeFile::DdsCube {
+            width: 64,
+            height: 64,
+        };
+        assert_eq!(dds_cube(&dds(64, 64, 0xFE00, None)), Some(cube));
+        assert_eq!(
+            dds_cube(&dds(48, 64, 0, Some(0x4))),
+            Some(CubeFile::DdsCube {
+                width: 48,
+                height: 64
+            })
+        );
+        assert_eq!(dds_cube(&dds(64, 64, 0, None)), None);
+        assert_eq!(dds_cube(&dds(64, 64, 0, Some(0))), None);
+        assert_eq!(dds_cube(b"DDS short"), None);
+    }
 }
