@@ -2,25 +2,12 @@
 //! snapshots pin do not show it): a sequencer's KEY_DECREASING cites 30.3.1
 //! X3DSequencerNode, an interpolator's 19.2.2.
 
-use std::path::Path;
-
-use x3dcheck::config::CheckConfig;
-use x3dcheck::diagnostic::Level;
+mod common;
 
 /// The message and clause of each finding of `code` in a fixture scene.
 fn cited(fixture: &str, code: &str) -> Vec<(String, String)> {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("corpus/rules")
-        .join(fixture);
-    let config = CheckConfig {
-        level: Level::Deep,
-        ..CheckConfig::default()
-    };
-    let report = x3dcheck::check_source(fixture, &std::fs::read(path).unwrap(), &config);
-    report
-        .diagnostics
+    common::fixture_findings(fixture, code)
         .into_iter()
-        .filter(|d| d.code == code)
         .map(|d| (d.message, d.clause.to_string()))
         .collect()
 }

@@ -2,25 +2,12 @@
 //! pin show no help): FACE_NOT_CONVEX does not suggest `convex='false'` for a face that is
 //! not planar, and X3D_VERSION_MISSING names the version it checks against.
 
-use std::path::Path;
-
-use x3dcheck::config::CheckConfig;
-use x3dcheck::diagnostic::Level;
+mod common;
 
 /// The help of each finding of `code` in a fixture scene, checked at the deep level.
 fn helps(fixture: &str, code: &str) -> Vec<String> {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("corpus/rules")
-        .join(fixture);
-    let config = CheckConfig {
-        level: Level::Deep,
-        ..CheckConfig::default()
-    };
-    let report = x3dcheck::check_source(fixture, &std::fs::read(path).unwrap(), &config);
-    report
-        .diagnostics
+    common::fixture_findings(fixture, code)
         .into_iter()
-        .filter(|d| d.code == code)
         .map(|d| d.help.unwrap_or_default())
         .collect()
 }

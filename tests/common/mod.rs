@@ -66,3 +66,21 @@ pub fn files_under(root: &Path, extensions: &[&str]) -> Vec<PathBuf> {
     files.sort();
     files
 }
+
+/// The findings of `code` in the rule fixture `fixture` (a path under `corpus/rules/`),
+/// checked at the deep level.
+pub fn fixture_findings(fixture: &str, code: &str) -> Vec<x3dcheck::report::Resolved> {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("corpus/rules")
+        .join(fixture);
+    let config = x3dcheck::config::CheckConfig {
+        level: x3dcheck::diagnostic::Level::Deep,
+        ..x3dcheck::config::CheckConfig::default()
+    };
+    let report = x3dcheck::check_source(fixture, &std::fs::read(path).unwrap(), &config);
+    report
+        .diagnostics
+        .into_iter()
+        .filter(|d| d.code == code)
+        .collect()
+}
