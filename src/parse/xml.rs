@@ -13,11 +13,11 @@ use super::behind::{Pass, Progress, STEP};
 use super::directive::{addressed, Following};
 use super::rules::{FIELD_VALUE_SYNTAX, ROOT_NOT_X3D, USE_WITH_FIELDS, XML_MALFORMED};
 use super::xml_entities::{Entities, ExpandError};
-use super::xml_value;
 use crate::diagnostic::Diagnostic;
 use crate::limits::{MAX_FIELDS_PER_NODE, MAX_INPUT_BYTES};
 use crate::model::builder::Parent;
 use crate::model::draft::Limit;
+use crate::model::text::xml_value;
 use crate::model::*;
 use crate::parse::{KeepValues, Parsed};
 use crate::schema::{AccessType, FieldDef, FieldType, NodeDef, Scalar};
@@ -228,7 +228,7 @@ impl<'s> XmlReader<'s> {
     pub(super) fn finish(self, result: Result<(), Box<Diagnostic>>) -> Parsed {
         // The pieces' vectors pay off from one long value to the next; after the document
         // (a render follows, or other files) they would only hold memory.
-        super::split::scratch::release();
+        crate::model::text::split::scratch::release();
         let (mut document, mut diagnostics) = self.builder.finish();
         match result {
             Ok(()) => {
