@@ -2,9 +2,11 @@
 //! parsers.
 
 use proptest::prelude::*;
+use x3dcheck::model::text::number::{parse_f32, parse_f64, parse_i32};
+use x3dcheck::model::text::xml_value::{
+    parse_value, parse_value_in, parse_value_in_pieces, Syntax,
+};
 use x3dcheck::model::Value;
-use x3dcheck::parse::number::{parse_f32, parse_f64, parse_i32};
-use x3dcheck::parse::xml_value::{parse_value, parse_value_in, parse_value_in_pieces, Syntax};
 use x3dcheck::schema::FieldType;
 
 fn check_f32(text: &str) {

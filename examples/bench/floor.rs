@@ -10,8 +10,8 @@ use std::path::Path;
 use quick_xml::events::Event;
 use quick_xml::Reader;
 use rayon::prelude::*;
-use x3dcheck::parse::number::{is_separator, scan_float};
-use x3dcheck::parse::split;
+use x3dcheck::model::text::number::{is_separator, scan_float};
+use x3dcheck::model::text::split;
 
 /// Runs the floor on `path` with `threads` threads; prints how many numbers it read.
 pub fn run(path: &Path, threads: usize) -> Result<(), String> {

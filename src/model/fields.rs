@@ -5,7 +5,7 @@
 use std::borrow::Cow;
 
 use super::{Document, NodeId, Value};
-use crate::parse::xml_value;
+use crate::model::text::xml_value;
 
 impl Document {
     /// The value of a field: as set in the document, else its default. None for a field

@@ -12,6 +12,7 @@ mod fields;
 mod header;
 mod instantiate;
 pub mod rules;
+pub mod text;
 pub mod texture_mapping;
 pub mod units;
 mod value;

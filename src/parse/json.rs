@@ -114,7 +114,7 @@ fn read_tree(tree: &Tree, source: &[u8], keep: KeepValues, progress: &dyn Progre
     reader.x3d(x3d);
     reader.run();
     // As in the XML reader: the pieces' vectors are kept for this document only.
-    super::split::scratch::release();
+    crate::model::text::split::scratch::release();
     let (mut document, diagnostics) = reader.builder.finish();
     document.directives = super::directive::place_json(tree, progress);
     Parsed {

@@ -21,8 +21,8 @@
 use std::borrow::Cow;
 use std::sync::atomic::{AtomicBool, Ordering};
 
+use crate::model::text::number::leading_digits;
 use crate::parse::behind::{Pass, Progress};
-use crate::parse::number::leading_digits;
 
 /// Nesting deeper than this (arrays and objects) is refused.
 pub const MAX_DEPTH: usize = crate::limits::MAX_JSON_NESTING;
@@ -350,7 +350,7 @@ pub struct Elements<'t, 's> {
 }
 
 /// A reader of one number in a larger text, as the `scan_*` functions of
-/// [`crate::parse::number`]: `scan(text, at)` gives the number starting at `at` and the
+/// [`crate::model::text::number`]: `scan(text, at)` gives the number starting at `at` and the
 /// offset where it ends, or `None` when it refuses the number.
 pub type ScanNumber<T> = fn(&[u8], usize) -> Option<(T, usize)>;
 
@@ -368,7 +368,7 @@ impl<'s> Elements<'_, 's> {
     /// Reads the next element in one pass over its text when it is a number that `scan`
     /// accepts. `scan` is given the array's text between its brackets, where the number
     /// ends at a separator (`,`, whitespace) or at the end, as the `scan_*` readers of
-    /// [`crate::parse::number`] expect. `None`, leaving the element for
+    /// [`crate::model::text::number`] expect. `None`, leaving the element for
     /// [`Iterator::next`], when it is not a number or `scan` refuses it, or when there are
     /// no more elements.
     #[inline(always)]

@@ -15,9 +15,9 @@ use std::ops::Range;
 use rayon::prelude::*;
 
 use super::tree::{tight_number, Kind, ScanNumber, Tree, ValueRef, NOT_INTEGER};
+use crate::model::text::number::{is_separator, parse_f32, parse_f64, scan_float, scan_i32};
+use crate::model::text::{huge_vec, split};
 use crate::model::{Image, Node, Sink, Summarized, Summarizer, Value};
-use crate::parse::number::{is_separator, parse_f32, parse_f64, scan_float, scan_i32};
-use crate::parse::{huge_vec, split};
 use crate::schema::{FieldDef, FieldType, Scalar};
 
 /// A value that does not fit its field's type. `span` is a byte range in the input: the

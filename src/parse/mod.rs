@@ -8,14 +8,10 @@ pub mod decode;
 mod detect;
 mod directive;
 pub mod html;
-pub mod huge_vec;
 pub mod json;
-pub mod number;
 pub mod rules;
-pub mod split;
 pub mod xml;
 mod xml_entities;
-pub mod xml_value;
 
 pub use behind::Progress;
 pub use decode::{decode, Decoded};

@@ -7,8 +7,8 @@
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
+use x3dcheck::model::text::xml_value;
 use x3dcheck::model::{ChildRef, Document, FieldEntry, FieldRef, Node, NodeKind, Value};
-use x3dcheck::parse::xml_value;
 use x3dcheck::schema::{FieldType, Scalar};
 
 /// A field value for comparison: numbers at their precision, the rest as text.

@@ -2,7 +2,7 @@
 //! 14772-1, `#VRML V2.0 utf8`) read by one recursive-descent reader into the scene model,
 //! through the same [`Builder`] as the XML and JSON readers. Field values are typed by the
 //! schema (or the PROTO interface) of the node they belong to, as 19776-2 A.1.2 asks, and
-//! parsed by [`xml_value`](super::xml_value)'s flat-array parsers: the text between a
+//! parsed by [`xml_value`](crate::model::text::xml_value)'s flat-array parsers: the text between a
 //! field's brackets is handed over as it stands.
 //!
 //! Syntax errors are VRML_MALFORMED at their place; the reader then goes on at the next
@@ -17,10 +17,10 @@ use crate::diagnostic::Diagnostic;
 use crate::limits::{MAX_DEPTH, MAX_INPUT_BYTES};
 use crate::model::builder::Parent;
 use crate::model::draft::Limit;
+use crate::model::text::number::parse_f64;
 use crate::model::*;
 use crate::parse::behind::{self, Progress};
 use crate::parse::directive::place_following;
-use crate::parse::number::parse_f64;
 use crate::parse::rules::{FIELD_VALUE_SYNTAX, VRML_MALFORMED};
 use crate::parse::{KeepValues, Parsed};
 use crate::schema::{AccessType, FieldType, Scalar, Version};
@@ -92,7 +92,7 @@ pub fn read_with(source: &[u8], keep: KeepValues, progress: &dyn Progress) -> Pa
     let first_token = reader.lexer.peek().start;
     reader.statements(None);
     // As in the XML reader: the pieces' vectors are kept for this document only.
-    crate::parse::split::scratch::release();
+    crate::model::text::split::scratch::release();
     if let Some(at) = reader.lexer.unterminated_comment {
         reader.malformed(
             Span::new(at, at + 3),

@@ -7,9 +7,9 @@
 use super::lexer::{Kind, Token};
 use super::{describe, Hint, Reader};
 use crate::diagnostic::Diagnostic;
+use crate::model::text::xml_value::{self, Syntax};
 use crate::model::{NodeId, Span, Value};
 use crate::parse::rules::FIELD_VALUE_SYNTAX;
-use crate::parse::xml_value::{self, Syntax};
 use crate::schema::{FieldDef, FieldType, Scalar};
 
 /// A field value's text: where it is, and the comments inside it.

@@ -123,7 +123,7 @@ pub mod scratch {
                 v.reserve(capacity);
                 *v
             }
-            None => crate::parse::huge_vec::with_capacity(capacity),
+            None => crate::model::text::huge_vec::with_capacity(capacity),
         }
     }
 
