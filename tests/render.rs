@@ -17,7 +17,6 @@ use std::path::{Path, PathBuf};
 use x3dcheck::config::CheckConfig;
 use x3dcheck::limits::{MAX_RENDER_SHAPES, MAX_RENDER_TEXT_CHARACTERS, RENDER_FILL_IMAGES};
 use x3dcheck::model::Document;
-use x3dcheck::render::draw_list::CubeImage;
 use x3dcheck::render::{preview, render_image, Gpu, ImageSize, Quality, RenderArgs};
 use x3dcheck::report::FileReport;
 
@@ -161,91 +160,6 @@ fn compare(actual: &image::RgbaImage, reference: &image::RgbaImage, case: &Path)
         case.display(),
         share * 100.0
     ))
-}
-
-/// A cube map made in code, as `draw_list::CubeImage` lays it out: a blue sky, a brown
-/// ground, a bright warm patch towards +x.
-fn sky_cube(size: u32) -> CubeImage {
-    // The direction through a texel centre of a WebGPU cube face (+X, −X, +Y, −Y, +Z, −Z).
-    let direction = |face: usize, x: u32, y: u32| {
-        let s = (x as f32 + 0.5) / size as f32 * 2.0 - 1.0;
-        let t = (y as f32 + 0.5) / size as f32 * 2.0 - 1.0;
-        let d = match face {
-            0 => [1.0, -t, -s],
-            1 => [-1.0, -t, s],
-            2 => [s, 1.0, t],
-            3 => [s, -1.0, -t],
-            4 => [s, -t, 1.0],
-            _ => [-s, -t, -1.0],
-        };
-        let length = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
-        d.map(|c| c / length)
-    };
-    let faces = std::array::from_fn(|face| {
-        let mut bytes = Vec::with_capacity((size * size * 4) as usize);
-        for y in 0..size {
-            for x in 0..size {
-                let [dx, dy, _] = direction(face, x, y);
-                let rgb = if dx > 0.85 {
-                    [1.0, 0.9, 0.6]
-                } else if dy >= 0.0 {
-                    [0.25 + 0.2 * (1.0 - dy), 0.4 + 0.2 * (1.0 - dy), 0.8]
-                } else {
-                    [0.3, 0.2, 0.1]
-                };
-                bytes.extend(rgb.map(|c: f32| (c * 255.0).round() as u8));
-                bytes.push(255);
-            }
-        }
-        bytes
-    });
-    CubeImage { size, faces }
-}
-
-/// EnvironmentLight's specular cube, until cube-map texture nodes are loaded: the scene's
-/// light is given `sky_cube` in code (prefiltered by roughness, and its irradiance
-/// computed) and the image compared with corpus/render/environment_light_cube/reference.png.
-#[test]
-fn an_environment_light_reflects_its_cube_map() {
-    if !x3dcheck::render::adapter_for_test("an_environment_light_reflects_its_cube_map") {
-        return;
-    }
-    let case = Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus/render/environment_light_cube");
-    let scene = case.join("cube.x3d");
-    let source = std::fs::read(&scene).unwrap();
-    let x3dcheck::check::Checked {
-        mut report,
-        document: doc,
-        ..
-    } = x3dcheck::check::check_document("cube.x3d", &source, &CheckConfig::default());
-    let args = args();
-    let mut preview = preview(
-        &args,
-        args.quality.settings(),
-        &scene,
-        None,
-        &source,
-        doc.as_ref(),
-        &mut report,
-    )
-    .unwrap();
-    let environment = preview.list_mut().layers[0]
-        .environment
-        .as_mut()
-        .expect("the EnvironmentLight is in the draw list");
-    environment.specular = Some(sky_cube(64));
-    let image = preview.draw().unwrap();
-    let reference_path = case.join("reference.png");
-    if std::env::var_os("X3DCHECK_UPDATE_REFERENCES").is_some_and(|v| v == "1")
-        || !reference_path.exists()
-    {
-        image.save(&reference_path).unwrap();
-        return;
-    }
-    let reference = image::open(&reference_path).unwrap().to_rgba8();
-    if let Some(message) = compare(&image, &reference, &case) {
-        panic!("{message}");
-    }
 }
 
 #[test]

@@ -143,14 +143,7 @@ impl CubeImage {
             let faces = faces.map(|f| f.map(|f| square(f).into_rgba32f().into_raw()));
             let level = gpu_layers(&faces, side, 0.0);
             let translucent = missing || level.chunks_exact(4).any(|t| t[3] < 1.0);
-            let levels = mipmaps(level, side)
-                .into_iter()
-                .map(|l| {
-                    l.iter()
-                        .flat_map(|v| half::f16::from_f32(*v).to_le_bytes())
-                        .collect()
-                })
-                .collect();
+            let levels = mipmaps(level, side).into_iter().map(half_floats).collect();
             Some(CubeImage {
                 side,
                 format: CubeFormat::Rgba16Float,
@@ -233,6 +226,43 @@ impl CubeImage {
         )
     }
 
+    /// The cube in linear light, as half floats: 8-bit texels decoded from sRGB (the mip
+    /// chain averaged again, in linear light), float texels as they are. Image-based
+    /// lighting sums light, which only linear values allow.
+    pub fn linear(self) -> CubeImage {
+        if self.format == CubeFormat::Rgba16Float {
+            return self;
+        }
+        let decode = |v: u8| {
+            let c = f32::from(v) / 255.0;
+            if c <= 0.04045 {
+                c / 12.92
+            } else {
+                ((c + 0.055) / 1.055).powf(2.4)
+            }
+        };
+        let level0: Vec<f32> = self.levels[0]
+            .chunks_exact(4)
+            .flat_map(|t| {
+                [
+                    decode(t[0]),
+                    decode(t[1]),
+                    decode(t[2]),
+                    f32::from(t[3]) / 255.0,
+                ]
+            })
+            .collect();
+        CubeImage {
+            side: self.side,
+            format: CubeFormat::Rgba16Float,
+            levels: mipmaps(level0, self.side)
+                .into_iter()
+                .map(half_floats)
+                .collect(),
+            translucent: self.translucent,
+        }
+    }
+
     /// One colour on every face (a stand-in where a cube is absent).
     pub fn uniform(rgba: [u8; 4]) -> CubeImage {
         CubeImage {
@@ -265,6 +295,14 @@ pub fn cube_sampler(device: &wgpu::Device) -> wgpu::Sampler {
         mipmap_filter: wgpu::MipmapFilterMode::Linear,
         ..Default::default()
     })
+}
+
+/// Floats as little-endian half floats.
+fn half_floats(values: Vec<f32>) -> Vec<u8> {
+    values
+        .iter()
+        .flat_map(|v| half::f16::from_f32(*v).to_le_bytes())
+        .collect()
 }
 
 fn is_float(image: &DynamicImage) -> bool {
@@ -779,6 +817,25 @@ mod tests {
         assert!(CubeImage::from_cross(DynamicImage::ImageRgba8(vertical), 64).is_ok());
         let square = image::RgbaImage::new(6, 6);
         assert!(CubeImage::from_cross(DynamicImage::ImageRgba8(square), 64).is_err());
+    }
+
+    #[test]
+    fn eight_bit_faces_decode_from_srgb_to_linear_half_floats() {
+        let grey = image::RgbaImage::from_pixel(2, 2, image::Rgba([188, 255, 0, 128]));
+        let faces = std::array::from_fn(|_| Some(DynamicImage::ImageRgba8(grey.clone())));
+        let cube = CubeImage::from_faces(faces, 64).unwrap().linear();
+        assert_eq!(cube.format, CubeFormat::Rgba16Float);
+        assert_eq!(cube.levels.len(), 2);
+        let texel: Vec<f32> = cube.levels[1][..8]
+            .chunks_exact(2)
+            .map(|h| half::f16::from_le_bytes([h[0], h[1]]).to_f32())
+            .collect();
+        // sRGB 188 is linear 0.5; alpha stays linear.
+        assert!((texel[0] - 0.5).abs() < 0.01, "{texel:?}");
+        assert_eq!(
+            &texel[1..],
+            &[1.0, 0.0, 128.0 / 255.0].map(|v| half::f16::from_f32(v).to_f32())
+        );
     }
 
     #[test]

@@ -25,6 +25,8 @@
 //!   depth cleared, each with its own camera, background, fog and lights, within its
 //!   [`Viewport`] of the image. Positions are relative to the eye of their own layer.
 
+use crate::render::cube_map::CubeImage;
+
 /// How many lights a shape can receive; more are reported as not drawn.
 pub const MAX_LIGHTS: usize = 16;
 /// Texture coordinate sets per mesh; more are reported, and drawn with the first.
@@ -45,7 +47,7 @@ pub struct DrawList {
     pub textures: Vec<Texture>,
     /// The cube textures of every layer: Background panoramas and the cube map textures
     /// of meshes (clause 34).
-    pub cube_textures: Vec<crate::render::cube_map::CubeImage>,
+    pub cube_textures: Vec<CubeImage>,
 }
 
 impl DrawList {
@@ -186,18 +188,12 @@ pub struct Environment {
     /// harmonics, nine RGB coefficients in the order L00, L1−1, L10, L11, L2−2, L2−1, L20,
     /// L21, L22 (glTF's irradianceCoefficients), finite.
     pub irradiance: Option<[[f32; 3]; 9]>,
-    /// The environment's radiance (`specularTexture`), prefiltered by roughness on the GPU.
+    /// The environment's radiance (`specularTexture`), in linear light (half floats, or
+    /// 8-bit fractions), prefiltered by roughness on the GPU.
     pub specular: Option<CubeImage>,
-    /// A precomputed irradiance map (`diffuseTexture`), sampled along the normal.
+    /// A precomputed irradiance map over π (`diffuseTexture`), in linear light, sampled
+    /// along the normal.
     pub diffuse: Option<CubeImage>,
-}
-
-/// A cube map in linear light: six square faces in the order +X, −X, +Y, −Y, +Z, −Z,
-/// each `size` × `size` RGBA8 with rows from the top, oriented as WebGPU's cube faces.
-#[derive(Clone, Debug)]
-pub struct CubeImage {
-    pub size: u32,
-    pub faces: [Vec<u8>; 6],
 }
 
 #[derive(Copy, Clone, Debug)]

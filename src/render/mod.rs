@@ -86,12 +86,6 @@ impl Preview {
         &self.list
     }
 
-    /// What will be drawn, to change before drawing (tests give an EnvironmentLight a cube
-    /// map made in code).
-    pub fn list_mut(&mut self) -> &mut draw_list::DrawList {
-        &mut self.list
-    }
-
     /// Draws the image.
     pub fn draw(self) -> Result<image::RgbaImage, String> {
         gpu::render(self.list, self.width, self.height, self.settings).map_err(|e| e.to_string())

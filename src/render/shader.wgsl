@@ -280,14 +280,18 @@ fn env_diffuse(n: vec3<f32>) -> vec3<f32> {
 }
 
 // The radiance along the world reflection r prefiltered for `roughness`. Without a
-// specularTexture the coefficients' irradiance stands in: the environment as blurred as
-// roughness 1 blurs it (darker and duller than a real reflection at low roughness).
+// specularTexture the irradiance (the diffuseTexture's, else the coefficients') stands
+// in: the environment as blurred as roughness 1 blurs it (darker and duller than a real
+// reflection at low roughness).
 fn env_specular(r: vec3<f32>, roughness: f32) -> vec3<f32> {
     let flags = globals.env_info.x;
     let d = env_direction(r);
     if (flags & ENV_SPECULAR) != 0u {
         let lod = roughness * f32(max(globals.env_info.y, 1u) - 1u);
         return textureSampleLevel(t_env_specular, s_env, d, lod).rgb;
+    }
+    if (flags & ENV_DIFFUSE) != 0u {
+        return textureSampleLevel(t_env_diffuse, s_env, d, 0.0).rgb;
     }
     if (flags & ENV_SH) != 0u {
         return sh_irradiance(d);

@@ -15,7 +15,7 @@ particles, geospatial). Each category below then takes its quota of candidates t
 contain its nodes, spread evenly over the candidates in path order (so every source
 folder is reached), skipping scenes already taken and the JSON twin of a taken XML
 scene. Image-texture scenes must have an image file they name beside them in the
-corpus. EXTRA lists the scenes taken by hand, each with its reason.
+corpus. Environment scenes (panoramas, cube maps, EnvironmentLight) need not have a Shape. EXTRA lists the scenes taken by hand, each with its reason.
 """
 
 import gzip
@@ -24,6 +24,11 @@ import re
 import sys
 
 EXTENSIONS = (".x3d", ".x3dv", ".wrl", ".json", ".x3dj", ".gz", ".x3dvz")
+
+ENVIRONMENT = (
+    r"\b(front|back|left|right|top|bottom)Url\b|\bTextureBackground\b"
+    r"|\b(Composed|Image)CubeMapTexture\b|\bEnvironmentLight\b"
+)
 
 # (category, quota, pattern that the scene must contain)
 CATEGORIES = [
@@ -49,6 +54,10 @@ CATEGORIES = [
     ("colour per vertex", 3, r"\bColor(RGBA)?\b"),
     ("geometry 2D", 2, r"\b(Disk2D|Rectangle2D|Circle2D|Arc2D|TriangleSet2D)\b"),
     ("no viewpoint", 4, None),
+    # Panoramas (Background urls, TextureBackground), cube map textures and EnvironmentLight,
+    # all of them: scenes with no Shape count here (a panorama is drawn), and so do those
+    # whose images are missing from the corpus (both tools then show what is left).
+    ("environment", 40, ENVIRONMENT),
 ]
 
 EXCLUDED = re.compile(
@@ -66,7 +75,7 @@ EXTRA = [
     ("physical material", "create3000-media/docs/examples/Shape/Appearance/Appearance.x3d"),
 ]
 BROKEN_PATH = re.compile(r"bad|error|warning|parsetest", re.IGNORECASE)
-IMAGE_URL = re.compile(r"[\"']([^\"'\s]+\.(?:png|jpe?g|gif))[\"']", re.IGNORECASE)
+IMAGE_URL = re.compile(r"[\"']([^\"'\s]+\.(?:png|jpe?g|gif|hdr|dds|ktx2))[\"']", re.IGNORECASE)
 
 
 def pattern_text(pattern):
@@ -108,7 +117,10 @@ def main(corpus):
                 text = read_text(path)
             except (OSError, EOFError):
                 continue
-            if not re.search(r"\bShape\b", text) or EXCLUDED.search(text):
+            # VRML 1.0 is neither X3D nor VRML97: neither tool reads it.
+            if EXCLUDED.search(text) or text.startswith("#VRML V1.0"):
+                continue
+            if not re.search(r"\bShape\b", text) and not re.search(ENVIRONMENT, text):
                 continue
             if LOOPING_TIMER.search(text):
                 continue
@@ -118,12 +130,16 @@ def main(corpus):
     taken = list(EXTRA)
     stems = {stem_of(relative) for _, relative in EXTRA}
     for category, quota, pattern in CATEGORIES:
+        # Only the environment category takes scenes that draw no Shape.
+        drawing = [
+            c for c in candidates if pattern == ENVIRONMENT or re.search(r"\bShape\b", c[2])
+        ]
         if pattern is None:
             matching = [
-                c for c in candidates if not re.search(r"\b(Ortho)?Viewpoint\b", c[2])
+                c for c in drawing if not re.search(r"\b(Ortho)?Viewpoint\b", c[2])
             ]
         else:
-            matching = [c for c in candidates if re.search(pattern, c[2])]
+            matching = [c for c in drawing if re.search(pattern, c[2])]
         if "ImageTexture" in pattern_text(pattern):
             matching = [c for c in matching if textures_present(c[1], c[2])]
         step = max(1, len(matching) // quota)

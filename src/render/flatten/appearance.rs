@@ -489,17 +489,24 @@ impl Walker<'_> {
         node: NodeId,
         cube: super::super::cube_map::CubeImage,
     ) -> Option<usize> {
-        let bytes = cube.bytes();
+        if !self.spend_on_cube(context, node, cube.bytes()) {
+            return None;
+        }
+        self.cube_textures.push(cube);
+        Some(self.cube_textures.len() - 1)
+    }
+
+    /// Counts a cube texture's bytes against the texture budget; false, noted, past it.
+    pub(super) fn spend_on_cube(&mut self, context: Context, node: NodeId, bytes: usize) -> bool {
         if self.spent.texture_bytes + bytes > MAX_TEXTURE_BYTES {
             let mib = MAX_TEXTURE_BYTES >> 20;
             let message =
                 format!("cube texture not drawn: the textures would take more than {mib} MiB");
             self.note(context, node, message);
-            return None;
+            return false;
         }
         self.spent.texture_bytes += bytes;
-        self.cube_textures.push(cube);
-        Some(self.cube_textures.len() - 1)
+        true
     }
 
     /// The image of `texture`. A texture of an external prototype's body (another file) is

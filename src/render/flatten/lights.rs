@@ -5,11 +5,17 @@ use glam::{DMat4, DQuat, DVec3};
 
 use super::{place, Context, Walker};
 use crate::model::NodeId;
+use crate::render::cube_map::{self, CubeImage};
 use crate::render::draw_list::{Environment, Light, LightKind, MAX_LIGHTS};
 use crate::render::fields::{boolean, child, color, float, floats, rotation, unit, vec3};
 
 /// The largest intensity drawn (4.x allows [0, ∞)).
 pub const MAX_INTENSITY: f32 = 1e15;
+
+/// The largest face side an EnvironmentLight texture is loaded at: the GPU prefilters the
+/// radiance into faces of at most 128 texels, sampling this finer level for the sharpest
+/// of them; an irradiance map has no detail beyond it.
+const ENVIRONMENT_SIDE: u32 = 256;
 
 pub struct PendingLight {
     pub light: Light,
@@ -118,29 +124,65 @@ impl Walker<'_> {
                 None
             }
         };
-        // The cube-map texture nodes are read by another part of the renderer, not yet
-        // joined to this one.
-        for field in ["specularTexture", "diffuseTexture"] {
-            if child(doc, id, field).is_some() {
-                self.note(
-                    context,
-                    id,
-                    format!("EnvironmentLight {field} not loaded yet"),
-                );
-            }
-        }
-        if irradiance.is_none() {
+        let specular = self.environment_cube(context, id, "specularTexture");
+        let diffuse = self.environment_cube(context, id, "diffuseTexture");
+        if irradiance.is_some() && diffuse.is_some() {
             self.note(
                 context,
                 id,
-                "EnvironmentLight without diffuseCoefficients lights nothing yet".into(),
+                "EnvironmentLight has both diffuseCoefficients and a diffuseTexture: the \
+                 diffuseTexture is drawn (X3D 4.1 does not say which one wins)"
+                    .into(),
+            );
+        }
+        if irradiance.is_none() && specular.is_none() && diffuse.is_none() {
+            self.note(
+                context,
+                id,
+                "EnvironmentLight without diffuseCoefficients or a drawn texture lights nothing"
+                    .into(),
             );
         }
         Environment {
             from_world: turned.inverse().as_quat(),
             irradiance,
-            specular: None,
-            diffuse: None,
+            specular,
+            diffuse,
+        }
+    }
+
+    /// The cube of an EnvironmentLight texture field, in linear light; None (noted) when
+    /// it cannot be drawn.
+    fn environment_cube(&mut self, context: Context, id: NodeId, field: &str) -> Option<CubeImage> {
+        let doc = context.doc;
+        let texture = child(doc, id, field)?;
+        let name = doc.node(texture).type_name();
+        if name == "GeneratedCubeMapTexture" {
+            let message = format!(
+                "EnvironmentLight {field}: GeneratedCubeMapTexture is not drawn: the scene \
+                 around it is not rendered into it"
+            );
+            self.note(context, texture, message);
+            return None;
+        }
+        let loaded = cube_map::load(
+            doc,
+            texture,
+            context.base,
+            &self.options.root,
+            ENVIRONMENT_SIDE,
+        );
+        match loaded {
+            Ok(cube) => {
+                let cube = cube.linear();
+                self.spend_on_cube(context, texture, cube.bytes())
+                    .then_some(cube)
+            }
+            Err(not_drawn) => {
+                let message = format!("EnvironmentLight {field}: {}", not_drawn.message);
+                self.push_note(context, texture, message, not_drawn.limit);
+                None
+            }
         }
     }
 }

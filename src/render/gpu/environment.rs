@@ -10,7 +10,8 @@ use std::sync::OnceLock;
 
 use wgpu::util::DeviceExt;
 
-use crate::render::draw_list::{CubeImage, Environment};
+use crate::render::cube_map::{cube_view, CubeImage};
+use crate::render::draw_list::Environment;
 
 /// Bits of `env_info.x` in the shader.
 pub const ENV_SH: u32 = 1;
@@ -68,12 +69,6 @@ impl Maps {
         queue: &wgpu::Queue,
         environment: Option<&Environment>,
     ) -> Maps {
-        let cube_view = |t: &wgpu::Texture| {
-            t.create_view(&wgpu::TextureViewDescriptor {
-                dimension: Some(wgpu::TextureViewDimension::Cube),
-                ..Default::default()
-            })
-        };
         let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
             label: Some("environment"),
             mag_filter: wgpu::FilterMode::Linear,
@@ -81,10 +76,10 @@ impl Maps {
             mipmap_filter: wgpu::MipmapFilterMode::Linear,
             ..Default::default()
         });
-        let blank = || cube_view(&upload_cube(device, queue, &black_cube()));
+        let blank = || cube_view(&CubeImage::uniform([0, 0, 0, 255]).upload(device, queue));
         let radiance = environment
             .and_then(|e| e.specular.as_ref())
-            .map(|cube| upload_cube(device, queue, cube));
+            .map(|cube| cube.upload(device, queue));
         let specular = match &radiance {
             Some(source) => cube_view(&prefilter(device, queue, source, &sampler)),
             None => blank(),
@@ -96,7 +91,7 @@ impl Maps {
                     ..
                 }),
                 _,
-            ) => cube_view(&upload_cube(device, queue, cube)),
+            ) => cube_view(&cube.upload(device, queue)),
             (Some(e), Some(source)) if e.irradiance.is_none() => {
                 cube_view(&irradiance(device, queue, source, &sampler))
             }
@@ -133,63 +128,6 @@ impl Maps {
             sampler,
         }
     }
-}
-
-fn black_cube() -> CubeImage {
-    CubeImage {
-        size: 1,
-        faces: std::array::from_fn(|_| vec![0, 0, 0, 255]),
-    }
-}
-
-/// The cube with its mip chain (each level the mean of 2 × 2 texels of the one above).
-fn upload_cube(device: &wgpu::Device, queue: &wgpu::Queue, cube: &CubeImage) -> wgpu::Texture {
-    let levels = cube.size.max(1).ilog2() + 1;
-    let mut chain: Vec<[Vec<u8>; 6]> = vec![cube.faces.clone()];
-    let mut size = cube.size;
-    while chain.len() < levels as usize {
-        let half = (size / 2).max(1);
-        let above = chain.last().expect("level 0");
-        let next = std::array::from_fn(|f| {
-            let face = &above[f];
-            let mut out = vec![0u8; (half * half * 4) as usize];
-            for y in 0..half {
-                for x in 0..half {
-                    for c in 0..4 {
-                        let at = |dx: u32, dy: u32| {
-                            u32::from(face[(((2 * y + dy) * size + 2 * x + dx) * 4 + c) as usize])
-                        };
-                        let sum = at(0, 0) + at(1, 0) + at(0, 1) + at(1, 1);
-                        out[((y * half + x) * 4 + c) as usize] = ((sum + 2) / 4) as u8;
-                    }
-                }
-            }
-            out
-        });
-        chain.push(next);
-        size = half;
-    }
-    // Mip-major order: every face of level 0, then of level 1…
-    let bytes: Vec<u8> = chain.iter().flatten().flatten().copied().collect();
-    device.create_texture_with_data(
-        queue,
-        &wgpu::TextureDescriptor {
-            label: Some("environment cube"),
-            size: wgpu::Extent3d {
-                width: cube.size,
-                height: cube.size,
-                depth_or_array_layers: 6,
-            },
-            mip_level_count: levels,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: wgpu::TextureFormat::Rgba8Unorm,
-            usage: wgpu::TextureUsages::TEXTURE_BINDING,
-            view_formats: &[],
-        },
-        wgpu::util::TextureDataOrder::MipMajor,
-        &bytes,
-    )
 }
 
 /// The radiance `source` prefiltered by GGX: level m for roughness m / (levels − 1).
@@ -324,10 +262,7 @@ fn draw_faces(
         multiview_mask: None,
         cache: None,
     });
-    let source_view = source.create_view(&wgpu::TextureViewDescriptor {
-        dimension: Some(wgpu::TextureViewDimension::Cube),
-        ..Default::default()
-    });
+    let source_view = cube_view(source);
     let mut encoder = device.create_command_encoder(&Default::default());
     for level in 0..target.mip_level_count() {
         let size = (target.width() >> level).max(1);

@@ -286,7 +286,7 @@ pub fn globals(list: &Layer, width: u32, height: u32, scale: u32, cubes: &[CubeI
         env_info: match &list.environment {
             Some(e) => [
                 super::environment::flags(e),
-                super::environment::specular_levels(e.specular.as_ref().map_or(1, |c| c.size)),
+                super::environment::specular_levels(e.specular.as_ref().map_or(1, |c| c.side)),
                 0,
                 0,
             ],
