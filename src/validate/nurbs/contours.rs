@@ -71,7 +71,7 @@ fn points_2d(doc: &Document, id: NodeId) -> Option<Vec<[f64; 2]>> {
         (None, Some(floats)) => floats.iter().map(|&x| f64::from(x)).collect(),
         (None, None) => return None,
     };
-    if values.len() % 2 != 0 || values.iter().any(|x| !x.is_finite()) {
+    if !values.len().is_multiple_of(2) || values.iter().any(|x| !x.is_finite()) {
         return None;
     }
     Some(values.chunks_exact(2).map(|c| [c[0], c[1]]).collect())

@@ -201,8 +201,8 @@ fn walk_faces_with(
             // A face of three corners cannot cross itself; one with a corner that does
             // not resolve, or of zero area, is other rules' finding.
             if face.len() >= 4 && shape.degenerate == Some(false) {
-                // The corners resolved for the shape, so `flatten` drops none.
-                let corners = face.corners().map(&corner).flatten();
+                // The corners resolved for the shape, so `flat_map` drops none.
+                let corners = face.corners().flat_map(&corner);
                 if let Some(edges) = self_crossing(corners, &mut scratch) {
                     count.crossing += 1;
                     // The crossing edges as stream positions, from positions in the face.
