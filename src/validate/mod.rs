@@ -105,10 +105,22 @@ type FaceSurveys<'a> = Vec<(
 
 impl<'a> Ctx<'a> {
     /// The faces of the polygonal geometries, walked once for the deep rules that judge
-    /// them (DEGENERATE_TRIANGLE, NORMALS_CONTRADICT_CCW), on first use.
+    /// them (DEGENERATE_TRIANGLE, NORMALS_CONTRADICT_CCW, FACE_SELF_INTERSECTING), on
+    /// first use.
     pub fn face_survey(&self) -> std::rc::Rc<FaceSurveys<'a>> {
+        let wanted = rendering::face_survey::Wanted {
+            degenerate: self
+                .config
+                .runs(&rendering::degenerate_triangle::DEGENERATE_TRIANGLE),
+            normals: self
+                .config
+                .runs(&rendering::normals_contradict_ccw::NORMALS_CONTRADICT_CCW),
+            crossing: self
+                .config
+                .runs(&rendering::face_self_intersecting::FACE_SELF_INTERSECTING),
+        };
         self.face_survey
-            .get_or_init(|| std::rc::Rc::new(rendering::face_survey::survey(self.doc, self.config)))
+            .get_or_init(|| std::rc::Rc::new(rendering::face_survey::survey(self.doc, wanted)))
             .clone()
     }
 }

@@ -1,11 +1,14 @@
 //! NURBS component (clause 27): the counts that tie a curve's or surface's knots, order,
 //! control points and weights together.
 
+pub mod contour2d_not_closed;
+pub mod contours;
 pub mod nurbs_control_points_too_few;
 pub mod nurbs_dimension_mismatch;
 pub mod nurbs_knot_count_mismatch;
 pub mod nurbs_knot_decreasing;
 pub mod nurbs_weight_count_mismatch;
+pub mod trimming_loop_clockwise;
 
 use std::collections::HashSet;
 
@@ -23,6 +26,8 @@ pub static RULES: &[&Check] = &[
     &nurbs_control_points_too_few::CHECK,
     &nurbs_weight_count_mismatch::CHECK,
     &nurbs_dimension_mismatch::CHECK,
+    &contour2d_not_closed::CHECK,
+    &trimming_loop_clockwise::CHECK,
 ];
 
 /// One parametric direction of a NURBS node: a curve has one, a surface two (u and v).

@@ -1,25 +1,39 @@
-//! One walk over the faces of every polygonal geometry for the two deep rules that judge
-//! faces, DEGENERATE_TRIANGLE and NORMALS_CONTRADICT_CCW: each face's corners are resolved
-//! and its fan's cross products taken once for both, and the walk is made once
-//! ([`crate::validate::Ctx::face_survey`]) whichever of them asks first. The faces of a
-//! large mesh are most of a deep check's work on it.
+//! One walk over the faces of every polygonal geometry for the three deep rules that
+//! judge faces, DEGENERATE_TRIANGLE, NORMALS_CONTRADICT_CCW and FACE_SELF_INTERSECTING:
+//! each face's corners are resolved and its fan's cross products taken once for all, and
+//! the walk is made once ([`crate::validate::Ctx::face_survey`]) whichever of them asks
+//! first. The faces of a large mesh are most of a deep check's work on it.
+//!
+//! The rules read what the walk found; the walk does not know the rules (which of them run
+//! is handed to it as [`Wanted`]), so the imports go one way.
 
 use std::ops::Range;
 
-use super::degenerate_triangle::DEGENERATE_TRIANGLE;
+use super::face_crossing::{self_crossing, Crossing, Scratch};
 use super::geometry::{
     attribute_lists, corner_point, cross, dot, finite, is_degenerate, judge_polygonal, scaled, sub,
     unit, Checked, FaceShape, Points, PropertyList, Scalars, DEGENERATE_SINE,
 };
-use super::normals_contradict_ccw::NORMALS_CONTRADICT_CCW;
-use crate::config::CheckConfig;
 use crate::model::faces::{counted_runs, runs, Attribute, Binding, Face, PolygonKind};
 use crate::model::{Document, Span, Value};
+
+/// Which findings the walk is to make: those of the rules that run.
+#[derive(Copy, Clone, Default)]
+pub struct Wanted {
+    /// DEGENERATE_TRIANGLE's.
+    pub degenerate: bool,
+    /// NORMALS_CONTRADICT_CCW's.
+    pub normals: bool,
+    /// FACE_SELF_INTERSECTING's.
+    pub crossing: bool,
+}
 
 /// What the walk found in one geometry, for each rule that asked.
 pub struct Survey {
     pub degenerate: Option<DegenerateCount>,
     pub normals: Option<NormalsCount>,
+    /// Only for IndexedFaceSets.
+    pub crossing: Option<CrossingCount>,
 }
 
 /// DEGENERATE_TRIANGLE: the first zero-area face (or strip, or fan) as its number and
@@ -50,25 +64,25 @@ pub struct NormalsCount {
     pub contradict: usize,
 }
 
-/// Every polygonal geometry of [`judge_polygonal`] whose points can be judged, with what
-/// the rules `config` runs find in it, in document order.
-pub fn survey<'a>(doc: &'a Document, config: &CheckConfig) -> Vec<(Checked<'a>, Survey)> {
-    let degenerate = config.runs(&DEGENERATE_TRIANGLE);
-    let normals = config.runs(&NORMALS_CONTRADICT_CCW);
-    judge_polygonal(doc, |geometry| {
-        survey_one(doc, geometry, degenerate, normals)
-    })
+/// FACE_SELF_INTERSECTING: the first face whose edges cross (its number, its first
+/// corner's stream position, the two edges), how many faces cross, of how many.
+#[derive(Default)]
+pub struct CrossingCount {
+    pub first: Option<(usize, usize, Crossing)>,
+    pub crossing: usize,
+    pub total: usize,
 }
 
-fn survey_one(
-    doc: &Document,
-    geometry: &Checked,
-    want_degenerate: bool,
-    want_normals: bool,
-) -> Option<Survey> {
+/// Every polygonal geometry of [`judge_polygonal`] whose points can be judged, with what
+/// the walk finds in it for the rules that want it, in document order.
+pub fn survey<'a>(doc: &'a Document, wanted: Wanted) -> Vec<(Checked<'a>, Survey)> {
+    judge_polygonal(doc, |geometry| survey_one(doc, geometry, wanted))
+}
+
+fn survey_one(doc: &Document, geometry: &Checked, wanted: Wanted) -> Option<Survey> {
     let points = Points::of(doc, geometry)?;
     let by_runs = counts_runs(geometry.faces.kind);
-    let mut degenerate = want_degenerate.then(DegenerateCount::default);
+    let mut degenerate = wanted.degenerate.then(DegenerateCount::default);
     if let (true, Some(count)) = (by_runs, degenerate.as_mut()) {
         let fan = matches!(
             geometry.faces.kind,
@@ -80,7 +94,8 @@ fn survey_one(
             }
         }
     }
-    let normal_lists = want_normals
+    let normal_lists = wanted
+        .normals
         .then(|| attribute_lists(doc, geometry.id, Attribute::Normal))
         .flatten();
     let normals = match normal_lists.as_deref() {
@@ -92,24 +107,34 @@ fn survey_one(
         agree: 0,
         contradict: 0,
     });
+    let mut crossing = (wanted.crossing && geometry.faces.kind == PolygonKind::IndexedFaceSet)
+        .then(CrossingCount::default);
     let per_face = degenerate.as_mut().filter(|_| !by_runs);
-    if per_face.is_some() || agreement.is_some() {
-        walk_faces(geometry, &points, per_face, normals.zip(agreement.as_mut()));
+    if per_face.is_some() || agreement.is_some() || crossing.is_some() {
+        let found = Found {
+            degenerate: per_face,
+            normals: normals.zip(agreement.as_mut()),
+            crossing: crossing.as_mut(),
+        };
+        walk_faces(geometry, &points, found);
     }
     Some(Survey {
         degenerate,
         normals: agreement,
+        crossing,
     })
 }
 
-/// Counts zero-area faces into `degenerate` and the faces `normals` agree and disagree
-/// with into its count, resolving each face once.
-fn walk_faces(
-    geometry: &Checked,
-    points: &Points,
-    degenerate: Option<&mut DegenerateCount>,
-    normals: Option<(PropertyList, &mut NormalsCount)>,
-) {
+/// The counts a walk over faces adds to, for the rules that asked.
+struct Found<'c, 'a> {
+    degenerate: Option<&'c mut DegenerateCount>,
+    normals: Option<(PropertyList<'a>, &'c mut NormalsCount)>,
+    crossing: Option<&'c mut CrossingCount>,
+}
+
+/// Counts zero-area faces, the faces the normals agree and disagree with, and the faces
+/// that cross themselves into `found`, resolving each face once.
+fn walk_faces(geometry: &Checked, points: &Points, found: Found) {
     // The usual mesh, an index list into single-precision coordinates, has its corners
     // looked up directly rather than through the general stream and point kinds.
     // So are its per-vertex normals when they follow the coordinate index.
@@ -118,9 +143,9 @@ fn walk_faces(
     match (geometry.faces.indices(), points) {
         (Some(indices), Points::List(Scalars::Single(values)))
             if geometry.faces.kind == PolygonKind::IndexedTriangleSet
-                && (normals.is_none() || binding == (Binding::PerVertex { index: None })) =>
+                && (found.normals.is_none() || binding == (Binding::PerVertex { index: None })) =>
         {
-            walk_triangles(geometry, indices, values, degenerate, normals)
+            walk_triangles(geometry, indices, values, found.degenerate, found.normals)
         }
         (Some(indices), Points::List(Scalars::Single(values))) => {
             let values = Scalars::Single(values);
@@ -128,8 +153,7 @@ fn walk_faces(
             let by_coord = binding == (Binding::PerVertex { index: None });
             walk_faces_with(
                 geometry,
-                degenerate,
-                normals,
+                found,
                 |position| finite(values.vec3(coord_index(position)?)?),
                 |face, position| {
                     if by_coord {
@@ -142,8 +166,7 @@ fn walk_faces(
         }
         _ => walk_faces_with(
             geometry,
-            degenerate,
-            normals,
+            found,
             |position| corner_point(geometry, points, position),
             bound,
         ),
@@ -154,19 +177,45 @@ fn walk_faces(
 /// `normal_index` (from the face and the corner's stream position).
 fn walk_faces_with(
     geometry: &Checked,
-    mut degenerate: Option<&mut DegenerateCount>,
-    mut normals: Option<(PropertyList, &mut NormalsCount)>,
+    found: Found,
     corner: impl Fn(usize) -> Option<[f64; 3]>,
     normal_index: impl Fn(&Face, usize) -> Option<usize>,
 ) {
+    let Found {
+        mut degenerate,
+        mut normals,
+        mut crossing,
+    } = found;
     let binding = geometry.faces.binding(Attribute::Normal);
     let units = normals
         .as_ref()
         .map(|(list, _)| UnitNormals::of(list, binding, geometry.faces.stream_len()));
+    let mut scratch = Scratch::default();
     for face in geometry.faces.faces() {
         let shape = FaceShape::with(&face, &corner);
         if let (Some(count), Some(zero)) = (degenerate.as_deref_mut(), shape.degenerate) {
             count.add(face.number, face.corner(0), zero);
+        }
+        if let Some(count) = crossing.as_deref_mut() {
+            count.total += 1;
+            // A face of three corners cannot cross itself; one with a corner that does
+            // not resolve, or of zero area, is other rules' finding.
+            if face.len() >= 4 && shape.degenerate == Some(false) {
+                // The corners resolved for the shape, so `flat_map` drops none.
+                let corners = face.corners().flat_map(&corner);
+                if let Some(edges) = self_crossing(corners, &mut scratch) {
+                    count.crossing += 1;
+                    // The crossing edges as stream positions, from positions in the face.
+                    let at = |(a, b): (usize, usize)| (face.corner(a), face.corner(b));
+                    let edges = Crossing {
+                        first: at(edges.first),
+                        second: at(edges.second),
+                    };
+                    count
+                        .first
+                        .get_or_insert((face.number, face.corner(0), edges));
+                }
+            }
         }
         let (Some((_, count)), Some(units)) = (normals.as_mut(), units.as_ref()) else {
             continue;

@@ -3,6 +3,7 @@
 
 use super::Check;
 
+pub mod face_crossing;
 pub mod face_survey;
 pub mod geometry;
 
@@ -14,6 +15,7 @@ pub mod count_leaves_coords;
 pub mod degenerate_triangle;
 pub mod face_not_convex;
 pub mod face_not_planar;
+pub mod face_self_intersecting;
 pub mod height_count_mismatch;
 pub mod index_count_mismatch;
 pub mod index_negative;
@@ -44,5 +46,6 @@ pub static RULES: &[&Check] = &[
     &index_count_mismatch::CHECK,
     &face_not_convex::CHECK,
     &face_not_planar::CHECK,
+    &face_self_intersecting::CHECK,
     &height_count_mismatch::CHECK,
 ];
