@@ -128,8 +128,7 @@ fn render_cases_match_their_references() {
 
 /// `--render` of a web page draws the island `--island` picks (the first by default):
 /// both islands of corpus/html/x3dom.html against `corpus/render/html_island_N/
-/// reference.png` (a red quad; a blue sphere of radius −2, which is drawn as radius 2?
-/// no: the reference shows what is drawn).
+/// reference.png`.
 #[test]
 fn each_island_of_a_page_renders_like_its_reference() {
     if !x3dcheck::render::adapter_for_test("each_island_of_a_page_renders_like_its_reference") {
@@ -140,7 +139,7 @@ fn each_island_of_a_page_renders_like_its_reference() {
     let source = std::fs::read(&page).unwrap();
     let update = std::env::var_os("X3DCHECK_UPDATE_REFERENCES").is_some_and(|v| v == "1");
     let mut failures = Vec::new();
-    for island in [1, 2] {
+    for island in [1u32, 2] {
         let x3dcheck::check::Checked {
             mut report,
             document,
@@ -150,7 +149,7 @@ fn each_island_of_a_page_renders_like_its_reference() {
             &source,
             &CheckConfig {
                 render: true,
-                island,
+                island: island as usize,
                 ..CheckConfig::default()
             },
         );
