@@ -120,3 +120,34 @@ fn a_walk_takes_pages_that_hold_x3d() {
     assert!(listed.contains("canvas.htm"), "{listed}");
     assert!(!listed.contains("plain.html"), "{listed}");
 }
+
+#[test]
+fn what_x3dom_reads_is_no_error_on_its_page() {
+    // isPickable is X3DOM's on Shape; HTML in <x3d> is the page's; X3DOM's RenderedTexture
+    // is not checked as X3D 4.1's.
+    let page = "<html><body><x3d><div class='x3dom-statdiv'></div><scene>\n<shape isPickable='false'><appearance><renderedtexture update='always'></renderedtexture></appearance><box></box></shape>\n</scene></x3d></body></html>";
+    assert_eq!(places(page, "X3DOM_EXTENSION"), [(2, 8), (2, 40)]);
+    for code in ["FIELD_UNKNOWN", "ROOT_CONTENT_IGNORED"] {
+        assert!(places(page, code).is_empty(), "{code}");
+    }
+    // Unquoted MFString, TRUE, CSS colour: X3DOM_VALUE_SYNTAX; a value X3DOM does not read
+    // either stays FIELD_VALUE_SYNTAX.
+    let page = "<x3d><scene>\n<pointlight on='TRUE'></pointlight><pointlight on='yes'></pointlight>\n<material diffusecolor='#f63'></material><inline url='a.x3d'></inline>\n</scene></x3d>";
+    assert_eq!(
+        places(page, "X3DOM_VALUE_SYNTAX"),
+        [(2, 17), (3, 25), (3, 55)]
+    );
+    assert_eq!(places(page, "FIELD_VALUE_SYNTAX"), [(2, 52)]);
+    // In an X_ITE island only the unquoted MFString is read.
+    let page = "<html><body><x3d-canvas><x3d><scene>\n<pointlight on='TRUE'></pointlight><inline url='a.x3d'></inline>\n</scene></x3d></x3d-canvas></body></html>";
+    assert_eq!(places(page, "X3DOM_VALUE_SYNTAX"), [(2, 49)]);
+    assert_eq!(places(page, "FIELD_VALUE_SYNTAX"), [(2, 17)]);
+}
+
+#[test]
+fn a_server_template_is_a_page_and_its_placeholders_are_not_values() {
+    let page = "{% extends \"base.html\" %}\n{% block content %}<x3d><scene>\n<inline url=\"{{ model.inline }}\"></inline>\n</scene></x3d>{% endblock %}";
+    assert!(places(page, "JSON_MALFORMED").is_empty());
+    assert!(places(page, "FIELD_VALUE_SYNTAX").is_empty());
+    assert_eq!(places(page, "VALIDATION_INCOMPLETE"), [(3, 14)]);
+}

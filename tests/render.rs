@@ -125,6 +125,49 @@ fn render_cases_match_their_references() {
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
+/// `--render` of a web page draws the island `--island` picks (the first by default):
+/// both islands of corpus/html/x3dom.html against `corpus/render/html_island_N/
+/// reference.png`.
+#[test]
+fn each_island_of_a_page_renders_like_its_reference() {
+    if !x3dcheck::render::adapter_for_test("each_island_of_a_page_renders_like_its_reference") {
+        return;
+    }
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let page = root.join("corpus/html/x3dom.html");
+    let source = std::fs::read(&page).unwrap();
+    let update = std::env::var_os("X3DCHECK_UPDATE_REFERENCES").is_some_and(|v| v == "1");
+    let mut failures = Vec::new();
+    for island in [1u32, 2] {
+        let x3dcheck::check::Checked {
+            mut report,
+            document,
+            ..
+        } = x3dcheck::check::check_document(
+            &page.display().to_string(),
+            &source,
+            &CheckConfig {
+                render: true,
+                island: island as usize,
+                ..CheckConfig::default()
+            },
+        );
+        let args = RenderArgs { island, ..args() };
+        let image = render_image(&args, &page, None, &source, document.as_ref(), &mut report)
+            .unwrap_or_else(|e| panic!("island {island}: {e}"));
+        let case = root.join(format!("corpus/render/html_island_{island}"));
+        let reference_path = case.join("reference.png");
+        if update || !reference_path.exists() {
+            std::fs::create_dir_all(&case).unwrap();
+            image.save(&reference_path).unwrap();
+            continue;
+        }
+        let reference = image::open(&reference_path).unwrap().to_rgba8();
+        failures.extend(compare(&image, &reference, &case));
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
 /// None when the images match; else writes actual.png and diff.png and says how much differs.
 fn compare(actual: &image::RgbaImage, reference: &image::RgbaImage, case: &Path) -> Option<String> {
     if actual.dimensions() != reference.dimensions() {

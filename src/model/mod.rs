@@ -495,6 +495,9 @@ pub struct Document {
     /// Read from an X3D island of an HTML page (X3DOM, X_ITE), which needs no `version` or
     /// `profile`.
     pub in_page: bool,
+    /// In a page that is a server's template, the attribute values that are placeholders
+    /// (`{{ model.inline }}`), left out.
+    pub template_values: Vec<Span>,
     pub nodes: Vec<Node>,
     /// The Scene's top-level nodes.
     pub scene: Vec<ChildRef>,
@@ -567,6 +570,7 @@ impl Document {
             root_span: Span::default(),
             scene_span: None,
             in_page: false,
+            template_values: Vec::new(),
             nodes: Vec::new(),
             scene: Vec::new(),
             routes: Vec::new(),

@@ -71,6 +71,15 @@ pub fn detect(source: &[u8]) -> Detected {
     if let Some(xhtml) = html_page(text) {
         return Detected::Html { xhtml };
     }
+    // A server's page template (Jinja, Django: `{% extends "base.html" %}`) is HTML to
+    // be: `{%`, `{{` and `{#` start no JSON text.
+    if [&b"{%"[..], b"{{", b"{#"]
+        .iter()
+        .any(|p| text.starts_with(p))
+        && text.contains(&b'<')
+    {
+        return Detected::Html { xhtml: false };
+    }
     match text.first() {
         Some(b'<') => Detected::Xml,
         Some(b'{') | Some(b'[') => Detected::Json,

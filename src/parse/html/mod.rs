@@ -15,15 +15,19 @@ mod tree;
 pub mod x3dom;
 
 use std::borrow::Cow;
+use std::cell::RefCell;
 
 use super::behind::Progress;
 use super::rules::{
     ENCODING_UNSUPPORTED, HTML_SCENE_MISSING, HTML_SELF_CLOSED, ROOT_NOT_X3D, X3DOM_EXTENSION,
+    X3DOM_VALUE_SYNTAX,
 };
 use super::xml::{Attr, XmlReader};
+use super::xml_value;
 use super::{KeepValues, Parsed};
 use crate::diagnostic::Diagnostic;
 use crate::model::{Encoding, Span};
+use crate::schema::FieldType;
 use tags::Kind;
 use tree::{Data, NodeId, Tree};
 
@@ -54,13 +58,15 @@ pub fn read_islands(
     }
     let tree = Tree::parse(text);
     let mut roots = Vec::new();
-    find_islands(&tree, 0, &mut roots);
+    find_islands(&tree, 0, Library::X3dom, &mut roots);
     Ok(roots
         .into_iter()
-        .map(|root| {
+        .map(|(root, library)| {
             Page {
                 source,
                 tree: &tree,
+                library,
+                templates: RefCell::default(),
             }
             .island(root, keep, progress)
         })
@@ -97,18 +103,28 @@ pub fn no_island() -> Diagnostic {
     .help("X3DOM scenes are `<x3d><scene>…</scene></x3d>`; X_ITE's are `<x3d-canvas>` holding `<X3D>`, or `<x3d-canvas src='scene.x3d'>`")
 }
 
-/// The islands under `node`, outermost first: `<x3d>` elements, and `<x3d-canvas>`
-/// elements holding none (X_ITE loading `src`).
-fn find_islands(tree: &Tree, node: NodeId, out: &mut Vec<NodeId>) {
+/// The library that draws an island: X_ITE for what an `<x3d-canvas>` holds, X3DOM for
+/// an `<x3d>` elsewhere.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Library {
+    X3dom,
+    XIte,
+}
+
+/// The islands under `node`, outermost first, with their library: `<x3d>` elements, and
+/// `<x3d-canvas>` elements holding none (X_ITE loading `src`).
+fn find_islands(tree: &Tree, node: NodeId, library: Library, out: &mut Vec<(NodeId, Library)>) {
+    let mut library = library;
     if let Some((name, _)) = tree.element(node) {
         match &*name.local {
-            "x3d" => return out.push(node),
-            "x3d-canvas" if !holds_x3d(tree, node) => return out.push(node),
+            "x3d" => return out.push((node, library)),
+            "x3d-canvas" if !holds_x3d(tree, node) => return out.push((node, Library::XIte)),
+            "x3d-canvas" => library = Library::XIte,
             _ => {}
         }
     }
     for &child in &tree.nodes[node].children {
-        find_islands(tree, child, out);
+        find_islands(tree, child, library, out);
     }
 }
 
@@ -122,6 +138,9 @@ fn holds_x3d(tree: &Tree, node: NodeId) -> bool {
 struct Page<'a> {
     source: &'a [u8],
     tree: &'a Tree,
+    library: Library,
+    /// The attribute values left out as template placeholders (`{{ model.url }}`).
+    templates: RefCell<Vec<Span>>,
 }
 
 /// An element's place in the page: its start tag, and the end of what closed it.
@@ -152,6 +171,7 @@ impl<'a> Page<'a> {
         let mut parsed = reader.finish(result);
         if let Some(document) = &mut parsed.document {
             document.in_page = true;
+            document.template_values = self.templates.take();
         }
         if !is_canvas && !self.has_scene(root) {
             parsed.diagnostics.push(
@@ -233,6 +253,15 @@ impl<'a> Page<'a> {
             ));
             return Ok(());
         }
+        if self.library == Library::X3dom && x3dom::RENAMED_NODES.contains(&lower) {
+            let as_written = self.text(name_span);
+            found.push(Diagnostic::new(
+                &X3DOM_EXTENSION,
+                name_span,
+                format!("`<{as_written}>` is X3DOM's node of that name, with other fields than X3D's: only X3DOM reads it, and its content is not checked"),
+            ));
+            return Ok(());
+        }
         let name = if root {
             "X3D"
         } else {
@@ -250,11 +279,12 @@ impl<'a> Page<'a> {
                 ),
                 None => (name_span, name_span),
             };
-            let mapped = match root {
+            // The node type's own fields, then X3DOM's, then any X3D name (names.rs).
+            let own = match root {
                 true => ["version", "profile"].into_iter().find(|&n| n == written),
-                false => names::attribute(name, written),
+                false => names::own_field(name, written).map(|f| f.name),
             };
-            if mapped.is_none() && x3dom::is_attribute(written, root) {
+            if own.is_none() && x3dom::is_attribute(written, root) {
                 let as_written = self.text(name_span);
                 found.push(Diagnostic::new(
                     &X3DOM_EXTENSION,
@@ -263,12 +293,37 @@ impl<'a> Page<'a> {
                 ));
                 continue;
             }
+            let mapped = own.or_else(|| (!root).then(|| names::attribute(name, written))?);
+            if is_template(&attr.value) {
+                self.templates.borrow_mut().push(value_span);
+                continue;
+            }
             let raw = &self.source[value_span.start as usize..value_span.end as usize];
-            let verbatim = raw == attr.value.as_bytes().as_ref();
-            let value = match std::str::from_utf8(raw) {
+            let mut verbatim = raw == attr.value.as_bytes().as_ref();
+            let mut value = match std::str::from_utf8(raw) {
                 Ok(raw) if verbatim => Cow::Borrowed(raw),
                 _ => Cow::Owned(attr.value.to_string()),
             };
+            let field = mapped.and_then(|m| names::own_field(name, m));
+            if let Some(read) = field.and_then(|f| self.library_value(f.ty, &value)) {
+                let field = mapped.unwrap_or(written);
+                found.push(
+                    Diagnostic::new(
+                        &X3DOM_VALUE_SYNTAX,
+                        value_span,
+                        format!(
+                            "`{field}`: `{}` {}: {} reads it as `{}`, the X3D encodings do not read it",
+                            crate::parse::xml::truncate(&value, 40),
+                            read.what,
+                            self.library.name(),
+                            crate::parse::xml::truncate(&read.value, 40),
+                        ),
+                    )
+                    .help(format!("write {field}='{}' for every X3D browser", read.value)),
+                );
+                value = Cow::Owned(read.value);
+                verbatim = false;
+            }
             attrs.push(Attr {
                 name: mapped.unwrap_or(written),
                 name_span,
@@ -294,6 +349,11 @@ impl<'a> Page<'a> {
         }
         for &child in children {
             match &self.tree.nodes[child].data {
+                // HTML in the `<x3d>` element is the page's: X3DOM takes its scene from the
+                // `scene` child alone (`x3dom.findScene`: "if ( sceneElem.localName.
+                // toLowerCase() === "scene" )") and leaves the rest to the browser (the
+                // `<div class="x3dom-statdiv">` a page writes there).
+                Data::Element { .. } if root && self.is_html(child) => {}
                 Data::Element { .. } => {
                     let at = self.place(child, Some(place));
                     self.element(child, at, reader, found)?;
@@ -307,6 +367,58 @@ impl<'a> Page<'a> {
         }
         reader.end(place.end);
         Ok(())
+    }
+
+    /// Whether `node` is an element that is neither X3D's nor X3DOM's (`<div>`).
+    fn is_html(&self, node: NodeId) -> bool {
+        self.tree.element(node).is_some_and(|(name, _)| {
+            names::element(&name.local).is_none() && !x3dom::NODES.contains(&&*name.local)
+        })
+    }
+
+    /// How this island's library reads `text`, a value of a field of type `ty` that the
+    /// XML encoding does not read, when it reads it at all.
+    fn library_value(&self, ty: FieldType, text: &str) -> Option<LibraryValue> {
+        if xml_value::parse_value(ty, text).is_ok() {
+            return None;
+        }
+        let x3dom = self.library == Library::X3dom;
+        match ty {
+            // X3DOM's `MFString.parse`: "if ( str.length && str[ 0 ] == '\"' ) … else {
+            // arr.push( str ); }" after `str.trim()`; X_ITE's XMLParser: "make sure to
+            // separate each individual string with double quotation marks!", then
+            // `field.setValue ([this.input])`.
+            FieldType::MFString if !text.trim_start().starts_with('"') => Some(LibraryValue {
+                value: format!(
+                    "\"{}\"",
+                    text.trim().replace('\\', "\\\\").replace('"', "\\\"")
+                ),
+                what: "has no quotes",
+            }),
+            // X3DOM's `addField_SFBool`: "getAttribute( name ).toLowerCase() === "true"".
+            FieldType::SFBool
+                if x3dom
+                    && (text.eq_ignore_ascii_case("true")
+                        || text.eq_ignore_ascii_case("false")) =>
+            {
+                Some(LibraryValue {
+                    value: text.to_ascii_lowercase(),
+                    what: "is not lower case",
+                })
+            }
+            FieldType::SFColor | FieldType::SFColorRGBA if x3dom => {
+                let [r, g, b, a] = css_color(text)?;
+                let value = match ty {
+                    FieldType::SFColor => [r, g, b].map(number).join(" "),
+                    _ => [r, g, b, a].map(number).join(" "),
+                };
+                Some(LibraryValue {
+                    value,
+                    what: "is a CSS colour",
+                })
+            }
+            _ => None,
+        }
     }
 
     /// The page's text at `span`, as written.
@@ -391,6 +503,88 @@ impl<'a> Page<'a> {
         reader.end(place.end);
         Ok(())
     }
+}
+
+/// A value as the island's library reads it.
+struct LibraryValue {
+    /// Its X3D XML spelling.
+    value: String,
+    /// What the library accepts in it.
+    what: &'static str,
+}
+
+impl Library {
+    fn name(self) -> &'static str {
+        match self {
+            Library::X3dom => "X3DOM",
+            Library::XIte => "X_ITE",
+        }
+    }
+}
+
+/// Whether an attribute value is a template placeholder that a server fills in (Jinja,
+/// Django, Handlebars: `{{ model.inline }}`, `{% url … %}`): not a value yet.
+fn is_template(value: &str) -> bool {
+    value.contains("{{") || value.contains("{%")
+}
+
+/// A CSS colour as X3DOM's `_colorParse` reads it, as red, green, blue and alpha ratios:
+/// `#rgb`, `#rgba`, `#rrggbb`, `#rrggbbaa`, `rgb(r, g, b)` and `rgba(r, g, b, a)` with
+/// 0–255 channels. None for what it does not read (it reads that as black).
+fn css_color(text: &str) -> Option<[f64; 4]> {
+    if let Some(hex) = text.strip_prefix('#') {
+        if !hex.bytes().all(|b| b.is_ascii_hexdigit()) {
+            return None;
+        }
+        let digit = |i: usize, width: usize| {
+            let max = if width == 1 { 15.0 } else { 255.0 };
+            u8::from_str_radix(&hex[i * width..(i + 1) * width], 16).map(|v| f64::from(v) / max)
+        };
+        let (count, width) = match hex.len() {
+            3 => (3, 1),
+            4 => (4, 1),
+            6 => (3, 2),
+            8 => (4, 2),
+            _ => return None,
+        };
+        let mut rgba = [1.0; 4];
+        for (i, channel) in rgba.iter_mut().take(count).enumerate() {
+            *channel = digit(i, width).ok()?;
+        }
+        return Some(rgba);
+    }
+    // `rgb(\d{1,3},\s{0,1}\d{1,3},\s{0,1}\d{1,3})`, and rgba with an alpha in 0–1.
+    let (inner, alpha) = match text.strip_prefix("rgba(") {
+        Some(rest) => (rest.strip_suffix(')')?, true),
+        None => (text.strip_prefix("rgb(")?.strip_suffix(')')?, false),
+    };
+    let parts: Vec<&str> = inner
+        .split(',')
+        .map(|p| p.strip_prefix(' ').unwrap_or(p))
+        .collect();
+    if parts.len() != if alpha { 4 } else { 3 } {
+        return None;
+    }
+    let mut rgba = [1.0; 4];
+    for (i, part) in parts.iter().enumerate() {
+        rgba[i] = if i == 3 {
+            part.parse::<f64>()
+                .ok()
+                .filter(|a| (0.0..=1.0).contains(a))?
+        } else if (1..=3).contains(&part.len()) && part.bytes().all(|b| b.is_ascii_digit()) {
+            part.parse::<f64>().ok()? / 255.0
+        } else {
+            return None;
+        };
+    }
+    Some(rgba)
+}
+
+/// A ratio written as X3D writes numbers: at most four decimals, no trailing zeros.
+fn number(value: f64) -> String {
+    let text = format!("{value:.4}");
+    let text = text.trim_end_matches('0').trim_end_matches('.');
+    text.to_string()
 }
 
 /// The islands of an XHTML page: each `X3D` element (any case), read by the XML reader from

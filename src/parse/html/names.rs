@@ -10,7 +10,7 @@ use std::collections::HashMap;
 use std::sync::LazyLock;
 
 use crate::model::statement_attributes;
-use crate::schema::{schema, NodeDef, Version};
+use crate::schema::{schema, FieldDef, NodeDef, Version};
 
 /// The elements of the XML encoding (19776-1) that are not node types.
 const STATEMENTS: &[&str] = &[
@@ -97,13 +97,19 @@ pub fn element(name: &str) -> Option<&'static str> {
 /// name): the node type's own field first, so that a name two types spell differently
 /// takes the spelling of this one, then any field or XML attribute.
 pub fn attribute(element: &str, name: &str) -> Option<&'static str> {
-    let own = newest_def(element).and_then(|def| {
-        def.fields
-            .iter()
-            .find(|f| f.name.eq_ignore_ascii_case(name))
-            .map(|f| f.name)
-    });
-    own.or_else(|| ATTRIBUTES.get(&name.to_ascii_lowercase()).copied())
+    own_field(element, name)
+        .map(|f| f.name)
+        .or_else(|| ATTRIBUTES.get(&name.to_ascii_lowercase()).copied())
+}
+
+/// The field of node type `element` written `name` in any case, in the newest version
+/// that has the type.
+pub fn own_field(element: &str, name: &str) -> Option<&'static FieldDef> {
+    newest_def(element)?
+        .fields
+        .iter()
+        .find(|f| f.name.eq_ignore_ascii_case(name))
+        .copied()
 }
 
 fn newest_def(node: &str) -> Option<&'static NodeDef> {

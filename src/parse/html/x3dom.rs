@@ -5,6 +5,11 @@
 //! parameters of `<param>` that `src/util/Properties.js` users read), less the X3D
 //! names (the test below keeps them apart). All names are lower case, as an HTML parser
 //! gives them.
+//!
+//! The field names are looked up after the node type's own X3D fields and before any
+//! other X3D field name: `isPickable` is X3DOM's field of Shape (its X3DShapeNode:
+//! `this.addField_SFBool( ctx, "isPickable", true )`) and X3D's of Layer only, so on a
+//! Shape it is X3DOM's.
 
 /// X3DOM node types that are no X3D node type.
 pub const NODES: &[&str] = &[
@@ -79,11 +84,19 @@ pub const ROOT_ATTRIBUTES: &[&str] = &[
     "width",
 ];
 
+/// X3DOM node types that have the name of an X3D 4.1 node type but are X3DOM's own, with
+/// other fields: X3DOM's RenderedTexture is instantreality's (`viewpoint`, `background`,
+/// `fog`, `scene`, `excludeNodes`, `dimensions`, `update`: its `registerNodeType(
+/// "RenderedTexture", "Texturing", …)`), X3D 4.1's renders a URL-less texture with
+/// `updateInterval`, `width`, `height`. In an X3DOM island they are X3DOM's.
+pub const RENAMED_NODES: &[&str] = &["renderedtexture"];
+
 /// Fields X3DOM adds to X3D node types (e.g. `render` on every bounded node, `zNear` on
-/// viewpoints, `nameSpaceName` and `mapDEFToID` on Inline, `lit` on geometry), which no X3D
-/// node type has.
+/// viewpoints, `nameSpaceName` and `mapDEFToID` on Inline, `lit` on geometry,
+/// `isPickable` on Shape), which these node types do not have in X3D.
 pub const NODE_ATTRIBUTES: &[&str] = &[
     "render",
+    "ispickable",
     "sortkey",
     "sorttype",
     "idmap",
@@ -123,7 +136,19 @@ mod tests {
             assert_eq!(names::element(node), None, "{node} is an X3D name");
         }
         for attribute in NODE_ATTRIBUTES {
-            assert_eq!(names::attribute("Shape", attribute), None, "{attribute}");
+            for node in [
+                "Shape",
+                "Transform",
+                "Inline",
+                "Viewpoint",
+                "Material",
+                "Box",
+            ] {
+                assert!(
+                    names::own_field(node, attribute).is_none(),
+                    "{node} {attribute}"
+                );
+            }
         }
         assert!(NODES.windows(2).all(|w| w[0] < w[1]));
     }

@@ -12,6 +12,7 @@ pub mod root_not_x3d;
 pub mod use_with_fields;
 pub mod vrml_malformed;
 pub mod x3dom_extension;
+pub mod x3dom_value_syntax;
 pub mod xml_encoding_unsupported;
 pub mod xml_malformed;
 
@@ -25,5 +26,6 @@ pub use root_not_x3d::ROOT_NOT_X3D;
 pub use use_with_fields::USE_WITH_FIELDS;
 pub use vrml_malformed::VRML_MALFORMED;
 pub use x3dom_extension::X3DOM_EXTENSION;
+pub use x3dom_value_syntax::X3DOM_VALUE_SYNTAX;
 pub use xml_encoding_unsupported::XML_ENCODING_UNSUPPORTED;
 pub use xml_malformed::XML_MALFORMED;

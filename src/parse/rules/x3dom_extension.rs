@@ -4,7 +4,10 @@ crate::declare_rule! {
     /// ## What it does
     /// Reports, in an X3D island of an HTML page, an element or attribute that X3DOM
     /// reads but X3D does not have: X3DOM's node types (`<param>`, `<multipart>`,
-    /// `<binaryGeometry>`, `<imageGeometry>`, `<plane>`, `<commonSurfaceShader>`…), the
+    /// `<binaryGeometry>`, `<imageGeometry>`, `<plane>`, `<commonSurfaceShader>`…, and in
+    /// an X3DOM island `<RenderedTexture>`, X3DOM's own node of the name X3D 4.1 gives
+    /// another node, with other fields: `viewpoint`, `scene`, `excludeNodes`,
+    /// `dimensions`, `update`), the
     /// attributes of its `<x3d>` element (`showStat`, `showLog`, `mapDEFToID`, `width`…),
     /// its node fields (`render`, `isPickable`…) and HTML event handlers on nodes
     /// (`onclick`). The list is X3DOM's own (src/parse/html/x3dom.rs).

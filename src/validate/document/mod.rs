@@ -36,6 +36,7 @@ pub static RULES: &[&Check] = &[
     &Check::reported(&crate::parse::rules::HTML_SCENE_MISSING),
     &Check::reported(&crate::parse::rules::HTML_SELF_CLOSED),
     &Check::reported(&crate::parse::rules::X3DOM_EXTENSION),
+    &Check::reported(&crate::parse::rules::X3DOM_VALUE_SYNTAX),
     &x3d_version_missing::CHECK,
     &x3d_version_unknown::CHECK,
     &profile_missing::CHECK,

@@ -20,7 +20,9 @@ crate::declare_rule! {
     /// X3D or VRML scene (glTF, which X3D 4 Inlines may load), and an IMPORT whose Inline's
     /// file is out of reach (network URLs, files outside the tree or missing, standard
     /// input: the Inline itself is noted by URL_UNRESOLVED). A local Inline's file is
-    /// checked as a scene of its own at the deep level and gets no note.
+    /// checked as a scene of its own at the deep level and gets no note. In a web page
+    /// that is a server's template, the attribute values that are placeholders
+    /// (`url="{{ model.inline }}"`) are left out, and one note says how many.
     ///
     /// Prototypes: each ProtoInstance of a ProtoDeclare is instantiated (19775-1 4.4.4)
     /// and every rule checks the nodes it builds with the values it passes. A ProtoDeclare
@@ -149,6 +151,21 @@ fn check(ctx: &mut Ctx) {
                 ),
             ));
         }
+    }
+    // The attribute values of a page template (`url="{{ model.inline }}"`), left out by
+    // the HTML reader: the page is checked without them.
+    if let Some(&first) = ctx.doc.template_values.first() {
+        let count = ctx.doc.template_values.len();
+        let values = if count == 1 {
+            "an attribute value is a template placeholder".to_string()
+        } else {
+            format!("{count} attribute values are template placeholders")
+        };
+        found.push((
+            first,
+            None,
+            format!("{values} (`{{{{ … }}}}`, `{{% … %}}`) that a server fills in: not checked"),
+        ));
     }
     for (span, node, message) in found {
         let mut diagnostic = Diagnostic::new(&VALIDATION_INCOMPLETE, span, message);
