@@ -23,9 +23,9 @@ use super::rules::{
     X3DOM_VALUE_SYNTAX,
 };
 use super::xml::{Attr, XmlReader};
-use super::xml_value;
 use super::{KeepValues, Parsed};
 use crate::diagnostic::Diagnostic;
+use crate::model::text::xml_value;
 use crate::model::{Encoding, Span};
 use crate::schema::FieldType;
 use tags::Kind;
