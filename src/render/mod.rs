@@ -58,6 +58,7 @@ use crate::diagnostic::Diagnostic;
 #[cfg(feature = "render")]
 use crate::model::rules::LIMIT_EXCEEDED;
 use crate::model::Document;
+#[cfg(feature = "render")]
 use crate::report::resolve;
 use crate::report::FileReport;
 #[cfg(feature = "render")]
