@@ -80,10 +80,14 @@ fn check(ctx: &mut Ctx) {
         };
         let edge = |(a, b): (usize, usize)| format!("coordIndex[{a}]–[{b}]");
         let message = format!(
-            "{} of the {} faces of this IndexedFaceSet {} itself (first: face {number}, at coordIndex[{position}]: its edges {} and {} cross): its rendering is undefined",
+            "{} of the {} faces of this IndexedFaceSet {} (first: face {number}, at coordIndex[{position}]: its edges {} and {} cross): its rendering is undefined",
             count.crossing,
             count.total,
-            if count.crossing == 1 { "crosses" } else { "cross" },
+            if count.crossing == 1 {
+                "crosses itself"
+            } else {
+                "cross themselves"
+            },
             edge(edges.first),
             edge(edges.second),
         );
