@@ -529,9 +529,14 @@ fn is_template(value: &str) -> bool {
 }
 
 /// A CSS colour as X3DOM's `_colorParse` reads it, as red, green, blue and alpha ratios:
-/// `#rgb`, `#rgba`, `#rrggbb`, `#rrggbbaa`, `rgb(r, g, b)` and `rgba(r, g, b, a)` with
-/// 0–255 channels. None for what it does not read (it reads that as black).
+/// a name of its table (`x3dom::COLOR_NAMES`), `#rgb`, `#rgba`, `#rrggbb`, `#rrggbbaa`,
+/// `rgb(r, g, b)` and `rgba(r, g, b, a)` with 0–255 channels. None for what it does not
+/// read (it reads that as black).
 fn css_color(text: &str) -> Option<[f64; 4]> {
+    if let Some(rgb) = x3dom::color_name(text) {
+        let channel = |shift: u32| f64::from((rgb >> shift) & 0xff) / 255.0;
+        return Some([channel(16), channel(8), channel(0), 1.0]);
+    }
     if let Some(hex) = text.strip_prefix('#') {
         if !hex.bytes().all(|b| b.is_ascii_hexdigit()) {
             return None;

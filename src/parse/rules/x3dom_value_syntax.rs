@@ -14,9 +14,10 @@ crate::declare_rule! {
     /// - in an X3DOM island, an SFBool in another case (`on='TRUE'`): X3DOM reads
     ///   `getAttribute( name ).toLowerCase() === "true"`;
     /// - in an X3DOM island, an SFColor or SFColorRGBA written as a CSS colour
-    ///   (`diffuseColor='#FF6633'`, `#f63`, `rgb(255, 102, 51)`): X3DOM's
-    ///   `SFColor.parse` falls back to its `_colorParse`, which reads `#rgb`, `#rgba`,
-    ///   `#rrggbb`, `#rrggbbaa`, `rgb()` and `rgba()`.
+    ///   (`diffuseColor='#FF6633'`, `#f63`, `rgb(255, 102, 51)`, `tomato`): X3DOM's
+    ///   `SFColor.parse` falls back to its `_colorParse`, which reads the colour names
+    ///   of its table (lower case), `#rgb`, `#rgba`, `#rrggbb`, `#rrggbbaa`, `rgb()` and
+    ///   `rgba()`.
     ///
     /// A value neither the encoding nor the library reads is FIELD_VALUE_SYNTAX, as in an
     /// `.x3d` file (X3DOM reads `on='yes'` as false, a colour it cannot parse as black).
