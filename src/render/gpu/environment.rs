@@ -10,6 +10,7 @@ use std::sync::OnceLock;
 
 use wgpu::util::DeviceExt;
 
+use super::pipelines::cube_entries;
 use crate::render::cube_map::{cube_view, CubeImage};
 use crate::render::draw_list::Environment;
 
@@ -204,6 +205,7 @@ fn draw_faces(
         label: Some("environment"),
         source: wgpu::ShaderSource::Wgsl(ENVIRONMENT_WGSL.into()),
     });
+    let [cube, cube_sampler] = cube_entries(1);
     let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
         label: Some("environment pass"),
         entries: &[
@@ -217,22 +219,8 @@ fn draw_faces(
                 },
                 count: None,
             },
-            wgpu::BindGroupLayoutEntry {
-                binding: 1,
-                visibility: wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Texture {
-                    sample_type: wgpu::TextureSampleType::Float { filterable: true },
-                    view_dimension: wgpu::TextureViewDimension::Cube,
-                    multisampled: false,
-                },
-                count: None,
-            },
-            wgpu::BindGroupLayoutEntry {
-                binding: 2,
-                visibility: wgpu::ShaderStages::FRAGMENT,
-                ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
-                count: None,
-            },
+            cube,
+            cube_sampler,
         ],
     });
     let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {

@@ -165,27 +165,6 @@ impl<'d> Pipelines<'d> {
             },
             count: None,
         };
-        // A cube texture and its sampler at `binding` and the next.
-        let cube_entries = |binding: u32| {
-            [
-                wgpu::BindGroupLayoutEntry {
-                    binding,
-                    visibility: wgpu::ShaderStages::FRAGMENT,
-                    ty: wgpu::BindingType::Texture {
-                        sample_type: wgpu::TextureSampleType::Float { filterable: true },
-                        view_dimension: wgpu::TextureViewDimension::Cube,
-                        multisampled: false,
-                    },
-                    count: None,
-                },
-                wgpu::BindGroupLayoutEntry {
-                    binding: binding + 1,
-                    visibility: wgpu::ShaderStages::FRAGMENT,
-                    ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
-                    count: None,
-                },
-            ]
-        };
         let [panorama, panorama_sampler] = cube_entries(5);
         // The globals, then the EnvironmentLight's maps (`environment::Maps`): the
         // prefiltered radiance and the irradiance cubes, the BRDF table, their sampler.
@@ -416,6 +395,28 @@ impl<'d> Pipelines<'d> {
                 cache: None,
             })
     }
+}
+
+/// A cube texture and its sampler at `binding` and the next, for the fragment shader.
+pub(super) fn cube_entries(binding: u32) -> [wgpu::BindGroupLayoutEntry; 2] {
+    [
+        wgpu::BindGroupLayoutEntry {
+            binding,
+            visibility: wgpu::ShaderStages::FRAGMENT,
+            ty: wgpu::BindingType::Texture {
+                sample_type: wgpu::TextureSampleType::Float { filterable: true },
+                view_dimension: wgpu::TextureViewDimension::Cube,
+                multisampled: false,
+            },
+            count: None,
+        },
+        wgpu::BindGroupLayoutEntry {
+            binding: binding + 1,
+            visibility: wgpu::ShaderStages::FRAGMENT,
+            ty: wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+            count: None,
+        },
+    ]
 }
 
 #[cfg(test)]
