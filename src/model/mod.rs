@@ -498,6 +498,9 @@ pub struct Document {
     /// In a page that is a server's template, the attribute values that are placeholders
     /// (`{{ model.inline }}`), left out.
     pub template_values: Vec<Span>,
+    /// In a page, the elements of the library's own nodes (X3DOM's `<plane>`), left out:
+    /// a Shape holding one may have its geometry there.
+    pub library_nodes: Vec<Span>,
     pub nodes: Vec<Node>,
     /// The Scene's top-level nodes.
     pub scene: Vec<ChildRef>,
@@ -571,6 +574,7 @@ impl Document {
             scene_span: None,
             in_page: false,
             template_values: Vec::new(),
+            library_nodes: Vec::new(),
             nodes: Vec::new(),
             scene: Vec::new(),
             routes: Vec::new(),

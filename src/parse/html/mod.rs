@@ -67,6 +67,7 @@ pub fn read_islands(
                 tree: &tree,
                 library,
                 templates: RefCell::default(),
+                library_nodes: RefCell::default(),
             }
             .island(root, keep, progress)
         })
@@ -141,6 +142,8 @@ struct Page<'a> {
     library: Library,
     /// The attribute values left out as template placeholders (`{{ model.url }}`).
     templates: RefCell<Vec<Span>>,
+    /// The elements of the library's own nodes, left out (`<plane>`).
+    library_nodes: RefCell<Vec<Span>>,
 }
 
 /// An element's place in the page: its start tag, and the end of what closed it.
@@ -172,6 +175,7 @@ impl<'a> Page<'a> {
         if let Some(document) = &mut parsed.document {
             document.in_page = true;
             document.template_values = self.templates.take();
+            document.library_nodes = self.library_nodes.take();
         }
         if !is_canvas && !self.has_scene(root) {
             parsed.diagnostics.push(
@@ -251,6 +255,9 @@ impl<'a> Page<'a> {
                 name_span,
                 format!("`<{as_written}>` is an X3DOM node, not X3D: only X3DOM reads it, and its content is not checked"),
             ));
+            self.library_nodes
+                .borrow_mut()
+                .push(Span::new(place.start, place.end));
             return Ok(());
         }
         if self.library == Library::X3dom && x3dom::RENAMED_NODES.contains(&lower) {
@@ -260,6 +267,9 @@ impl<'a> Page<'a> {
                 name_span,
                 format!("`<{as_written}>` is X3DOM's node of that name, with other fields than X3D's: only X3DOM reads it, and its content is not checked"),
             ));
+            self.library_nodes
+                .borrow_mut()
+                .push(Span::new(place.start, place.end));
             return Ok(());
         }
         let name = if root {

@@ -69,9 +69,53 @@ impl Tree {
         while !matches!(tokenizer.feed(&input), TokenizerResult::Done) {}
         tokenizer.end();
         let Tap { builder, tags } = tokenizer.sink;
-        Tree {
+        let mut tree = Tree {
             nodes: builder.sink.nodes.into_inner(),
             tags: tags.into_inner(),
+        };
+        tree.close_by_end_tags();
+        tree
+    }
+
+    /// Gives the elements the tree builder closed without telling its sink their closing
+    /// tag. html5ever pops the elements an "any other end tag" closes (HTML 13.2.6.4.7:
+    /// every X3D element, unknown to HTML, is closed so) by truncating its stack of open
+    /// elements, without `TreeSink::pop`; that step is replayed here over the tags: an end
+    /// tag closes the latest open element of its name and every element opened after it.
+    fn close_by_end_tags(&mut self) {
+        let mut opened_by = vec![None; self.tags.list.len()];
+        for (id, node) in self.nodes.iter().enumerate() {
+            if let Data::Element { tag: Some(t), .. } = node.data {
+                opened_by[t] = Some(id);
+            }
+        }
+        let mut open: Vec<NodeId> = Vec::new();
+        for (t, tag) in self.tags.list.iter().enumerate() {
+            match tag.kind {
+                Kind::Start => open.extend(opened_by[t]),
+                Kind::End => {
+                    // An element of its name the sink was told this tag closes: done.
+                    let told = open.iter().any(|&n| match &self.nodes[n].data {
+                        Data::Element {
+                            name, closed_by, ..
+                        } => *closed_by == Some(t) && *name.local == *tag.name,
+                        _ => false,
+                    });
+                    open.retain(|&n| unclosed(&self.nodes[n]).is_some());
+                    let latest = open.iter().rposition(|&n| {
+                        !told
+                            && unclosed(&self.nodes[n]).is_some_and(|name| *name.local == *tag.name)
+                    });
+                    if let Some(at) = latest {
+                        for n in open.drain(at..) {
+                            if let Data::Element { closed_by, .. } = &mut self.nodes[n].data {
+                                *closed_by = Some(t);
+                            }
+                        }
+                    }
+                }
+                Kind::Comment => {}
+            }
         }
     }
 
@@ -80,6 +124,18 @@ impl Tree {
             Data::Element { name, attrs, .. } => Some((name, attrs)),
             _ => None,
         }
+    }
+}
+
+/// The name of an element its sink has not been told the closing of.
+fn unclosed(node: &Node) -> Option<&QualName> {
+    match &node.data {
+        Data::Element {
+            name,
+            closed_by: None,
+            ..
+        } => Some(name),
+        _ => None,
     }
 }
 

@@ -1,6 +1,7 @@
 //! SHAPE_GEOMETRY_MISSING: a Shape without geometry.
 
-use crate::diagnostic::Diagnostic;
+use crate::diagnostic::{Diagnostic, Span};
+use crate::model::{Document, Node};
 use crate::validate::Ctx;
 
 crate::declare_rule! {
@@ -10,7 +11,8 @@ crate::declare_rule! {
     /// geometry comes from outside the document's static content: a field connected by
     /// `IS` in a ProtoBody, or a ROUTE to the Shape's `geometry`/`set_geometry`; nor when
     /// the Shape holds a node of unknown type or a prototype instance, which may be the
-    /// geometry under another name (x3dom's `Plane`, an xj3d `Face`).
+    /// geometry under another name (an xj3d `Face`), or, on a web page, one of the
+    /// library's own nodes (X3DOM's `<plane>`, reported as X3DOM_EXTENSION).
     ///
     /// ## Why it matters
     /// 12.4.8: "If the geometry field is NULL, the object is not drawn." Usually the
@@ -49,7 +51,7 @@ fn check(ctx: &mut Ctx) {
                     .as_nodes()
                     .is_some_and(|nodes| nodes.iter().any(|c| doc.node(c.node).def().is_none()))
         });
-        if opaque_child {
+        if opaque_child || holds_library_node(doc, node) {
             continue;
         }
         let routed = node.def_name.as_ref().is_some_and(|def| {
@@ -73,4 +75,18 @@ fn check(ctx: &mut Ctx) {
             .node(id),
         );
     }
+}
+
+/// Whether one of the page library's own nodes, left out by the reader, lies in `shape`
+/// outside its other children (so it may be the geometry: X3DOM's `<plane>`).
+fn holds_library_node(doc: &Document, shape: &Node) -> bool {
+    let within = |inner: Span, outer: Span| outer.start <= inner.start && inner.end <= outer.end;
+    doc.library_nodes.iter().any(|&element| {
+        within(element, shape.span)
+            && !shape.fields.iter().any(|e| {
+                e.value.as_nodes().is_some_and(|nodes| {
+                    nodes.iter().any(|c| within(element, doc.node(c.node).span))
+                })
+            })
+    })
 }
