@@ -354,3 +354,67 @@ impl TreeSink for Sink {
         nodes[*new_parent].children.extend(children);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The elements named `name`, in document order, each with the text from its start
+    /// tag to the end of the tag that closed it (to the page's end when none did).
+    fn elements(page: &str, name: &str) -> Vec<String> {
+        let tree = Tree::parse(page);
+        let list = &tree.tags.list;
+        tree.nodes
+            .iter()
+            .filter_map(|node| match &node.data {
+                Data::Element {
+                    name: n,
+                    tag: Some(t),
+                    closed_by,
+                    ..
+                } if *n.local == *name => {
+                    let end = closed_by.map_or(page.len(), |c| list[c].end);
+                    Some(page[list[*t].start..end].to_string())
+                }
+                _ => None,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn x3d_elements_end_at_their_end_tags() {
+        let page = "<x3d><scene><transform><transform><shape></shape></transform></transform>\
+                    <shape><box></box></shape></scene></x3d><p>after</p>";
+        assert_eq!(
+            elements(page, "transform"),
+            [
+                "<transform><transform><shape></shape></transform></transform>",
+                "<transform><shape></shape></transform>",
+            ]
+        );
+        assert_eq!(
+            elements(page, "shape"),
+            ["<shape></shape>", "<shape><box></box></shape>"]
+        );
+    }
+
+    #[test]
+    fn an_end_tag_closes_the_elements_opened_inside_its_element() {
+        // `</group>` closes the `<shape>` left open inside it, as the tree builder does.
+        let page = "<x3d><scene><group><shape><box></box></group><shape></shape></scene></x3d>";
+        assert_eq!(
+            elements(page, "shape"),
+            ["<shape><box></box></group>", "<shape></shape>"]
+        );
+        assert_eq!(
+            elements(page, "group"),
+            ["<group><shape><box></box></group>"]
+        );
+    }
+
+    #[test]
+    fn an_element_left_open_ends_with_the_page() {
+        let page = "<x3d><scene><shape><box></box>";
+        assert_eq!(elements(page, "shape"), ["<shape><box></box>"]);
+    }
+}
