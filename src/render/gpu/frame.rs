@@ -364,12 +364,13 @@ pub async fn draw(
                     .poll(wgpu::PollType::wait_indefinitely())
                     .map_err(|e| GpuError::Failed(e.to_string()))?;
                 if last_tile {
-                    for done in freed..n {
-                        prepared[done] = Vec::new();
-                        for (slot, &last) in last_pass.iter().enumerate() {
-                            if last == done {
-                                uploaded[slot] = None;
-                            }
+                    // The passes before this one are done (drawn or skipped).
+                    for buffers in &mut prepared[freed..n] {
+                        *buffers = Vec::new();
+                    }
+                    for (slot, &last) in last_pass.iter().enumerate() {
+                        if (freed..n).contains(&last) {
+                            uploaded[slot] = None;
                         }
                     }
                     freed = n;

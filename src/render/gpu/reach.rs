@@ -101,8 +101,14 @@ mod tests {
     /// A perspective camera at the origin looking down −Z (90° vertical field of view,
     /// near 0.1, far 100) over an 800×600 target.
     fn camera() -> Camera {
-        let projection =
-            glam::Mat4::perspective_rh(std::f32::consts::FRAC_PI_2, 4.0 / 3.0, 0.1, 100.0);
+        // The projection of `uniforms` (reversed depth): 1 / tan(45°) = 1.
+        let (near, far) = (0.1, 100.0);
+        let projection = glam::Mat4::from_cols(
+            glam::Vec4::new(0.75, 0.0, 0.0, 0.0),
+            glam::Vec4::new(0.0, 1.0, 0.0, 0.0),
+            glam::Vec4::new(0.0, 0.0, near / (far - near), -1.0),
+            glam::Vec4::new(0.0, 0.0, near * far / (far - near), 0.0),
+        );
         Camera {
             view_projection: projection,
             forward_near: glam::Vec4::new(0.0, 0.0, -1.0, 0.1),
@@ -122,11 +128,11 @@ mod tests {
             0.0,
         );
         assert!(
-            x <= 370 && x >= 366 && x + w >= 430 && x + w <= 434,
+            (366..=370).contains(&x) && (430..=434).contains(&(x + w)),
             "{x} {w}"
         );
         assert!(
-            y <= 270 && y >= 266 && y + h >= 330 && y + h <= 334,
+            (266..=270).contains(&y) && (330..=334).contains(&(y + h)),
             "{y} {h}"
         );
         // The pad widens it.
@@ -206,7 +212,13 @@ mod tests {
         // Rounded outwards: a box edge at exactly pixel 400 reaches the pixel before it
         // and (with the margin) the tile from 400 on.
         let camera = Camera {
-            view_projection: glam::Mat4::orthographic_rh(0.0, 800.0, 0.0, 600.0, 0.1, 100.0),
+            // x from 0 to 800 and y from 0 to 600 onto the target.
+            view_projection: glam::Mat4::from_cols(
+                glam::Vec4::new(1.0 / 400.0, 0.0, 0.0, 0.0),
+                glam::Vec4::new(0.0, 1.0 / 300.0, 0.0, 0.0),
+                glam::Vec4::new(0.0, 0.0, 0.01, 0.0),
+                glam::Vec4::new(-1.0, -1.0, 0.5, 1.0),
+            ),
             forward_near: glam::Vec4::new(0.0, 0.0, -1.0, 0.1),
             rect: [0, 0, 800, 600],
         };
