@@ -291,10 +291,10 @@ pub async fn draw(
                 .collect()
         })
         .collect();
-    // Every pass's buffers, made before the first tile (each tile draws those reaching it) and each
-    // mesh's arrays freed after its last pass's: a surface's part when its vertices are
-    // local, else the vertices of the whole mesh, made for its first pass, and the
-    // pass's indices.
+    // Every pass's buffers, made before the first tile (each tile draws those reaching
+    // it) and each mesh's arrays freed after its last pass's: a surface's part when its
+    // vertices are local, else the vertices of the whole mesh, made for its first pass,
+    // and the pass's indices.
     let mut uploaded: Vec<Option<MeshBuffers>> = (0..order.len()).map(|_| None).collect();
     let mut prepared: Vec<Vec<PieceBuffers>> = Vec::with_capacity(passes.len());
     for (n, (_, _, pieces)) in passes.iter().enumerate() {
