@@ -1,17 +1,19 @@
 //! One frame, drawn tile by tile (see [`TILE_SAMPLES`]): render targets of a tile's size,
 //! then for each tile layer by layer (each over the previous with the depth cleared,
 //! within its rectangle) the background and the meshes in their order (opaque first,
-//! then blended ones back to front), and the read-back of the tile's pixels.
+//! then blended ones back to front), each pass piece only where it can reach the tile
+//! (see `reach`), and the read-back of the tile's pixels.
 
 use wgpu::util::DeviceExt;
 
 use super::environment;
 use super::pipelines::{PipelineKey, Pipelines, COLOR_FORMAT, DEPTH_FORMAT, VERTEX_SLOTS};
+use super::reach::{reach, stroke_pad};
 use super::resources::{
     index_bounds, upload_indices, upload_mesh, upload_surface_part, MeshBuffers, SurfacePart,
     TextureBindings,
 };
-use super::uniforms::{draw_uniform, globals, GpuDraw};
+use super::uniforms::{draw_uniform, globals, Globals, GpuDraw};
 use super::{GpuError, Shading};
 use crate::render::draw_list::{DrawList, Mesh, Primitive};
 
@@ -93,16 +95,23 @@ pub async fn draw(
         &list.textures,
         &list.cube_textures,
     );
-    let globals_groups: Vec<wgpu::BindGroup> = list
+    let layer_globals: Vec<Globals> = list
         .layers
         .iter()
         .zip(&rects)
         .map(|(layer, rect)| {
             let (width, height) = (rect[2].max(1), rect[3].max(1));
-            let globals = globals(layer, width, height, target.scale, &list.cube_textures);
+            globals(layer, width, height, target.scale, &list.cube_textures)
+        })
+        .collect();
+    let globals_groups: Vec<wgpu::BindGroup> = list
+        .layers
+        .iter()
+        .zip(&layer_globals)
+        .map(|(layer, globals)| {
             let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some("globals"),
-                contents: bytemuck::bytes_of(&globals),
+                contents: bytemuck::bytes_of(globals),
                 usage: pipelines.parameters.usage(),
             });
             let maps = environment::Maps::new(device, queue, layer.environment.as_ref());
@@ -254,10 +263,38 @@ pub async fn draw(
         }
     }
     let starts_layer: Vec<bool> = passes.iter().map(|(_, first, _)| *first).collect();
-    // Every pass's buffers, made before the first tile (every tile draws them) and each
-    // mesh's arrays freed after its last pass's: a surface's part when its vertices are
-    // local, else the vertices of the whole mesh, made for its first pass, and the
-    // pass's indices.
+    // Where each piece can draw, within its scissor (see `reach`), found from its
+    // vertices while they are here: a tile skips the pieces that cannot reach it, and
+    // the passes with none that can (but a layer's first, which clears the depth).
+    let scale = target.scale.max(1);
+    let reaches: Vec<Vec<[u32; 4]>> = passes
+        .iter()
+        .map(|(l, _, pieces)| {
+            let camera = layer_globals[*l].camera(rects[*l]);
+            pieces
+                .iter()
+                .map(|piece| {
+                    let (l, m) = order[piece.slot];
+                    let mesh = &list.layers[l].meshes[m];
+                    // A stroke's pieces count instances of `arity` indices.
+                    let unit = match mesh.primitive {
+                        Primitive::Triangles => 1,
+                        primitive => primitive.arity(),
+                    };
+                    let range = piece.range.start as usize * unit..piece.range.end as usize * unit;
+                    let pad = stroke_pad(mesh, scale);
+                    intersect(
+                        scissors[piece.slot],
+                        reach(&camera, mesh, &mesh.indices[range], pad),
+                    )
+                })
+                .collect()
+        })
+        .collect();
+    // Every pass's buffers, made before the first tile (each tile draws those reaching
+    // it) and each mesh's arrays freed after its last pass's: a surface's part when its
+    // vertices are local, else the vertices of the whole mesh, made for its first pass,
+    // and the pass's indices.
     let mut uploaded: Vec<Option<MeshBuffers>> = (0..order.len()).map(|_| None).collect();
     let mut prepared: Vec<Vec<PieceBuffers>> = Vec::with_capacity(passes.len());
     for (n, (_, _, pieces)) in passes.iter().enumerate() {
@@ -291,22 +328,31 @@ pub async fn draw(
             }
         }
     }
-    let scale = target.scale.max(1);
     let mut image = image::RgbaImage::new(target.width / scale, target.height / scale);
     let tiles = tiles(&target, tile_width, tile_height);
     for (t, &tile) in tiles.iter().enumerate() {
         let [tx, ty, ..] = tile;
         let in_tile = |rect| in_tile(rect, tile);
-        // Each tile draws every pass; the last frees each pass's buffers once it is done.
+        let reaches_tile = |rect| {
+            let [.., w, h] = in_tile(rect);
+            w > 0 && h > 0
+        };
+        // The passes this tile draws; the last tile frees each pass's buffers once it is
+        // done (or skipped).
+        let drawn: Vec<usize> = (0..passes.len())
+            .filter(|&n| starts_layer[n] || reaches[n].iter().any(|&r| reaches_tile(r)))
+            .collect();
         let last_tile = t + 1 == tiles.len();
         let mut encoder = device.create_command_encoder(&Default::default());
         if passes.is_empty() {
             // Nothing to draw: a black image.
             clear_pass(&mut encoder, view, resolve_target, &depth_view);
         }
-        for (n, (l, first_of_layer, pieces)) in passes.iter().enumerate() {
+        let mut freed = 0;
+        for (k, &n) in drawn.iter().enumerate() {
+            let (l, first_of_layer, pieces) = &passes[n];
             let (l, first_of_layer) = (*l, *first_of_layer);
-            if n > 0 {
+            if k > 0 {
                 // The previous pass is finished before this one is recorded, and what only
                 // it used is freed.
                 queue.submit([std::mem::replace(
@@ -318,21 +364,29 @@ pub async fn draw(
                     .poll(wgpu::PollType::wait_indefinitely())
                     .map_err(|e| GpuError::Failed(e.to_string()))?;
                 if last_tile {
-                    prepared[n - 1] = Vec::new();
+                    // The passes before this one are done (drawn or skipped).
+                    for buffers in &mut prepared[freed..n] {
+                        *buffers = Vec::new();
+                    }
                     for (slot, &last) in last_pass.iter().enumerate() {
-                        if last == n - 1 {
+                        if (freed..n).contains(&last) {
                             uploaded[slot] = None;
                         }
                     }
+                    freed = n;
                 }
             }
-            let last_of_layer = starts_layer.get(n + 1).is_none_or(|&starts| starts);
+            let last_of_layer = drawn.get(k + 1).is_none_or(|&next| starts_layer[next]);
+            // The samples are resolved into the image once, by the tile's last pass: a
+            // resolve reads every sample of the tile (after every pass, on the benchmark
+            // scene at balanced, about 1 s of CPU time more, of 7–8).
+            let last_of_tile = k + 1 == drawn.len();
             let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
                 label: Some("scene"),
                 color_attachments: &[Some(wgpu::RenderPassColorAttachment {
                     view,
                     depth_slice: None,
-                    resolve_target,
+                    resolve_target: resolve_target.filter(|_| last_of_tile),
                     ops: wgpu::Operations {
                         load: if n == 0 {
                             wgpu::LoadOp::Clear(wgpu::Color::BLACK)
@@ -384,11 +438,13 @@ pub async fn draw(
                 pass.draw(0..3, 0..1);
             }
             let mut scissor = layer_scissor;
-            for (&Piece { slot, ref range }, buffers) in pieces.iter().zip(&prepared[n]) {
-                let [sx, sy, sw, sh] = in_tile(scissors[slot]);
-                if sw == 0 || sh == 0 {
+            for ((&Piece { slot, ref range }, buffers), &reach) in
+                pieces.iter().zip(&prepared[n]).zip(&reaches[n])
+            {
+                if !reaches_tile(reach) {
                     continue;
                 }
+                let [sx, sy, sw, sh] = in_tile(scissors[slot]);
                 if [sx, sy, sw, sh] != scissor {
                     scissor = [sx, sy, sw, sh];
                     pass.set_scissor_rect(sx, sy, sw, sh);
@@ -550,7 +606,7 @@ fn clear_pass(
 
 /// The tile's pixels of a rectangle of the target, counted from the tile's corner; none:
 /// all zero (a scissor must lie within the tile even when empty).
-fn in_tile(rect: [u32; 4], tile: [u32; 4]) -> [u32; 4] {
+pub(super) fn in_tile(rect: [u32; 4], tile: [u32; 4]) -> [u32; 4] {
     match intersect(rect, tile) {
         [_, _, 0, _] | [_, _, _, 0] => [0; 4],
         [x, y, w, h] => [x - tile[0], y - tile[1], w, h],
@@ -659,11 +715,11 @@ fn average_into(
 }
 
 /// The most samples of a tile by default: the target is drawn in tiles of at most this
-/// many pixels × samples, one after the other, each drawing the whole list, so that the
-/// render targets (4 bytes of colour and 4 of depth per sample, on a software driver in
-/// the process's own memory) stay small. 800×600 at one sample: fast's image at the
-/// default size is one tile; balanced's 4 samples four tiles of 400×300; accurate's
-/// 1600×1200 with 4 samples 16.
+/// many pixels × samples, one after the other, each drawing the pieces of the list that
+/// can reach it (see `reach`), so that the render targets (4 bytes of colour and 4 of
+/// depth per sample, on a software driver in the process's own memory) stay small.
+/// 800×600 at one sample: fast's image at the default size is one tile; balanced's 4
+/// samples four tiles of 400×300; accurate's 1600×1200 with 4 samples 16.
 pub const TILE_SAMPLES: u32 = 800 * 600;
 
 /// A tile's size: the target halved, its longer side first, until a tile has at most

@@ -4,6 +4,7 @@
 mod environment;
 mod frame;
 mod pipelines;
+mod reach;
 mod resources;
 mod uniforms;
 

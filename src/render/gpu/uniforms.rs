@@ -190,6 +190,17 @@ pub fn draw_uniform(mesh: &Mesh, cubes: &[CubeImage]) -> GpuDraw {
     }
 }
 
+impl Globals {
+    /// The camera as the vertex shaders apply it, for a layer drawn within `rect`.
+    pub fn camera(&self, rect: [u32; 4]) -> super::reach::Camera {
+        super::reach::Camera {
+            view_projection: glam::Mat4::from_cols_array_2d(&self.view_projection),
+            forward_near: glam::Vec4::from(self.forward_near),
+            rect,
+        }
+    }
+}
+
 /// A layer's uniforms for its `width` × `height` rectangle of a target drawn `scale`
 /// times larger than the image (supersampling): stroke sizes are in image pixels.
 pub fn globals(list: &Layer, width: u32, height: u32, scale: u32, cubes: &[CubeImage]) -> Globals {
