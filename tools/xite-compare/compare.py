@@ -127,9 +127,9 @@ def render_xite(args, scenes, folder):
 
 
 def render_x3dcheck(args, scene, png):
-    # Run in the corpus: a file named on the command line may read references from the
-    # current directory when it lies in it, as X_ITE reads them from the corpus's web
-    # root (Castle's fog scenes inline ../castle/).
+    # Run in the corpus (--scenes: their root): a file named on the command line may read
+    # references from the current directory when it lies in it, as X_ITE reads them from
+    # the served root (Castle's fog scenes inline ../castle/).
     command = [os.path.abspath(args.x3dcheck), scene, "--render", os.path.abspath(png),
                "--size", args.size, "--quality", args.quality, "--camera", "browser",
                "--format", "json", "--exit-zero", "-q"]
