@@ -300,9 +300,12 @@ fn env_specular(r: vec3<f32>, roughness: f32) -> vec3<f32> {
 }
 
 // An EnvironmentLight's image-based light on a PhysicalMaterial, as the glTF Sample
-// Viewer computes it (split sum): diffuse = irradiance × c_diff, specular = prefiltered
-// radiance × (F × A + B) with the BRDF table's A and B at (n·v, roughness) and a Fresnel
-// term raised for rough surfaces; times the light's colour and intensity.
+// Viewer computes it (split sum): specular = prefiltered radiance × (F × A + B) with the
+// BRDF table's A and B at (n·v, roughness) and a Fresnel term raised for rough surfaces,
+// plus the light scattered more than once between the microfacets, which a
+// single-scattering BRDF loses (Fdez-Agüera 2019, as the Sample Viewer and X_ITE add it:
+// rough metals keep their brightness); diffuse = irradiance × c_diff × what the specular
+// lobe leaves; times the light's colour and intensity.
 fn environment_physical(light: Light, s: Surface, n: vec3<f32>, v: vec3<f32>) -> vec3<f32> {
     let metallic = clamp(s.metallic, 0.0, 1.0);
     let roughness = clamp(s.roughness, 0.0, 1.0);
@@ -311,8 +314,16 @@ fn environment_physical(light: Light, s: Surface, n: vec3<f32>, v: vec3<f32>) ->
     let n_dot_v = clamp(dot(n, v), 0.0, 1.0);
     let brdf = textureSampleLevel(t_brdf, s_env, vec2<f32>(n_dot_v, roughness), 0.0).rg;
     let fresnel = f0 + (max(vec3<f32>(1.0 - roughness), f0) - f0) * pow(1.0 - n_dot_v, 5.0);
-    let specular = env_specular(reflect(-v, n), roughness) * (fresnel * brdf.x + brdf.y);
-    let diffuse = env_diffuse(n) * c_diff;
+    let single = fresnel * brdf.x + brdf.y;
+    // The energy the single scattering misses, returned with the average Fresnel.
+    let missed = 1.0 - (brdf.x + brdf.y);
+    let f_average = f0 + (1.0 - f0) / 21.0;
+    let multiple = single * missed * f_average / (1.0 - f_average * missed);
+    let reflected = single + multiple;
+    let specular = env_specular(reflect(-v, n), roughness) * reflected;
+    // What the specular lobe reflects does not reach the diffuse one (the direct lights'
+    // (1 − F), here the lobe's integral).
+    let diffuse = env_diffuse(n) * c_diff * max(vec3<f32>(1.0) - reflected, vec3<f32>(0.0));
     let radiance = light.color_intensity.rgb * light.color_intensity.w * (diffuse + specular);
     return min(radiance, vec3<f32>(MAX_RADIANCE));
 }

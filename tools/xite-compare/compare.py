@@ -2,6 +2,7 @@
 """Compares x3dcheck's --render with X_ITE over a fixed sample of corpus scenes.
 
     python3 compare.py [--quality balanced] [--size 400x300] [--only TEXT] [--out out]
+    python3 compare.py --scenes ../../corpus/render/cube_map_cross/scene.x3d ... --out out-render
 
 For each scene of sample.txt: X_ITE draws it in headless Chromium (render_xite.mjs),
 x3dcheck draws it with `--render --camera browser` (the first Viewpoint, else the X3D
@@ -41,6 +42,11 @@ def parse_args():
     p.add_argument("--x3dcheck", default=os.path.join(REPO, "target", "release", "x3dcheck"))
     p.add_argument("--threshold", type=float, default=DEFAULT_THRESHOLD)
     p.add_argument("--only", help="only the scenes whose path contains this text")
+    p.add_argument("--scenes", nargs="+", metavar="FILE",
+                   help="compare these scene files in place of the sample (e.g. the "
+                   "project's corpus/render/CASE/scene.x3d): served and run from the "
+                   "repository (or, outside it, their common directory), named relative "
+                   "to it")
     p.add_argument("--summarize", action="store_true",
                    help="only rewrite out/summary.md from out/results.json and causes.tsv")
     p.add_argument("--reuse-xite", action="store_true",
@@ -56,6 +62,18 @@ def read_sample(path):
         if scene:
             scenes.append((scene, category))
     return scenes
+
+
+def scene_files(paths):
+    """(root, [(scene relative to root, "")]) for --scenes: the root is the repository
+    when every file lies in it, so that causes.tsv names them as the repository does."""
+    paths = [os.path.abspath(p) for p in paths]
+    for path in paths:
+        if not os.path.isfile(path):
+            sys.exit(f"--scenes: {path} is not a file")
+    root = REPO if all(p.startswith(REPO + os.sep) for p in paths) else (
+        os.path.commonpath([os.path.dirname(p) for p in paths]))
+    return root, [(os.path.relpath(p, root), "") for p in paths]
 
 
 def read_causes(path):
@@ -109,9 +127,9 @@ def render_xite(args, scenes, folder):
 
 
 def render_x3dcheck(args, scene, png):
-    # Run in the corpus: a file named on the command line may read references from the
-    # current directory when it lies in it, as X_ITE reads them from the corpus's web
-    # root (Castle's fog scenes inline ../castle/).
+    # Run in the corpus (--scenes: their root): a file named on the command line may read
+    # references from the current directory when it lies in it, as X_ITE reads them from
+    # the served root (Castle's fog scenes inline ../castle/).
     command = [os.path.abspath(args.x3dcheck), scene, "--render", os.path.abspath(png),
                "--size", args.size, "--quality", args.quality, "--camera", "browser",
                "--format", "json", "--exit-zero", "-q"]
@@ -177,7 +195,10 @@ def versions(args):
 def main():
     args = parse_args()
     width, height = (int(v) for v in args.size.split("x"))
-    sample = read_sample(args.sample)
+    if args.scenes:
+        args.corpus, sample = scene_files(args.scenes)
+    else:
+        sample = read_sample(args.sample)
     if args.only:
         sample = [s for s in sample if args.only in s[0]]
     causes = read_causes(args.causes)
