@@ -151,3 +151,18 @@ fn a_server_template_is_a_page_and_its_placeholders_are_not_values() {
     assert!(places(page, "FIELD_VALUE_SYNTAX").is_empty());
     assert_eq!(places(page, "VALIDATION_INCOMPLETE"), [(3, 14)]);
 }
+
+#[test]
+fn a_page_nested_past_the_depth_limit_is_reported_not_a_stack_overflow() {
+    // The HTML walk recurses per element: 20,000 levels overflowed a 2 MB test thread's
+    // stack before it stopped past the model's depth limit.
+    let depth = 20_000;
+    let page = format!(
+        "<html><body><x3d><scene>{}{}</scene></x3d></body></html>",
+        "<transform>".repeat(depth),
+        "</transform>".repeat(depth)
+    );
+    let report = x3dcheck::check_source("deep.html", page.as_bytes(), &deep());
+    let text = x3dcheck::report::concise::render(&report);
+    assert!(text.contains("LIMIT_EXCEEDED"), "{text}");
+}

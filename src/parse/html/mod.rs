@@ -114,26 +114,44 @@ enum Library {
 
 /// The islands under `node`, outermost first, with their library: `<x3d>` elements, and
 /// `<x3d-canvas>` elements holding none (X_ITE loading `src`).
+/// The islands below `node`, in document order. Iterative, as every walk over the page's
+/// tree: its depth is the page's nesting, which nothing bounds.
 fn find_islands(tree: &Tree, node: NodeId, library: Library, out: &mut Vec<(NodeId, Library)>) {
-    let mut library = library;
-    if let Some((name, _)) = tree.element(node) {
-        match &*name.local {
-            "x3d" => return out.push((node, library)),
-            "x3d-canvas" if !holds_x3d(tree, node) => return out.push((node, Library::XIte)),
-            "x3d-canvas" => library = Library::XIte,
-            _ => {}
+    let mut stack = vec![(node, library)];
+    while let Some((node, mut library)) = stack.pop() {
+        if let Some((name, _)) = tree.element(node) {
+            match &*name.local {
+                "x3d" => {
+                    out.push((node, library));
+                    continue;
+                }
+                "x3d-canvas" if !holds_x3d(tree, node) => {
+                    out.push((node, Library::XIte));
+                    continue;
+                }
+                "x3d-canvas" => library = Library::XIte,
+                _ => {}
+            }
         }
-    }
-    for &child in &tree.nodes[node].children {
-        find_islands(tree, child, library, out);
+        stack.extend(
+            tree.nodes[node]
+                .children
+                .iter()
+                .rev()
+                .map(|&c| (c, library)),
+        );
     }
 }
 
 fn holds_x3d(tree: &Tree, node: NodeId) -> bool {
-    tree.nodes[node]
-        .children
-        .iter()
-        .any(|&c| tree.element(c).is_some_and(|(n, _)| &*n.local == "x3d") || holds_x3d(tree, c))
+    let mut stack = tree.nodes[node].children.clone();
+    while let Some(c) = stack.pop() {
+        if tree.element(c).is_some_and(|(n, _)| &*n.local == "x3d") {
+            return true;
+        }
+        stack.extend(&tree.nodes[c].children);
+    }
+    false
 }
 
 struct Page<'a> {
@@ -169,7 +187,7 @@ impl<'a> Page<'a> {
         let result = if is_canvas {
             self.canvas(root, place, &mut reader)
         } else {
-            self.element(root, place, &mut reader, &mut found)
+            self.element(root, place, &mut reader, &mut found, 0)
         };
         let mut parsed = reader.finish(result);
         if let Some(document) = &mut parsed.document {
@@ -241,7 +259,13 @@ impl<'a> Page<'a> {
         place: Place,
         reader: &mut XmlReader,
         found: &mut Vec<Diagnostic>,
+        depth: usize,
     ) -> Result<(), Box<Diagnostic>> {
+        // The model reads no node deeper than MAX_DEPTH (and says so, LIMIT_EXCEEDED); the
+        // page's own nesting is unbounded, and this walk recurses.
+        if depth > crate::limits::MAX_DEPTH + 16 {
+            return Ok(());
+        }
         let Some((qual, html_attrs)) = self.tree.element(node) else {
             return Ok(());
         };
@@ -366,7 +390,7 @@ impl<'a> Page<'a> {
                 Data::Element { .. } if root && self.is_html(child) => {}
                 Data::Element { .. } => {
                     let at = self.place(child, Some(place));
-                    self.element(child, at, reader, found)?;
+                    self.element(child, at, reader, found, depth + 1)?;
                 }
                 Data::Comment(Some(tag)) => {
                     let tag = &self.tree.tags.list[*tag];
