@@ -199,16 +199,8 @@ impl<'d> Pipelines<'d> {
             label: Some("draw"),
             entries: &[parameter_entry(true, size_of::<GpuDraw>())],
         });
-        let textures = (0..TEXTURE_SLOTS as u32).map(|binding| wgpu::BindGroupLayoutEntry {
-            binding,
-            visibility: wgpu::ShaderStages::FRAGMENT,
-            ty: wgpu::BindingType::Texture {
-                sample_type: wgpu::TextureSampleType::Float { filterable: true },
-                view_dimension: wgpu::TextureViewDimension::D2,
-                multisampled: false,
-            },
-            count: None,
-        });
+        let textures = (0..TEXTURE_SLOTS as u32)
+            .map(|binding| texture_entry(binding, wgpu::TextureViewDimension::D2));
         let samplers = (0..TEXTURE_SLOTS as u32).map(|slot| wgpu::BindGroupLayoutEntry {
             binding: TEXTURE_SLOTS as u32 + slot,
             visibility: wgpu::ShaderStages::FRAGMENT,
@@ -397,19 +389,27 @@ impl<'d> Pipelines<'d> {
     }
 }
 
+/// A filterable float texture of `view_dimension` at `binding`, for the fragment shader.
+fn texture_entry(
+    binding: u32,
+    view_dimension: wgpu::TextureViewDimension,
+) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility: wgpu::ShaderStages::FRAGMENT,
+        ty: wgpu::BindingType::Texture {
+            sample_type: wgpu::TextureSampleType::Float { filterable: true },
+            view_dimension,
+            multisampled: false,
+        },
+        count: None,
+    }
+}
+
 /// A cube texture and its sampler at `binding` and the next, for the fragment shader.
 pub(super) fn cube_entries(binding: u32) -> [wgpu::BindGroupLayoutEntry; 2] {
     [
-        wgpu::BindGroupLayoutEntry {
-            binding,
-            visibility: wgpu::ShaderStages::FRAGMENT,
-            ty: wgpu::BindingType::Texture {
-                sample_type: wgpu::TextureSampleType::Float { filterable: true },
-                view_dimension: wgpu::TextureViewDimension::Cube,
-                multisampled: false,
-            },
-            count: None,
-        },
+        texture_entry(binding, wgpu::TextureViewDimension::Cube),
         wgpu::BindGroupLayoutEntry {
             binding: binding + 1,
             visibility: wgpu::ShaderStages::FRAGMENT,
