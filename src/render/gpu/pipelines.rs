@@ -169,14 +169,8 @@ impl<'d> Pipelines<'d> {
         // The globals, then the EnvironmentLight's maps (`environment::Maps`): the
         // prefiltered radiance and the irradiance cubes, the BRDF table, their sampler.
         let environment_texture = |binding, view_dimension| wgpu::BindGroupLayoutEntry {
-            binding,
             visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
-            ty: wgpu::BindingType::Texture {
-                sample_type: wgpu::TextureSampleType::Float { filterable: true },
-                view_dimension,
-                multisampled: false,
-            },
-            count: None,
+            ..texture_entry(binding, view_dimension)
         };
         let globals_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("globals"),
